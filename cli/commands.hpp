@@ -1,0 +1,21 @@
+// The subcommands of `cemv`, one registration function per command group, each
+// in its own file. A command's callback stores its exit status in Context:
+// 0 success, 1 a negative verdict (validation errors, failed expectation,
+// counterexample), 2 bad input (unreadable or invalid file, bad arguments).
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace cemv::cli {
+
+struct Context {
+  int exit_code = 0;
+};
+
+void add_model_commands(CLI::App& app, Context& ctx);     // validate, graph, fmt, signature
+void add_report_commands(CLI::App& app, Context& ctx);    // report
+void add_csv_commands(CLI::App& app, Context& ctx);       // export-csv, import-csv
+void add_simulate_commands(CLI::App& app, Context& ctx);  // simulate
+void add_smt_commands(CLI::App& app, Context& ctx);       // export-smt
+
+}  // namespace cemv::cli

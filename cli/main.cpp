@@ -1,0 +1,31 @@
+// cemv: formal verification and test generation for cause & effect matrices.
+#include <exception>
+#include <iostream>
+
+#include "cli/commands.hpp"
+#include "model/format.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"cemv: verification and acceptance tests for safety cause & effect matrices"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "cemv 0.1.0");
+  cemv::cli::Context ctx;
+  cemv::cli::add_model_commands(app, ctx);
+  cemv::cli::add_report_commands(app, ctx);
+  cemv::cli::add_csv_commands(app, ctx);
+  cemv::cli::add_simulate_commands(app, ctx);
+  cemv::cli::add_smt_commands(app, ctx);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    int rc = app.exit(e);
+    return rc == 0 ? 0 : 2;
+  } catch (const cemv::model::LoadError& e) {
+    for (const auto& issue : e.issues()) std::cerr << "error: " << issue.str() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return 2;
+  }
+  return ctx.exit_code;
+}

@@ -1,0 +1,183 @@
+#include "model/io.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+
+namespace cemv::model {
+
+std::string tag_key(std::string_view name) {
+  std::string key(name);
+  for (auto& c : key) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return key;
+}
+
+namespace {
+// Reads "[n]" at s[pos..]; advances pos. Accepts 1-3 decimal digits, no sign.
+std::optional<int> bracketed_number(std::string_view s, std::size_t& pos) {
+  if (pos >= s.size() || s[pos] != '[') return std::nullopt;
+  std::size_t close = s.find(']', pos);
+  if (close == std::string_view::npos) return std::nullopt;
+  std::string_view digits = s.substr(pos + 1, close - pos - 1);
+  if (digits.empty() || digits.size() > 3) return std::nullopt;
+  for (char c : digits)
+    if (c < '0' || c > '9') return std::nullopt;
+  int v = 0;
+  auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v);
+  if (ec != std::errc{} || end != digits.data() + digits.size()) return std::nullopt;
+  pos = close + 1;
+  return v;
+}
+}  // namespace
+
+// 6.1.4: internal references are the exception to case-insensitivity, so the
+// keywords must be spelt exactly "Cause" and "Effect".
+std::optional<InternalRef> parse_internal_ref(std::string_view name) {
+  InternalRef ref;
+  std::size_t pos = 0;
+  if (name.starts_with("Cause[")) {
+    ref.kind = InternalRef::Kind::Cause;
+    pos = 5;
+  } else if (name.starts_with("Effect[")) {
+    ref.kind = InternalRef::Kind::Effect;
+    pos = 6;
+  } else {
+    return std::nullopt;
+  }
+  auto id = bracketed_number(name, pos);
+  if (!id) return std::nullopt;
+  ref.id = *id;
+  if (pos == name.size()) return ref;
+  if (ref.kind != InternalRef::Kind::Effect) return std::nullopt;
+  auto tag = bracketed_number(name, pos);
+  if (!tag || pos != name.size()) return std::nullopt;
+  ref.kind = InternalRef::Kind::EffectTag;
+  ref.tag = *tag;
+  return ref;
+}
+
+InputTable::InputTable(const Matrix& m) {
+  auto add = [&](const std::optional<std::string>& name, TagKind kind, TagRole role) {
+    if (!name || name->empty() || parse_internal_ref(*name)) return;
+    std::string key = tag_key(*name);
+    auto it = std::find_if(by_key_.begin(), by_key_.end(),
+                           [&](const auto& p) { return p.first == key; });
+    if (it != by_key_.end()) {
+      auto& roles = tags_[it->second].roles;
+      if (std::find(roles.begin(), roles.end(), role) == roles.end()) roles.push_back(role);
+      return;
+    }
+    by_key_.emplace_back(key, tags_.size());
+    tags_.push_back(InputTag{*name, kind, {role}});
+  };
+  if (m.secure_write) add(m.secure_write->enable_tag, TagKind::Bool, TagRole::SecureWriteEnable);
+  if (m.group_deactivation) {
+    add(m.group_deactivation->enable_tag, TagKind::Bool, TagRole::GroupDeactivationEnable);
+    add(m.group_deactivation->set_tag, TagKind::Bool, TagRole::GroupDeactivationSet);
+  }
+  for (const auto& c : m.causes) {
+    if (c.function == CauseFunction::Comment) continue;
+    for (const auto& t : c.tags)
+      add(t.name, c.input == InputKind::Analog ? TagKind::Analog : TagKind::Bool,
+          TagRole::CauseInput);
+    add(c.bypass_tag, TagKind::Bool, TagRole::CauseBypass);
+    add(c.inhibit_tag, TagKind::Bool, TagRole::CauseInhibit);
+  }
+  for (const auto& e : m.effects) {
+    if (e.function == EffectFunction::Comment) continue;
+    add(e.bypass_tag, TagKind::Bool, TagRole::EffectBypass);
+    add(e.reset_tag, TagKind::Bool, TagRole::EffectReset);
+    if (e.process_data) {
+      add(e.process_data->tag, TagKind::Bool, TagRole::ProcessValue);
+      add(e.process_data->mask_tag, TagKind::Bool, TagRole::Mask);
+    }
+  }
+  std::sort(by_key_.begin(), by_key_.end());
+}
+
+std::optional<std::size_t> InputTable::find(std::string_view name) const {
+  std::string key = tag_key(name);
+  auto it = std::lower_bound(by_key_.begin(), by_key_.end(), key,
+                             [](const auto& p, const std::string& k) { return p.first < k; });
+  if (it == by_key_.end() || it->first != key) return std::nullopt;
+  return it->second;
+}
+
+namespace {
+constexpr std::pair<CommandOp, const char*> kOps[] = {
+    {CommandOp::AckCause, "ack_cause"},
+    {CommandOp::ResetEffect, "reset_effect"},
+    {CommandOp::OverrideEffect, "override_effect"},
+    {CommandOp::StopOverride, "stop_override"},
+    {CommandOp::SoftBypassCause, "soft_bypass_cause"},
+    {CommandOp::SoftBypassTag, "soft_bypass_tag"},
+    {CommandOp::SoftBypassEffect, "soft_bypass_effect"},
+    {CommandOp::SimulateTag, "simulate_tag"},
+    {CommandOp::StopSimulation, "stop_simulation"},
+    {CommandOp::ClearFirstOut, "clear_first_out"},
+    {CommandOp::ClearAlarms, "clear_alarms"},
+};
+constexpr std::pair<Voting, const char*> kVotings[] = {
+    {Voting::OneOoOne, "1oo1"},   {Voting::OneOoTwo, "1oo2"},   {Voting::TwoOoTwo, "2oo2"},
+    {Voting::OneOoThree, "1oo3"}, {Voting::TwoOoThree, "2oo3"}, {Voting::ThreeOoThree, "3oo3"},
+    {Voting::Bypass, "bypass"},
+};
+}  // namespace
+
+const char* to_string(CommandOp op) {
+  for (auto [o, n] : kOps)
+    if (o == op) return n;
+  return "?";
+}
+
+std::optional<CommandOp> command_op_from_string(std::string_view s) {
+  for (auto [o, n] : kOps)
+    if (s == n) return o;
+  return std::nullopt;
+}
+
+const char* to_string(Voting v) {
+  for (auto [o, n] : kVotings)
+    if (o == v) return n;
+  return "?";
+}
+
+std::optional<Voting> voting_from_string(std::string_view s) {
+  for (auto [o, n] : kVotings)
+    if (s == n) return o;
+  return std::nullopt;
+}
+
+const std::vector<FieldInfo>& cause_fields() {
+  static const std::vector<FieldInfo> fields = {
+      {"active", FieldType::Bool},          {"trip_requested", FieldType::Bool},
+      {"tripped_tags", FieldType::Int},     {"voting", FieldType::Voting},
+      {"degraded", FieldType::Bool},        {"bypassed", FieldType::Bool},
+      {"soft_bypassed", FieldType::Bool},   {"inhibited", FieldType::Bool},
+      {"ack_required", FieldType::Bool},    {"first_out", FieldType::Bool},
+      {"hysteresis_active", FieldType::Bool}, {"delta_alarm", FieldType::Bool},
+      {"prewarning", FieldType::Bool},      {"timer_running", FieldType::Bool},
+      {"bypass_timeout", FieldType::Bool},  {"bypass_prealarm", FieldType::Bool},
+  };
+  return fields;
+}
+
+const std::vector<FieldInfo>& effect_fields() {
+  static const std::vector<FieldInfo> fields = {
+      {"active", FieldType::Bool},
+      {"latched", FieldType::Bool},
+      {"ok_to_reset", FieldType::Bool},
+      {"override_active", FieldType::Bool},
+      {"override_failed_timeout", FieldType::Bool},
+      {"override_failed_cause", FieldType::Bool},
+      {"override_prealarm", FieldType::Bool},
+      {"bypassed", FieldType::Bool},
+      {"soft_bypassed", FieldType::Bool},
+      {"masked", FieldType::Bool},
+      {"pass_through_active", FieldType::Bool},
+      {"output_delay_running", FieldType::Bool},
+  };
+  return fields;
+}
+
+}  // namespace cemv::model

@@ -1,0 +1,131 @@
+// The vocabulary shared by everything that executes or encodes a matrix: which
+// input tags a matrix reads, what one scan cycle's inputs and operator commands
+// look like, and the names of the status fields a scenario can expect.
+// Data only: what these mean is docs/semantics.md, implemented twice (runtime/,
+// encoder/).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "model/matrix.hpp"
+
+namespace cemv::model {
+
+// ---- Tag names ------------------------------------------------------------
+
+// Tag names match case-insensitively (6.1.4): this is the key to compare them by.
+std::string tag_key(std::string_view name);
+
+// An internal reference (6.1.3): Cause[x], Effect[x] or Effect[x][y].
+struct InternalRef {
+  enum class Kind { Cause, Effect, EffectTag } kind = Kind::Cause;
+  int id = 0;
+  int tag = 0;  // y of Effect[x][y], 1-based; 0 otherwise
+};
+// Parses an internal reference; nullopt when the name is an ordinary tag.
+std::optional<InternalRef> parse_internal_ref(std::string_view name);
+
+// ---- Input tags -------------------------------------------------------------
+
+enum class TagKind { Bool, Analog };
+
+// Why the matrix reads a tag; one tag may serve several roles (then the first
+// role in this order names its kind).
+enum class TagRole {
+  CauseInput,        // a cause's input tag (discrete or analog)
+  CauseBypass,
+  CauseInhibit,
+  EffectBypass,
+  EffectReset,
+  ProcessValue,      // process_data.tag
+  Mask,              // process_data.mask_tag
+  SecureWriteEnable,
+  GroupDeactivationEnable,
+  GroupDeactivationSet,
+};
+
+struct InputTag {
+  std::string name;      // as first written in the matrix
+  TagKind kind = TagKind::Bool;
+  std::vector<TagRole> roles;
+};
+
+// Every external input of a matrix (internal references excluded), in a fixed
+// order: the order of first appearance walking the matrix in its canonical order
+// (matrix-level tags, then causes by id, then effects by id). Input frames are
+// indexed by this order.
+class InputTable {
+ public:
+  explicit InputTable(const Matrix& m);
+  InputTable() = default;
+  const std::vector<InputTag>& tags() const { return tags_; }
+  std::size_t size() const { return tags_.size(); }
+  // Index of a tag by name (case-insensitive); nullopt when the matrix does not read it.
+  std::optional<std::size_t> find(std::string_view name) const;
+
+ private:
+  std::vector<InputTag> tags_;
+  std::vector<std::pair<std::string, std::size_t>> by_key_;  // sorted by key
+};
+
+// The value of one input tag in one cycle. Boolean tags use 0/1.
+struct TagValue {
+  float value = 0.0f;
+  bool bad_quality = false;
+};
+
+// ---- Operator commands (10.7) ---------------------------------------------
+
+enum class CommandOp {
+  AckCause,            // cause
+  ResetEffect,         // effect
+  OverrideEffect,      // effect
+  StopOverride,        // effect
+  SoftBypassCause,     // cause, on
+  SoftBypassTag,       // cause, tag (1-3), on
+  SoftBypassEffect,    // effect, on
+  SimulateTag,         // tag_name, value
+  StopSimulation,      // tag_name (empty: every simulation)
+  ClearFirstOut,       // group
+  ClearAlarms,         // cause or effect
+};
+const char* to_string(CommandOp);
+std::optional<CommandOp> command_op_from_string(std::string_view);
+
+struct Command {
+  CommandOp op = CommandOp::AckCause;
+  int cause = 0;       // 0 = not given
+  int effect = 0;
+  int tag = 0;         // 1-based tag index for SoftBypassTag
+  int group = 0;
+  bool on = true;
+  std::string tag_name;  // SimulateTag / StopSimulation
+  float value = 0.0f;
+};
+
+// Everything one scan cycle consumes: a value per input tag (indexed by the
+// InputTable) and the operator commands issued in that cycle.
+struct CycleInput {
+  std::vector<TagValue> tags;
+  std::vector<Command> commands;
+};
+
+// ---- Status fields (the scenario format's expect keys) ----------------------
+
+// Fields of `cause[ID].FIELD` and `effect[ID].FIELD`, in a fixed order. Both the
+// runtime and the encoder report exactly these, under these names.
+enum class FieldType { Bool, Int, Voting };
+struct FieldInfo { const char* name; FieldType type; };
+const std::vector<FieldInfo>& cause_fields();
+const std::vector<FieldInfo>& effect_fields();
+
+// Resulting voting logic of a cause, as the scenario spells it.
+enum class Voting { OneOoOne, OneOoTwo, TwoOoTwo, OneOoThree, TwoOoThree, ThreeOoThree, Bypass };
+const char* to_string(Voting);
+std::optional<Voting> voting_from_string(std::string_view);
+
+}  // namespace cemv::model
