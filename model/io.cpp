@@ -180,4 +180,24 @@ const std::vector<FieldInfo>& effect_fields() {
   return fields;
 }
 
+std::vector<Observable> observables(const Matrix& m) {
+  std::vector<Observable> out;
+  for (const auto& c : m.causes) {
+    if (c.function == CauseFunction::Comment) continue;
+    for (const auto& f : cause_fields())
+      out.push_back({"cause[" + std::to_string(c.id) + "]." + f.name, f.type, Node::Kind::Cause,
+                     c.id, f.name, 0});
+  }
+  for (const auto& e : m.effects) {
+    if (e.function == EffectFunction::Comment) continue;
+    std::string prefix = "effect[" + std::to_string(e.id) + "]";
+    for (const auto& f : effect_fields())
+      out.push_back({prefix + "." + f.name, f.type, Node::Kind::Effect, e.id, f.name, 0});
+    for (int k = 1; k <= static_cast<int>(e.tags.size()); ++k)
+      out.push_back({prefix + ".tag[" + std::to_string(k) + "]", FieldType::Bool,
+                     Node::Kind::Effect, e.id, "tag", k});
+  }
+  return out;
+}
+
 }  // namespace cemv::model

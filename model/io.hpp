@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "model/graph.hpp"
 #include "model/matrix.hpp"
 
 namespace cemv::model {
@@ -127,5 +128,20 @@ const std::vector<FieldInfo>& effect_fields();
 enum class Voting { OneOoOne, OneOoTwo, TwoOoTwo, OneOoThree, TwoOoThree, ThreeOoThree, Bypass };
 const char* to_string(Voting);
 std::optional<Voting> voting_from_string(std::string_view);
+
+// Every observable value of a matrix, in a fixed order: for each processed
+// cause by id its cause_fields(), for each processed effect by id its
+// effect_fields() then `effect[ID].tag[k]` for k = 1..tags (the output value,
+// 0/1). The runtime and the encoder each produce a value for every key, which
+// is what the differential test compares cycle by cycle.
+struct Observable {
+  std::string key;      // "cause[3].active", "effect[2].tag[1]"
+  FieldType type = FieldType::Bool;
+  Node::Kind kind = Node::Kind::Cause;
+  int id = 0;
+  std::string field;    // "active", or "tag" for output values
+  int tag = 0;          // k of tag[k]
+};
+std::vector<Observable> observables(const Matrix& m);
 
 }  // namespace cemv::model

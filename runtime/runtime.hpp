@@ -1,0 +1,52 @@
+// The reference runtime: the executable meaning of a matrix, one scan cycle at
+// a time, written line by line from docs/semantics.md. It shares the data model
+// and the evaluation order (model/) with the SMT encoder and no semantic code.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "model/io.hpp"
+#include "model/matrix.hpp"
+
+namespace cemv::runtime {
+
+class Runtime {
+ public:
+  // The matrix must have passed validation without errors; the runtime keeps
+  // its own copy.
+  explicit Runtime(const model::Matrix& m);
+  ~Runtime();
+  Runtime(Runtime&&) noexcept;
+  Runtime& operator=(Runtime&&) noexcept;
+
+  const model::Matrix& matrix() const;
+  // The input tags, in the order of CycleInput::tags.
+  const model::InputTable& inputs() const;
+  // Input values a fresh plant shows (scenario defaults: non-tripped, good quality).
+  model::CycleInput default_input() const;
+
+  // Runs exactly one scan cycle of cycle_ms. No heap allocation.
+  void step(const model::CycleInput& in);
+  std::uint64_t cycles_run() const;
+
+  // The value of one observable (model::observables) after the last step:
+  // Bool 0/1, Int as is, Voting as the model::Voting enumerator.
+  int value(const model::Observable& o) const;
+  // All observables in model::observables order.
+  void snapshot(std::vector<int>& out) const;
+
+  // The value of an output tag by name (case-insensitive); nullopt if unknown.
+  std::optional<bool> output(std::string_view tag) const;
+  // Commands refused in the last cycle (secure write, mutual lock, not allowed).
+  int commands_refused() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace cemv::runtime
