@@ -12,7 +12,8 @@ struct Context {
   int exit_code = 0;
 };
 
-void add_model_commands(CLI::App& app, Context& ctx);     // validate, graph, fmt, signature
+void add_model_commands(CLI::App& app, Context& ctx);     // fmt, signature
+void add_validate_commands(CLI::App& app, Context& ctx);  // validate, graph
 void add_report_commands(CLI::App& app, Context& ctx);    // report
 void add_csv_commands(CLI::App& app, Context& ctx);       // export-csv, import-csv
 void add_simulate_commands(CLI::App& app, Context& ctx);  // simulate

@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "cemv 0.1.0");
   cemv::cli::Context ctx;
   cemv::cli::add_model_commands(app, ctx);
+  cemv::cli::add_validate_commands(app, ctx);
   cemv::cli::add_report_commands(app, ctx);
   cemv::cli::add_csv_commands(app, ctx);
   cemv::cli::add_simulate_commands(app, ctx);

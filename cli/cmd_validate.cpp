@@ -1,0 +1,7 @@
+#include "cli/commands.hpp"
+
+namespace cemv::cli {
+
+void add_validate_commands(CLI::App&, Context&) {}
+
+}  // namespace cemv::cli
