@@ -1,1 +1,836 @@
-// implemented in the foundation issue
+// cemv-scenario/1: parsing against a matrix, defaults, expansion into cycles.
+// The format is the contract of issue 3 section 4; docs/scenario.md describes it
+// field by field.
+#include "model/scenario.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "model/format.hpp"
+
+namespace cemv::model {
+
+namespace {
+
+using nlohmann::json;
+
+// ---- small helpers ---------------------------------------------------------
+
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    cur[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      std::size_t sub = prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
+      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, sub});
+    }
+    std::swap(prev, cur);
+  }
+  return prev[b.size()];
+}
+
+// " (did you mean 'X'?)" for the closest candidate, compared case-insensitively;
+// empty when nothing is close. Ties go to the first candidate, so the hint is
+// deterministic.
+std::string did_you_mean(std::string_view word, const std::vector<std::string>& candidates) {
+  std::string key = tag_key(word);
+  const std::string* best = nullptr;
+  std::size_t best_d = std::numeric_limits<std::size_t>::max();
+  for (const auto& c : candidates) {
+    std::size_t d = edit_distance(key, tag_key(c));
+    if (d < best_d) {
+      best_d = d;
+      best = &c;
+    }
+  }
+  std::size_t limit = std::max<std::size_t>(2, key.size() / 3);
+  if (!best || best_d > limit) return "";
+  return " (did you mean '" + *best + "'?)";
+}
+
+std::string json_type_name(const json& j) {
+  if (j.is_boolean()) return "a boolean";
+  if (j.is_number_integer() || j.is_number_unsigned()) return "an integer";
+  if (j.is_number()) return "a number";
+  if (j.is_string()) return "a string";
+  if (j.is_array()) return "an array";
+  if (j.is_object()) return "an object";
+  return "null";
+}
+
+std::string sq(std::string_view s) {
+  std::string out;
+  out.reserve(s.size() + 2);
+  out.push_back('\'');
+  out.append(s);
+  out.push_back('\'');
+  return out;
+}
+
+// Line and column (1-based) of a byte offset, for syntax errors.
+std::string line_column(std::string_view text, std::size_t offset) {
+  std::size_t line = 1, col = 1;
+  for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      col = 1;
+    } else {
+      ++col;
+    }
+  }
+  return "line " + std::to_string(line) + ", column " + std::to_string(col);
+}
+
+struct DepthExceeded {};
+
+// ---- the parser ------------------------------------------------------------
+
+class Parser {
+ public:
+  Parser(const Matrix& m) : m_(m), table_(m) {
+    for (const auto& t : table_.tags()) input_names_.push_back(t.name);
+    for (const auto& e : m_.effects) {
+      if (e.function == EffectFunction::Comment) continue;
+      for (std::size_t k = 0; k < e.tags.size(); ++k) {
+        if (parse_internal_ref(e.tags[k].name)) continue;
+        outputs_.push_back({e.tags[k].name, e.id, static_cast<int>(k + 1)});
+        output_names_.push_back(e.tags[k].name);
+      }
+    }
+    for (const auto& c : m_.causes) {
+      cause_names_.push_back(c.name);
+    }
+    for (const auto& e : m_.effects) effect_names_.push_back(e.name);
+  }
+
+  Scenario parse(const json& root) {
+    Scenario sc;
+    if (!root.is_object()) {
+      error("", "a scenario is a JSON object, not " + json_type_name(root));
+      finish();
+    }
+    check_keys(root, "", {"format", "description", "initial", "steps"});
+    if (!root.contains("format")) {
+      error("format", "missing; expected \"" + std::string(kScenarioFormat) + "\"");
+    } else if (!root["format"].is_string() ||
+               root["format"].get<std::string>() != kScenarioFormat) {
+      error("format", "expected \"" + std::string(kScenarioFormat) + "\", got " +
+                          root["format"].dump());
+    }
+    if (root.contains("description")) sc.description = string_field(root["description"], "description");
+    if (root.contains("initial")) sc.initial = parse_inputs(root["initial"], "initial");
+    if (!root.contains("steps")) {
+      error("steps", "missing; a scenario has at least one step");
+    } else if (!root["steps"].is_array()) {
+      error("steps", "must be an array, not " + json_type_name(root["steps"]));
+    } else if (root["steps"].empty()) {
+      error("steps", "empty; a scenario has at least one step");
+    } else {
+      std::uint64_t total = 0;
+      const auto& steps = root["steps"];
+      for (std::size_t i = 0; i < steps.size(); ++i) {
+        sc.steps.push_back(parse_step(steps[i], "steps[" + std::to_string(i) + "]"));
+        total += sc.steps.back().cycles;
+        if (total > kMaxScenarioCycles) {
+          error("steps[" + std::to_string(i) + "]",
+                "the scenario exceeds " + std::to_string(kMaxScenarioCycles) + " cycles in total");
+          break;
+        }
+      }
+    }
+    finish();
+    return sc;
+  }
+
+  void finish() {
+    if (!issues_.empty()) throw LoadError(issues_);
+  }
+
+ private:
+  struct OutputRef {
+    std::string name;
+    int effect;
+    int k;
+  };
+
+  void error(std::string where, std::string what) {
+    issues_.push_back({std::move(where), std::move(what)});
+  }
+
+  static std::string join(const std::string& path, const std::string& key) {
+    return path.empty() ? key : path + "." + key;
+  }
+
+  void check_keys(const json& obj, const std::string& path,
+                  std::initializer_list<const char*> allowed) {
+    std::vector<std::string> names(allowed.begin(), allowed.end());
+    for (const auto& [k, v] : obj.items()) {
+      (void)v;
+      if (std::find(names.begin(), names.end(), k) == names.end())
+        error(join(path, k), "unknown key" + did_you_mean(k, names));
+    }
+  }
+
+  std::string string_field(const json& j, const std::string& where) {
+    if (!j.is_string()) {
+      error(where, "must be a string, not " + json_type_name(j));
+      return "";
+    }
+    return j.get<std::string>();
+  }
+
+  std::optional<bool> bool_field(const json& j, const std::string& where) {
+    if (!j.is_boolean()) {
+      error(where, "must be true or false, not " + json_type_name(j));
+      return std::nullopt;
+    }
+    return j.get<bool>();
+  }
+
+  std::optional<std::int64_t> int_field(const json& j, const std::string& where) {
+    if (j.is_number_unsigned()) {
+      auto v = j.get<std::uint64_t>();
+      if (v > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())) {
+        error(where, "out of range");
+        return std::nullopt;
+      }
+      return static_cast<std::int64_t>(v);
+    }
+    if (j.is_number_integer()) return j.get<std::int64_t>();
+    error(where, "must be an integer, not " + json_type_name(j));
+    return std::nullopt;
+  }
+
+  // A REAL (IEEE single precision, 6.3.1): finite and within float range.
+  std::optional<float> real_field(const json& j, const std::string& where) {
+    if (!j.is_number()) {
+      error(where, "must be a number, not " + json_type_name(j));
+      return std::nullopt;
+    }
+    double d = j.get<double>();
+    if (!std::isfinite(d) || std::fabs(d) > std::numeric_limits<float>::max()) {
+      error(where, "is outside the range of a REAL (32-bit float)");
+      return std::nullopt;
+    }
+    return static_cast<float>(d);
+  }
+
+  // The value of an input (or simulated) tag: a boolean for Boolean tags, a
+  // number for analog ones.
+  std::optional<float> tag_value(const json& j, TagKind kind, const std::string& tag,
+                                 const std::string& where) {
+    if (kind == TagKind::Bool) {
+      if (!j.is_boolean()) {
+        error(where, "tag " + sq(tag) + " is Boolean: the value must be true or false, not " +
+                         json_type_name(j));
+        return std::nullopt;
+      }
+      return j.get<bool>() ? 1.0f : 0.0f;
+    }
+    if (!j.is_number()) {
+      error(where, "tag " + sq(tag) + " is analog: the value must be a number, not " +
+                       json_type_name(j));
+      return std::nullopt;
+    }
+    return real_field(j, where);
+  }
+
+  std::vector<InputSetting> parse_inputs(const json& j, const std::string& path) {
+    std::vector<InputSetting> out;
+    if (!j.is_object()) {
+      error(path, "must be an object of tag names, not " + json_type_name(j));
+      return out;
+    }
+    for (const auto& [name, v] : j.items()) {
+      std::string where = join(path, name);
+      auto idx = table_.find(name);
+      if (!idx) {
+        std::string hint = did_you_mean(name, input_names_);
+        bool is_output = std::any_of(outputs_.begin(), outputs_.end(), [&](const OutputRef& o) {
+          return tag_key(o.name) == tag_key(name);
+        });
+        if (is_output)
+          error(path, sq(name) +
+                          " is an output tag; outputs cannot be set as inputs (use the "
+                          "simulate_tag command to force one)");
+        else
+          error(path, "unknown tag " + sq(name) + hint);
+        continue;
+      }
+      if (std::any_of(out.begin(), out.end(), [&](const InputSetting& s) { return s.tag == *idx; })) {
+        error(where, "tag " + sq(table_.tags()[*idx].name) + " is set twice");
+        continue;
+      }
+      const InputTag& tag = table_.tags()[*idx];
+      InputSetting s;
+      s.tag = *idx;
+      if (v.is_object()) {
+        check_keys(v, where, {"value", "quality"});
+        if (!v.contains("value") && !v.contains("quality"))
+          error(where, "needs \"value\", \"quality\" or both");
+        if (v.contains("value")) s.value = tag_value(v["value"], tag.kind, tag.name, join(where, "value"));
+        if (v.contains("quality")) {
+          const json& q = v["quality"];
+          if (q.is_string() && q.get<std::string>() == "good")
+            s.bad_quality = false;
+          else if (q.is_string() && q.get<std::string>() == "bad")
+            s.bad_quality = true;
+          else
+            error(join(where, "quality"), "must be \"good\" or \"bad\", not " + q.dump());
+        }
+      } else {
+        s.value = tag_value(v, tag.kind, tag.name, where);
+        s.bad_quality = false;
+      }
+      out.push_back(s);
+    }
+    return out;
+  }
+
+  // A cause referenced by id (integer) or name (string, case-insensitive).
+  const Cause* cause_ref(const json& j, const std::string& where) {
+    const Cause* c = nullptr;
+    if (j.is_number_integer() || j.is_number_unsigned()) {
+      auto id = int_field(j, where);
+      if (id && *id >= 0 && *id <= std::numeric_limits<int>::max())
+        c = m_.find_cause(static_cast<int>(*id));
+      if (!c) {
+        error(where, "no cause with id " + j.dump());
+        return nullptr;
+      }
+    } else if (j.is_string()) {
+      std::string key = tag_key(j.get<std::string>());
+      for (const auto& x : m_.causes)
+        if (tag_key(x.name) == key) c = &x;
+      if (!c) {
+        error(where, "no cause named " + sq(j.get<std::string>()) +
+                         did_you_mean(j.get<std::string>(), cause_names_));
+        return nullptr;
+      }
+    } else {
+      error(where, "must be a cause id or name, not " + json_type_name(j));
+      return nullptr;
+    }
+    if (c->function == CauseFunction::Comment) {
+      error(where, "cause " + std::to_string(c->id) + " is comment-only and is not processed");
+      return nullptr;
+    }
+    return c;
+  }
+
+  const Effect* effect_ref(const json& j, const std::string& where) {
+    const Effect* e = nullptr;
+    if (j.is_number_integer() || j.is_number_unsigned()) {
+      auto id = int_field(j, where);
+      if (id && *id >= 0 && *id <= std::numeric_limits<int>::max())
+        e = m_.find_effect(static_cast<int>(*id));
+      if (!e) {
+        error(where, "no effect with id " + j.dump());
+        return nullptr;
+      }
+    } else if (j.is_string()) {
+      std::string key = tag_key(j.get<std::string>());
+      for (const auto& x : m_.effects)
+        if (tag_key(x.name) == key) e = &x;
+      if (!e) {
+        error(where, "no effect named " + sq(j.get<std::string>()) +
+                         did_you_mean(j.get<std::string>(), effect_names_));
+        return nullptr;
+      }
+    } else {
+      error(where, "must be an effect id or name, not " + json_type_name(j));
+      return nullptr;
+    }
+    if (e->function == EffectFunction::Comment) {
+      error(where, "effect " + std::to_string(e->id) + " is comment-only and is not processed");
+      return nullptr;
+    }
+    return e;
+  }
+
+  std::optional<Command> parse_command(const json& j, const std::string& path) {
+    if (!j.is_object()) {
+      error(path, "a command is an object, not " + json_type_name(j));
+      return std::nullopt;
+    }
+    if (!j.contains("op") || !j["op"].is_string()) {
+      error(join(path, "op"), "missing or not a string; a command names its \"op\"");
+      return std::nullopt;
+    }
+    std::string name = j["op"].get<std::string>();
+    auto op = command_op_from_string(name);
+    if (!op) {
+      std::vector<std::string> ops;
+      for (int i = 0; i <= static_cast<int>(CommandOp::ClearAlarms); ++i)
+        ops.push_back(to_string(static_cast<CommandOp>(i)));
+      error(join(path, "op"), "unknown command " + sq(name) + did_you_mean(name, ops));
+      return std::nullopt;
+    }
+    Command cmd;
+    cmd.op = *op;
+    std::size_t before = issues_.size();
+    auto need = [&](const char* key) -> const json* {
+      if (!j.contains(key)) {
+        error(path, "command " + sq(name) + " needs \"" + key + "\"");
+        return nullptr;
+      }
+      return &j[key];
+    };
+    auto cause = [&]() -> const Cause* {
+      const json* v = need("cause");
+      if (!v) return nullptr;
+      const Cause* c = cause_ref(*v, join(path, "cause"));
+      if (c) cmd.cause = c->id;
+      return c;
+    };
+    auto effect = [&]() {
+      const json* v = need("effect");
+      if (!v) return;
+      if (const Effect* e = effect_ref(*v, join(path, "effect"))) cmd.effect = e->id;
+    };
+    auto on = [&]() {
+      const json* v = need("on");
+      if (!v) return;
+      if (auto b = bool_field(*v, join(path, "on"))) cmd.on = *b;
+    };
+    switch (*op) {
+      case CommandOp::AckCause:
+        check_keys(j, path, {"op", "cause"});
+        cause();
+        break;
+      case CommandOp::ResetEffect:
+      case CommandOp::OverrideEffect:
+      case CommandOp::StopOverride:
+        check_keys(j, path, {"op", "effect"});
+        effect();
+        break;
+      case CommandOp::SoftBypassCause:
+        check_keys(j, path, {"op", "cause", "on"});
+        cause();
+        on();
+        break;
+      case CommandOp::SoftBypassTag: {
+        check_keys(j, path, {"op", "cause", "tag", "on"});
+        const Cause* c = cause();
+        if (const json* t = need("tag")) {
+          auto k = int_field(*t, join(path, "tag"));
+          if (k && c) {
+            if (*k < 1 || *k > static_cast<std::int64_t>(c->tags.size()))
+              error(join(path, "tag"), "cause " + std::to_string(c->id) + " has " +
+                                           std::to_string(c->tags.size()) +
+                                           " input tag(s); the tag index is 1-" +
+                                           std::to_string(c->tags.size()));
+            else
+              cmd.tag = static_cast<int>(*k);
+          }
+        }
+        on();
+        break;
+      }
+      case CommandOp::SoftBypassEffect:
+        check_keys(j, path, {"op", "effect", "on"});
+        effect();
+        on();
+        break;
+      case CommandOp::SimulateTag: {
+        check_keys(j, path, {"op", "tag", "value"});
+        const json* t = need("tag");
+        const json* v = need("value");
+        if (t) {
+          std::string tag = string_field(*t, join(path, "tag"));
+          if (!tag.empty()) {
+            auto idx = table_.find(tag);
+            auto out = std::find_if(outputs_.begin(), outputs_.end(), [&](const OutputRef& o) {
+              return tag_key(o.name) == tag_key(tag);
+            });
+            if (idx) {
+              const InputTag& it = table_.tags()[*idx];
+              cmd.tag_name = it.name;
+              if (v)
+                if (auto x = tag_value(*v, it.kind, it.name, join(path, "value"))) cmd.value = *x;
+            } else if (out != outputs_.end()) {
+              cmd.tag_name = out->name;
+              if (v)
+                if (auto x = tag_value(*v, TagKind::Bool, out->name, join(path, "value")))
+                  cmd.value = *x;
+            } else {
+              std::vector<std::string> all = input_names_;
+              all.insert(all.end(), output_names_.begin(), output_names_.end());
+              error(join(path, "tag"), "unknown tag " + sq(tag) + did_you_mean(tag, all));
+            }
+          }
+        }
+        break;
+      }
+      case CommandOp::StopSimulation: {
+        check_keys(j, path, {"op", "tag"});
+        if (j.contains("tag")) {
+          std::string tag = string_field(j["tag"], join(path, "tag"));
+          auto idx = table_.find(tag);
+          auto out = std::find_if(outputs_.begin(), outputs_.end(), [&](const OutputRef& o) {
+            return tag_key(o.name) == tag_key(tag);
+          });
+          if (idx) {
+            cmd.tag_name = table_.tags()[*idx].name;
+          } else if (out != outputs_.end()) {
+            cmd.tag_name = out->name;
+          } else if (j["tag"].is_string()) {
+            std::vector<std::string> all = input_names_;
+            all.insert(all.end(), output_names_.begin(), output_names_.end());
+            error(join(path, "tag"), "unknown tag " + sq(tag) + did_you_mean(tag, all));
+          }
+        }
+        break;
+      }
+      case CommandOp::ClearFirstOut:
+        check_keys(j, path, {"op", "group"});
+        if (const json* g = need("group")) {
+          auto v = int_field(*g, join(path, "group"));
+          if (v && (*v < 1 || *v > kMaxFirstOutGroup))
+            error(join(path, "group"), "first-out groups are 1-" + std::to_string(kMaxFirstOutGroup));
+          else if (v)
+            cmd.group = static_cast<int>(*v);
+        }
+        break;
+      case CommandOp::ClearAlarms:
+        check_keys(j, path, {"op", "cause", "effect"});
+        if (j.contains("cause") == j.contains("effect")) {
+          error(path, "command 'clear_alarms' needs exactly one of \"cause\" and \"effect\"");
+        } else if (j.contains("cause")) {
+          if (const Cause* c = cause_ref(j["cause"], join(path, "cause"))) cmd.cause = c->id;
+        } else {
+          if (const Effect* e = effect_ref(j["effect"], join(path, "effect"))) cmd.effect = e->id;
+        }
+        break;
+    }
+    if (issues_.size() != before) return std::nullopt;
+    return cmd;
+  }
+
+  // "cause[ID or NAME].FIELD", "effect[..].FIELD", "effect[..].tag[k]" or an
+  // output tag name.
+  std::optional<Expectation> parse_expectation(const std::string& key, const json& v,
+                                               const std::string& path) {
+    Expectation x;
+    x.key = key;
+    x.where = join(path, key);
+    bool is_cause = key.starts_with("cause[");
+    bool is_effect = key.starts_with("effect[");
+    if (is_cause || is_effect) {
+      std::size_t open = key.find('[');
+      std::size_t close = key.find(']', open);
+      if (close == std::string::npos || close + 1 >= key.size() || key[close + 1] != '.') {
+        error(x.where, "malformed key; expected " + std::string(is_cause ? "cause" : "effect") +
+                           "[ID or NAME].FIELD");
+        return std::nullopt;
+      }
+      std::string ref = key.substr(open + 1, close - open - 1);
+      std::string field = key.substr(close + 2);
+      bool numeric = !ref.empty() && ref.size() <= 9 &&
+                     std::all_of(ref.begin(), ref.end(), [](char c) { return c >= '0' && c <= '9'; });
+      json ref_json = numeric ? json(std::stoi(ref)) : json(ref);
+      Observable& o = x.target.observable;
+      o.id = 0;
+      if (is_cause) {
+        const Cause* c = cause_ref(ref_json, x.where);
+        if (!c) return std::nullopt;
+        o.kind = Node::Kind::Cause;
+        o.id = c->id;
+        const auto& fields = cause_fields();
+        auto f = std::find_if(fields.begin(), fields.end(),
+                              [&](const FieldInfo& fi) { return field == fi.name; });
+        if (f == fields.end()) {
+          std::vector<std::string> names;
+          for (const auto& fi : fields) names.push_back(fi.name);
+          error(x.where, "unknown cause field " + sq(field) + did_you_mean(field, names));
+          return std::nullopt;
+        }
+        o.field = f->name;
+        o.type = f->type;
+        o.key = "cause[" + std::to_string(c->id) + "]." + o.field;
+      } else {
+        const Effect* e = effect_ref(ref_json, x.where);
+        if (!e) return std::nullopt;
+        o.kind = Node::Kind::Effect;
+        o.id = e->id;
+        if (field.starts_with("tag[") && field.ends_with("]")) {
+          std::string digits = field.substr(4, field.size() - 5);
+          bool ok = !digits.empty() && digits.size() <= 2 &&
+                    std::all_of(digits.begin(), digits.end(),
+                                [](char c) { return c >= '0' && c <= '9'; });
+          int k = ok ? std::stoi(digits) : 0;
+          if (k < 1 || k > static_cast<int>(e->tags.size())) {
+            error(x.where, "effect " + std::to_string(e->id) + " has " +
+                               std::to_string(e->tags.size()) + " output tag(s); tag[k] takes k = 1-" +
+                               std::to_string(e->tags.size()));
+            return std::nullopt;
+          }
+          o.field = "tag";
+          o.tag = k;
+          o.type = FieldType::Bool;
+          o.key = "effect[" + std::to_string(e->id) + "].tag[" + std::to_string(k) + "]";
+        } else {
+          const auto& fields = effect_fields();
+          auto f = std::find_if(fields.begin(), fields.end(),
+                                [&](const FieldInfo& fi) { return field == fi.name; });
+          if (f == fields.end()) {
+            std::vector<std::string> names;
+            for (const auto& fi : fields) names.push_back(fi.name);
+            names.push_back("tag[1]");
+            error(x.where, "unknown effect field " + sq(field) + did_you_mean(field, names));
+            return std::nullopt;
+          }
+          o.field = f->name;
+          o.type = f->type;
+          o.key = "effect[" + std::to_string(e->id) + "]." + o.field;
+        }
+      }
+      x.target.kind = ExpectTarget::Kind::Status;
+      x.type = o.type;
+    } else {
+      auto out = std::find_if(outputs_.begin(), outputs_.end(), [&](const OutputRef& o) {
+        return tag_key(o.name) == tag_key(key);
+      });
+      if (out == outputs_.end()) {
+        std::string hint = did_you_mean(key, output_names_);
+        if (table_.find(key))
+          error(x.where, sq(key) + " is an input tag; expectations name output tags, "
+                                       "cause[..].FIELD or effect[..].FIELD");
+        else
+          error(x.where, "unknown expectation key " + sq(key) +
+                             ": not an output tag, nor cause[..].FIELD / effect[..].FIELD" + hint);
+        return std::nullopt;
+      }
+      x.target.kind = ExpectTarget::Kind::OutputTag;
+      x.target.output_tag = out->name;
+      Observable& o = x.target.observable;
+      o.kind = Node::Kind::Effect;
+      o.id = out->effect;
+      o.field = "tag";
+      o.tag = out->k;
+      o.type = FieldType::Bool;
+      o.key = "effect[" + std::to_string(out->effect) + "].tag[" + std::to_string(out->k) + "]";
+      x.type = FieldType::Bool;
+    }
+    switch (x.type) {
+      case FieldType::Bool:
+        if (!v.is_boolean()) {
+          error(x.where, "expects true or false, not " + json_type_name(v));
+          return std::nullopt;
+        }
+        x.expected = v.get<bool>() ? 1 : 0;
+        break;
+      case FieldType::Int: {
+        if (!v.is_number_integer() && !v.is_number_unsigned()) {
+          error(x.where, "expects an integer, not " + json_type_name(v));
+          return std::nullopt;
+        }
+        auto n = v.get<std::int64_t>();
+        if (n < 0 || n > 1000) {
+          error(x.where, "expects a count, not " + v.dump());
+          return std::nullopt;
+        }
+        x.expected = static_cast<int>(n);
+        break;
+      }
+      case FieldType::Voting: {
+        auto s = v.is_string() ? voting_from_string(v.get<std::string>()) : std::nullopt;
+        if (!s) {
+          error(x.where, "expects a voting: \"1oo1\", \"1oo2\", \"2oo2\", \"1oo3\", \"2oo3\", "
+                         "\"3oo3\" or \"bypass\", not " + v.dump());
+          return std::nullopt;
+        }
+        x.expected = static_cast<int>(*s);
+        break;
+      }
+    }
+    return x;
+  }
+
+  ScenarioStep parse_step(const json& j, const std::string& path) {
+    ScenarioStep st;
+    if (!j.is_object()) {
+      error(path, "a step is an object, not " + json_type_name(j));
+      return st;
+    }
+    check_keys(j, path, {"description", "inputs", "commands", "cycles", "ms", "expect"});
+    if (j.contains("description")) st.description = string_field(j["description"], join(path, "description"));
+    if (j.contains("inputs")) st.inputs = parse_inputs(j["inputs"], join(path, "inputs"));
+    if (j.contains("commands")) {
+      const json& cs = j["commands"];
+      if (!cs.is_array()) {
+        error(join(path, "commands"), "must be an array, not " + json_type_name(cs));
+      } else {
+        for (std::size_t i = 0; i < cs.size(); ++i)
+          if (auto c = parse_command(cs[i], path + ".commands[" + std::to_string(i) + "]"))
+            st.commands.push_back(*c);
+      }
+    }
+    if (j.contains("cycles") && j.contains("ms")) {
+      error(path, "give either \"cycles\" or \"ms\", not both");
+    } else if (j.contains("cycles")) {
+      auto n = int_field(j["cycles"], join(path, "cycles"));
+      if (n && (*n < 1 || static_cast<std::uint64_t>(*n) > kMaxScenarioCycles))
+        error(join(path, "cycles"), "must be 1-" + std::to_string(kMaxScenarioCycles) + ", not " +
+                                        std::to_string(*n));
+      else if (n)
+        st.cycles = static_cast<std::uint64_t>(*n);
+    } else if (j.contains("ms")) {
+      auto n = int_field(j["ms"], join(path, "ms"));
+      if (n) {
+        std::uint64_t cycle = m_.cycle_ms == 0 ? 1 : m_.cycle_ms;
+        if (*n < 1)
+          error(join(path, "ms"), "must be positive, not " + std::to_string(*n));
+        else if (static_cast<std::uint64_t>(*n) % cycle != 0)
+          error(join(path, "ms"), std::to_string(*n) + " is not a multiple of cycle_ms (" +
+                                      std::to_string(cycle) + ")");
+        else if (static_cast<std::uint64_t>(*n) / cycle > kMaxScenarioCycles)
+          error(join(path, "ms"), "exceeds " + std::to_string(kMaxScenarioCycles) + " cycles");
+        else
+          st.cycles = static_cast<std::uint64_t>(*n) / cycle;
+      }
+    }
+    if (j.contains("expect")) {
+      const json& ex = j["expect"];
+      if (!ex.is_object()) {
+        error(join(path, "expect"), "must be an object, not " + json_type_name(ex));
+      } else {
+        for (const auto& [k, v] : ex.items())
+          if (auto x = parse_expectation(k, v, join(path, "expect"))) st.expect.push_back(*x);
+      }
+    }
+    return st;
+  }
+
+  const Matrix& m_;
+  InputTable table_;
+  std::vector<std::string> input_names_;
+  std::vector<OutputRef> outputs_;
+  std::vector<std::string> output_names_;
+  std::vector<std::string> cause_names_;
+  std::vector<std::string> effect_names_;
+  std::vector<LoadIssue> issues_;
+};
+
+}  // namespace
+
+std::string expectation_value_text(FieldType type, int value) {
+  switch (type) {
+    case FieldType::Bool: return value ? "true" : "false";
+    case FieldType::Int: return std::to_string(value);
+    case FieldType::Voting: return to_string(static_cast<Voting>(value));
+  }
+  return std::to_string(value);
+}
+
+Scenario parse_scenario(std::string_view json_text, const Matrix& m, const std::string& source_name) {
+  std::string prefix = source_name.empty() ? "" : source_name + ": ";
+  if (json_text.size() > kMaxFileBytes)
+    throw LoadError({{source_name, "file larger than " + std::to_string(kMaxFileBytes) + " bytes"}});
+  json root;
+  try {
+    root = json::parse(
+        json_text.begin(), json_text.end(),
+        [](int depth, json::parse_event_t, json&) {
+          if (depth > kMaxJsonDepth) throw DepthExceeded{};
+          return true;
+        });
+  } catch (const DepthExceeded&) {
+    throw LoadError({{source_name, "JSON nested deeper than " + std::to_string(kMaxJsonDepth) +
+                                       " levels"}});
+  } catch (const json::parse_error& e) {
+    std::string what = e.what();
+    // nlohmann's message: "[json.exception.parse_error.101] parse error at line 1, column 2: ..."
+    auto colon = what.find(": ");
+    std::string detail = colon == std::string::npos ? what : what.substr(colon + 2);
+    throw LoadError({{prefix + line_column(json_text, e.byte == 0 ? 0 : e.byte - 1),
+                      "JSON syntax error: " + detail}});
+  }
+  Parser p(m);
+  try {
+    return p.parse(root);
+  } catch (const LoadError& e) {
+    if (source_name.empty()) throw;
+    std::vector<LoadIssue> issues = e.issues();
+    for (auto& i : issues) i.where = i.where.empty() ? source_name : source_name + ": " + i.where;
+    throw LoadError(std::move(issues));
+  }
+}
+
+Scenario load_scenario(const std::filesystem::path& file, const Matrix& m) {
+  std::error_code ec;
+  auto size = std::filesystem::file_size(file, ec);
+  if (ec) throw LoadError({{file.string(), "cannot read: " + ec.message()}});
+  if (size > kMaxFileBytes)
+    throw LoadError({{file.string(), "file larger than " + std::to_string(kMaxFileBytes) + " bytes"}});
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw LoadError({{file.string(), "cannot open"}});
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return parse_scenario(ss.str(), m, file.string());
+}
+
+TagValue default_tag_value(const Matrix& m, const InputTag& tag) {
+  TagValue v;
+  if (std::find(tag.roles.begin(), tag.roles.end(), TagRole::CauseInput) == tag.roles.end())
+    return v;  // Boolean control and process tags: FALSE
+  std::string key = tag_key(tag.name);
+  for (const auto& c : m.causes) {
+    if (c.function == CauseFunction::Comment) continue;
+    for (const auto& t : c.tags) {
+      if (tag_key(t.name) != key) continue;
+      if (c.input == InputKind::Analog && c.analog) {
+        double limit = c.analog->limit, hyst = c.analog->hysteresis;
+        double x = c.analog->limit_type == LimitType::High ? limit - hyst - 1.0 : limit + hyst + 1.0;
+        v.value = static_cast<float>(x);
+      } else {
+        // 6.3.4: DTT trips on FALSE, so its healthy value is TRUE; ETT the opposite.
+        v.value = t.ett ? 0.0f : 1.0f;
+      }
+      return v;
+    }
+  }
+  return v;
+}
+
+CycleInput default_cycle_input(const Matrix& m) {
+  InputTable table(m);
+  CycleInput in;
+  for (const auto& t : table.tags()) in.tags.push_back(default_tag_value(m, t));
+  return in;
+}
+
+ExpandedScenario expand_scenario(const Scenario& sc, const Matrix& m) {
+  ExpandedScenario out;
+  CycleInput current = default_cycle_input(m);
+  auto apply = [&](const std::vector<InputSetting>& settings) {
+    for (const auto& s : settings) {
+      if (s.tag >= current.tags.size()) continue;
+      if (s.value) current.tags[s.tag].value = *s.value;
+      if (s.bad_quality) current.tags[s.tag].bad_quality = *s.bad_quality;
+    }
+  };
+  apply(sc.initial);
+  for (std::size_t i = 0; i < sc.steps.size(); ++i) {
+    const ScenarioStep& st = sc.steps[i];
+    apply(st.inputs);
+    for (std::uint64_t c = 0; c < st.cycles; ++c) {
+      CycleInput in;
+      in.tags = current.tags;
+      if (c == 0) in.commands = st.commands;
+      out.cycles.push_back(std::move(in));
+      out.step_of_cycle.push_back(i);
+    }
+    out.checks.push_back({i, out.cycles.size() - 1, &st.expect});
+  }
+  return out;
+}
+
+}  // namespace cemv::model
