@@ -21,6 +21,26 @@ struct Node {
 };
 std::string to_string(const Node& n);  // "cause[3]" / "effect[2]"
 
+// One internal reference (6.1.3) read by a processed cause or effect: which
+// element reads it, in which field, and which element (and output tag) it names.
+// The referenced element need not exist (validate() reports that).
+struct ReferenceUse {
+  Node reader;
+  std::string field;  // "input tag 2", "bypass_tag", "inhibit_tag", "reset_tag",
+                      // "process_data.tag", "process_data.mask_tag"
+  std::string tag;    // as written, e.g. "Effect[4][2]"
+  Node source;        // Cause[x] -> cause x; Effect[x] and Effect[x][y] -> effect x
+  int source_tag = 0; // y of Effect[x][y] (1-based); 0 otherwise
+};
+// Every internal reference read by a processed element (comment-only causes and
+// effects are not processed), in element order (causes by id, then effects by
+// id) and field order. Output tags are never read, so they are not listed.
+std::vector<ReferenceUse> internal_references(const Matrix& m);
+
+// cycles() stops after this many elementary cycles, so that a pathological
+// matrix (a dense knot of references) cannot make it run for ever.
+inline constexpr std::size_t kMaxReportedCycles = 100;
+
 struct Edge {
   enum class Kind { Intersection, Reference } kind = Kind::Intersection;
   Node from;
@@ -48,7 +68,9 @@ class DependencyGraph {
   // after reader, i.e. the reference closes a cycle).
   bool reads_previous(const Node& source, const Node& reader) const;
 
-  // The references that close a cycle, and each cycle as a node sequence.
+  // The references that close a cycle, and each elementary cycle as a node
+  // sequence starting at its smallest node, the list sorted (at most
+  // kMaxReportedCycles of them).
   std::vector<Edge> cycle_closing_edges() const;
   std::vector<std::vector<Node>> cycles() const;
 

@@ -23,4 +23,15 @@ struct Diagnostic {
 std::vector<Diagnostic> validate(const Matrix& m);
 bool has_errors(const std::vector<Diagnostic>& ds);
 
+// Every rule validate() applies, sorted by id: its severity, manual section and
+// a one-line meaning (docs/validation.md lists the same table).
+struct RuleInfo {
+  const char* id;
+  Severity severity;
+  const char* section;
+  const char* meaning;
+};
+const std::vector<RuleInfo>& validation_rules();
+const char* to_string(Severity);  // "error" / "warning"
+
 }  // namespace cemv::model
