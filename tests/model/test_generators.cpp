@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "model/io.hpp"
+#include "model/validate.hpp"
 #include "tests/support/random_inputs.hpp"
 #include "tests/support/random_matrix.hpp"
 
@@ -193,6 +194,20 @@ TEST(RandomMatrix, IsWellFormedForEverySeed) {
   for (std::uint64_t seed = 0; seed < kSeeds; ++seed) expect_well_formed(random_matrix(seed), seed);
 }
 
+std::string errors_of(const Matrix& m) {
+  std::string out;
+  for (const auto& d : validate(m))
+    if (d.severity == Severity::Error) out += d.rule + " " + d.element + ": " + d.message + "\n";
+  return out;
+}
+
+TEST(RandomMatrix, HasNoValidationErrors) {
+  for (std::uint64_t seed = 0; seed < kSeeds; ++seed) {
+    Matrix m = random_matrix(seed);
+    ASSERT_EQ(errors_of(m), "") << "seed " << seed;
+  }
+}
+
 TEST(RandomMatrix, DefaultSizesAreSmall) {
   for (std::uint64_t seed = 0; seed < kSeeds; ++seed) {
     Matrix m = random_matrix(seed);
@@ -230,6 +245,7 @@ TEST(BigMatrix, HasTheLimitsOf34AndEveryOption) {
   EXPECT_EQ(m.effects.size(), 128u);
   EXPECT_EQ(m.intersections.size(), 1024u);
   expect_well_formed(m, 1);
+  EXPECT_EQ(errors_of(m), "");
   auto counts = feature_counts(m);
   for (const auto& f : feature_names())
     if (f != "matrix.id_gap") {  // 128 ids leave no gap
