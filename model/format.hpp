@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -54,6 +55,14 @@ std::string signature(const Matrix& m);
 
 // Reads a whole file with the size guard; throws LoadError.
 std::string read_text_file(const std::filesystem::path& file);
+
+// Why a name is not a valid tag name by the syntax rules of 6.1.4 (e.g.
+// "'#TIC__543' repeats '_'"), or nullopt when it is valid. Internal references
+// (Cause[x], Effect[x], Effect[x][y], 6.1.3) are valid tag names.
+std::optional<std::string> tag_name_problem(std::string_view name);
+
+// Same for cause and effect names: 1-32 letters, digits and '_' (6.3.4, 6.4.4).
+std::optional<std::string> element_name_problem(std::string_view name);
 
 // Shortest decimal text that reads back as the same float (e.g. 0.1f -> "0.1").
 std::string float_text(float v);
