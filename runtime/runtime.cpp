@@ -203,7 +203,7 @@ EffectConfig Runtime::Impl::effect_config(const model::Effect& e) const {
     EffectLink link{slot, x->type, x->xoon.has_value()};
     if (x->xoon) {
       cfg.xoon_x = cfg.has_xoon ? std::min(cfg.xoon_x, *x->xoon) : *x->xoon;
-      cfg.xoon_type = x->type;
+      if (!cfg.has_xoon) cfg.xoon_type = x->type;  // E.2: the lowest cause id decides
       cfg.has_xoon = true;
     }
     if (x->type == model::IntersectionType::S || x->type == model::IntersectionType::R)
@@ -546,7 +546,8 @@ model::CycleInput Runtime::default_input() const {
   const auto& tags = impl_->inputs.tags();
   for (std::size_t idx = 0; idx < tags.size(); ++idx) {
     in.tags[idx] = model::TagValue{0.0f, false};
-    if (tags[idx].roles.empty() || tags[idx].roles.front() != model::TagRole::CauseInput) continue;
+    const auto& roles = tags[idx].roles;
+    if (std::find(roles.begin(), roles.end(), model::TagRole::CauseInput) == roles.end()) continue;
     const std::string key = model::tag_key(tags[idx].name);
     bool decided = false;
     for (const model::Cause& c : impl_->matrix.causes) {
@@ -556,9 +557,10 @@ model::CycleInput Runtime::default_input() const {
         decided = true;
         if (c.input == model::InputKind::Analog && c.analog) {
           const model::AnalogParams& a = *c.analog;
-          in.tags[idx].value = a.limit_type == model::LimitType::High
-                                   ? (a.limit - a.hysteresis) - 1.0f
-                                   : (a.limit + a.hysteresis) + 1.0f;
+          const double limit = a.limit, hysteresis = a.hysteresis;
+          in.tags[idx].value = static_cast<float>(a.limit_type == model::LimitType::High
+                                                      ? limit - hysteresis - 1.0
+                                                      : limit + hysteresis + 1.0);
         } else {
           in.tags[idx].value = t.ett ? 0.0f : 1.0f;
         }
