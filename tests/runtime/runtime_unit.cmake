@@ -1,4 +1,8 @@
-add_executable(test_runtime_unit ${CMAKE_CURRENT_LIST_DIR}/test_runtime_unit.cpp
-                                 ${CMAKE_CURRENT_LIST_DIR}/test_runtime_unit_alloc.cpp)
-target_link_libraries(test_runtime_unit PRIVATE cemv_runtime GTest::gtest_main)
+# Unit tests of the reference runtime (docs/semantics.md, issue 3 section 3).
+add_executable(test_runtime_unit
+  ${CMAKE_CURRENT_LIST_DIR}/test_runtime_unit.cpp         # the fixed decisions, one by one
+  ${CMAKE_CURRENT_LIST_DIR}/test_runtime_unit_random.cpp  # invariants on random matrices
+  ${CMAKE_CURRENT_LIST_DIR}/test_runtime_unit_alloc.cpp   # counting operator new
+)
+target_link_libraries(test_runtime_unit PRIVATE cemv_runtime cemv_testsupport GTest::gtest_main)
 gtest_discover_tests(test_runtime_unit DISCOVERY_MODE PRE_TEST)
