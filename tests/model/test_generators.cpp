@@ -8,6 +8,7 @@
 #include <set>
 #include <sstream>
 
+#include "model/format.hpp"
 #include "model/io.hpp"
 #include "model/validate.hpp"
 #include "tests/support/random_inputs.hpp"
@@ -208,6 +209,36 @@ TEST(RandomMatrix, HasNoValidationErrors) {
   }
 }
 
+// Saving and loading loses nothing: the canonical text reads back into the same
+// matrix, whose canonical text is the same again.
+void expect_round_trip(const Matrix& m, std::uint64_t seed) {
+  std::string text = to_canonical_json(m);
+  Matrix back;
+  try {
+    back = parse_matrix(text, "seed " + std::to_string(seed));
+  } catch (const LoadError& e) {
+    std::string issues;
+    for (const auto& i : e.issues()) issues += i.str() + "\n";
+    FAIL() << "seed " << seed << ": the canonical form does not load:\n" << issues;
+  }
+  EXPECT_EQ(dump(back), dump(m)) << "seed " << seed;
+  EXPECT_EQ(to_canonical_json(back), text) << "seed " << seed;
+}
+
+TEST(RandomMatrix, RoundTripsThroughTheCanonicalForm) {
+  for (std::uint64_t seed = 0; seed < kSeeds; ++seed) expect_round_trip(random_matrix(seed), seed);
+}
+
+TEST(RandomMatrix, SignatureIsReproduciblePerSeed) {
+  std::set<std::string> signatures;
+  for (std::uint64_t seed = 0; seed < kSeeds; ++seed) {
+    std::string s = signature(random_matrix(seed));
+    EXPECT_EQ(s, signature(random_matrix(seed)));
+    signatures.insert(s);
+  }
+  EXPECT_EQ(signatures.size(), static_cast<std::size_t>(kSeeds));  // seeds give different matrices
+}
+
 TEST(RandomMatrix, DefaultSizesAreSmall) {
   for (std::uint64_t seed = 0; seed < kSeeds; ++seed) {
     Matrix m = random_matrix(seed);
@@ -246,6 +277,7 @@ TEST(BigMatrix, HasTheLimitsOf34AndEveryOption) {
   EXPECT_EQ(m.intersections.size(), 1024u);
   expect_well_formed(m, 1);
   EXPECT_EQ(errors_of(m), "");
+  expect_round_trip(m, 1);
   auto counts = feature_counts(m);
   for (const auto& f : feature_names())
     if (f != "matrix.id_gap") {  // 128 ids leave no gap

@@ -41,9 +41,11 @@ void add_with_neighbours(std::vector<float>& out, float v) {
   out.push_back(std::nextafter(v, std::numeric_limits<float>::infinity()));
 }
 
-// The value a scenario starts an analog input at (issue 3, section 4).
+// The value a scenario starts an analog input at (issue 3, section 4), computed
+// as the scenario format and the runtime do: in double, rounded to float once.
 float non_tripped(const AnalogParams& a) {
-  return a.limit_type == LimitType::High ? a.limit - a.hysteresis - 1.0f : a.limit + a.hysteresis + 1.0f;
+  const double limit = a.limit, hysteresis = a.hysteresis;
+  return static_cast<float>(a.limit_type == LimitType::High ? limit - hysteresis - 1.0 : limit + hysteresis + 1.0);
 }
 
 std::vector<TagPlan> plan_tags(const Matrix& m, const InputTable& table) {
