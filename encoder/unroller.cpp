@@ -1,0 +1,51 @@
+#include "encoder/unroller.hpp"
+
+namespace cemv::encoder {
+
+Unroller::Unroller(const TransitionSystem& ts) : ts_(ts), from_(ts.ctx()) {
+  for (const auto& s : ts.statevars()) from_.push_back(s.var);
+  for (const auto& i : ts.inputvars()) from_.push_back(i.var);
+  for (const auto& s : ts.statevars()) from_.push_back(s.next_var);
+}
+
+const std::vector<z3::expr>& Unroller::vars_at(int k) {
+  auto it = copies_.find(k);
+  if (it != copies_.end()) return it->second;
+  std::vector<z3::expr> copy;
+  std::string suffix(1, '@');
+  suffix.append(std::to_string(k));
+  auto named = [&](const std::string& base) {
+    std::string n;
+    n.reserve(base.size() + suffix.size());
+    n.append(base).append(suffix);
+    return n;
+  };
+  for (const auto& s : ts_.statevars())
+    copy.push_back(ts_.ctx().constant(named(s.name).c_str(), s.var.get_sort()));
+  for (const auto& i : ts_.inputvars())
+    copy.push_back(ts_.ctx().constant(named(i.name).c_str(), i.var.get_sort()));
+  return copies_.emplace(k, std::move(copy)).first->second;
+}
+
+z3::expr Unroller::at(const z3::expr& e, int k) {
+  const auto& now = vars_at(k);
+  const auto& later = vars_at(k + 1);
+  z3::expr_vector to(ts_.ctx());
+  for (const auto& v : now) to.push_back(v);
+  std::size_t n_states = ts_.statevars().size();
+  for (std::size_t i = 0; i < n_states; ++i) to.push_back(later[i]);
+  z3::expr copy = e;
+  return copy.substitute(from_, to);
+}
+
+z3::expr Unroller::var_at(const z3::expr& var, int k) { return at(var, k); }
+
+z3::expr Unroller::path(int depth) {
+  z3::expr_vector parts(ts_.ctx());
+  parts.push_back(at(ts_.init_formula(), 0));
+  z3::expr trans = ts_.trans_formula() && ts_.constraint_formula();
+  for (int k = 0; k < depth; ++k) parts.push_back(at(trans, k));
+  return z3::mk_and(parts);
+}
+
+}  // namespace cemv::encoder

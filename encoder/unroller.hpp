@@ -1,0 +1,36 @@
+// Instantiates a transition system at cycle k: every state and input variable
+// `v` becomes `v@k`, every primed state variable `v.next` becomes `v@(k+1)`.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include <z3++.h>
+
+#include "encoder/transition_system.hpp"
+
+namespace cemv::encoder {
+
+class Unroller {
+ public:
+  explicit Unroller(const TransitionSystem& ts);
+
+  // `e` (over state, input and primed state variables) at cycle k.
+  z3::expr at(const z3::expr& e, int k);
+  // The copy of one variable at cycle k.
+  z3::expr var_at(const z3::expr& var, int k);
+
+  // init@0 and the constraints and transition of cycles 0..depth-1: a path of
+  // `depth` cycles (states 0..depth, inputs 0..depth-1).
+  z3::expr path(int depth);
+
+ private:
+  const std::vector<z3::expr>& vars_at(int k);
+
+  const TransitionSystem& ts_;
+  z3::expr_vector from_;                       // state vars, input vars, next vars
+  std::map<int, std::vector<z3::expr>> copies_;  // k -> copies of state/input vars
+};
+
+}  // namespace cemv::encoder
