@@ -11,6 +11,7 @@
 #include "model/format.hpp"
 #include "model/io.hpp"
 #include "model/validate.hpp"
+#include "runtime/runtime.hpp"
 #include "tests/support/random_inputs.hpp"
 #include "tests/support/random_matrix.hpp"
 
@@ -367,4 +368,43 @@ TEST(RandomInputs, ExerciseThresholdsQualityEdgesAndEveryCommand) {
   EXPECT_GT(bad, 0);
   EXPECT_GT(reset_edges, 0);
   EXPECT_GT(invalid_targets, 0);
+}
+
+// The scenarios are strong enough for the differential test: replayed on the
+// reference runtime, 300 cycles of 100 random matrices drive every status field
+// of docs/semantics.md to TRUE somewhere (timeouts and prealarms included), every
+// resulting voting occurs, and commands are both accepted and refused.
+TEST(RandomInputs, DriveEveryStatusFieldOnTheRuntime) {
+  std::map<std::string, long> hits;
+  long refused = 0, commands = 0;
+  for (std::uint64_t seed = 0; seed < 100; ++seed) {
+    Matrix m = random_matrix(seed);
+    cemv::runtime::Runtime rt(m);
+    auto obs = observables(m);
+    std::vector<int> snap;
+    for (const auto& frame : random_inputs(m, seed, 300)) {
+      rt.step(frame);
+      refused += rt.commands_refused();
+      commands += static_cast<long>(frame.commands.size());
+      rt.snapshot(snap);
+      ASSERT_EQ(snap.size(), obs.size());
+      for (std::size_t i = 0; i < obs.size(); ++i) {
+        if (obs[i].type == FieldType::Voting) ++hits[std::string("voting=") + to_string(static_cast<Voting>(snap[i]))];
+        else if (obs[i].field == "tag") ++hits[snap[i] ? "tag=1" : "tag=0"];
+        else if (snap[i]) ++hits[obs[i].field];
+      }
+    }
+  }
+  for (const auto* fields : {&cause_fields(), &effect_fields()})
+    for (const auto& f : *fields)
+      if (f.type != FieldType::Voting) {
+        EXPECT_GT(hits[f.name], 0) << f.name << " never became non-zero";
+      }
+  for (Voting v : {Voting::OneOoOne, Voting::OneOoTwo, Voting::TwoOoTwo, Voting::OneOoThree, Voting::TwoOoThree,
+                   Voting::ThreeOoThree, Voting::Bypass})
+    EXPECT_GT(hits[std::string("voting=") + to_string(v)], 0) << to_string(v);
+  EXPECT_GT(hits["tag=0"], 0);
+  EXPECT_GT(hits["tag=1"], 0);
+  EXPECT_GT(refused, 0);
+  EXPECT_LT(refused, commands);
 }
