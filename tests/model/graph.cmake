@@ -20,3 +20,10 @@ cemv_cli_test(NAME cli_graph_unwritable_exit_2 EXIT 2
   COMMAND $<TARGET_FILE:cemv> graph ${GC}/cycle.json -o /nonexistent-dir/cycle.dot)
 cemv_cli_test(NAME cli_graph_malformed_exit_2 EXIT 2
   COMMAND $<TARGET_FILE:cemv> graph ${GC}/malformed.json)
+
+# Properties on seeded random matrices from tests/support.
+if(TARGET cemv_testsupport)
+  add_executable(test_model_graph_random ${CMAKE_CURRENT_LIST_DIR}/test_graph_random.cpp)
+  target_link_libraries(test_model_graph_random PRIVATE cemv_testsupport cemv_model GTest::gtest_main)
+  gtest_discover_tests(test_model_graph_random DISCOVERY_MODE PRE_TEST)
+endif()
