@@ -1,0 +1,28 @@
+# The bundled examples (examples/*/matrix.json) as CLI tests: each matrix must
+# pass `cemv validate` with no error and no warning (an intended warning would
+# have to be explained in the example's README and matched here), and every
+# scenario next to it must pass `cemv simulate` on the reference runtime
+# (issue 3 "Done when": every example has at least one passing scenario).
+# New examples and scenarios are picked up by the glob without editing this file.
+set(_cemv_examples_dir ${CMAKE_CURRENT_LIST_DIR}/../../examples)
+file(GLOB _cemv_example_matrices CONFIGURE_DEPENDS ${_cemv_examples_dir}/*/matrix.json)
+list(SORT _cemv_example_matrices)
+foreach(_matrix ${_cemv_example_matrices})
+  get_filename_component(_dir ${_matrix} DIRECTORY)
+  get_filename_component(_example ${_dir} NAME)
+  cemv_cli_test(NAME examples.${_example}.validate EXIT 0
+                MATCH "^0 errors, 0 warnings$"
+                COMMAND $<TARGET_FILE:cemv> validate ${_matrix})
+  file(GLOB _scenarios CONFIGURE_DEPENDS ${_dir}/scenario-*.json)
+  list(SORT _scenarios)
+  list(LENGTH _scenarios _count)
+  if(_count EQUAL 0)
+    message(FATAL_ERROR "example ${_example} has no scenario-*.json")
+  endif()
+  foreach(_scenario ${_scenarios})
+    get_filename_component(_stem ${_scenario} NAME_WE)
+    cemv_cli_test(NAME examples.${_example}.${_stem} EXIT 0
+                  MATCH ", 0 failed"
+                  COMMAND $<TARGET_FILE:cemv> simulate ${_matrix} ${_scenario})
+  endforeach()
+endforeach()
