@@ -62,7 +62,10 @@ constexpr int kFrames = 1000;
 void BM_RuntimeStepBigMatrix(benchmark::State& state) {
   const model::Matrix m = testsupport::big_matrix(1);
   const auto frames = testsupport::random_inputs(m, 1, kFrames);
+  long long at_start = g_allocations.load();
   runtime::Runtime rt(m);
+  // Proves the counter sees the runtime's allocations (construction allocates).
+  state.counters["allocs_construct"] = static_cast<double>(g_allocations.load() - at_start);
   std::size_t k = 0;
   long long before = g_allocations.load();
   for (auto _ : state) {
