@@ -79,8 +79,10 @@ void EffectBlock::evaluate(Signals& s, int slot, std::uint64_t k) {
   if (cfg_.has_xoon && xoon_active >= cfg_.xoon_x) req[type_index(cfg_.xoon_type)] = true;
   const bool req_n = req[0], req_s = req[1], req_v = req[2], req_r = req[3];
 
-  // E.3 Override. Step 1: end conditions of a running override.
-  const bool was_running = override_running_;
+  // E.3 Override. `was_running`: at the end of the previous cycle (so also
+  // when a group deactivation ended it in phase 1 of this cycle).
+  const bool was_running = override_running_before_;
+  // Step 1: end conditions of a running override.
   if (override_running_) {
     const bool timeout = k - override_start_ >= cfg_.override_cycles;
     bool new_cause = false;
@@ -165,6 +167,7 @@ void EffectBlock::evaluate(Signals& s, int slot, std::uint64_t k) {
   req_s_ = req_s;
   req_r_ = req_r;
   req_r_before_ = req_r;
+  override_running_before_ = override_running_;
   active_before_ = active_;
   output_state_before_ = output_state_;
   output_delay_running_before_ = output_delay_running_;

@@ -104,6 +104,7 @@ class EffectBlock {
   bool output_state_before_ = false;
   bool output_delay_running_before_ = false;
   bool req_r_before_ = false;
+  bool override_running_before_ = false;
   std::uint64_t output_delay_start_ = 0;
   bool s_latch_ = false;
   bool r_latch_ = false;

@@ -835,6 +835,25 @@ TEST(Override, ResettableLatchNeedsNoResetWhenTheCauseGoesDuringOverride) {
   EXPECT_FALSE(p.effect(1, "override_active"));
 }
 
+TEST(Override, ResettableLatchClearedWhenGroupDeactivationAndCauseEndCoincide) {
+  // E.5: `was_running` is the state at the end of the previous cycle.
+  model::Matrix m = override_matrix(IntersectionType::R);
+  m.group_deactivation = model::GroupDeactivation{"EN_GDM", "SET_GDM"};
+  Plant p(m);
+  p.set("A", 0);
+  p.set("EN_GDM", 1);
+  p.run();
+  p.command(effect_cmd(CommandOp::OverrideEffect, 1));
+  p.run();
+  EXPECT_TRUE(p.effect(1, "override_active"));
+  p.set("A", 1);
+  p.set("SET_GDM", 1);
+  p.run();
+  EXPECT_FALSE(p.effect(1, "override_active"));
+  EXPECT_FALSE(p.effect(1, "latched"));
+  EXPECT_FALSE(p.effect_active(1));
+}
+
 TEST(Override, ResettableLatchWithoutOverrideNeedsReset) {
   Plant p(override_matrix(IntersectionType::R));
   p.set("A", 0);
