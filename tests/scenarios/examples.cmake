@@ -13,6 +13,27 @@ foreach(_matrix ${_cemv_example_matrices})
   cemv_cli_test(NAME examples.${_example}.validate EXIT 0
                 MATCH "^0 errors, 0 warnings$"
                 COMMAND $<TARGET_FILE:cemv> validate ${_matrix})
+  # The examples use every option of the format, so they are the realistic
+  # round-trip case of the spreadsheet layout (6.6): export, import, same
+  # signature (the SHA-256 of the canonical form).
+  cemv_cli_test(NAME examples.${_example}.csv-roundtrip EXIT 0
+                MATCH "^roundtrip [0-9a-f]{64}$"
+                COMMAND bash -c [=[
+set -e
+cemv=$1
+m=$2
+t=$(mktemp -d)
+trap 'rm -rf "$t"' EXIT
+"$cemv" export-csv "$m" -o "$t/m.csv"
+"$cemv" import-csv "$t/m.csv" -o "$t/m.json"
+a=$("$cemv" signature "$m")
+b=$("$cemv" signature "$t/m.json")
+if [ "$a" != "$b" ]
+then
+  echo "signature $a became $b after export-csv and import-csv"
+  exit 1
+fi
+echo "roundtrip $a"]=] roundtrip $<TARGET_FILE:cemv> ${_matrix})
   file(GLOB _scenarios CONFIGURE_DEPENDS ${_dir}/scenario-*.json)
   list(SORT _scenarios)
   list(LENGTH _scenarios _count)
