@@ -35,6 +35,26 @@ TEST_P(RandomShard, RuntimeAndEncoderAgreeEveryCycle) {
 }
 INSTANTIATE_TEST_SUITE_P(Shards, RandomShard, ::testing::Range(0, kShards));
 
+// Larger matrices (up to 30 causes, 12 effects): more references, cycles,
+// first-out groups and XooN assignments per matrix.
+class LargeShard : public ::testing::TestWithParam<int> {};
+
+TEST_P(LargeShard, RuntimeAndEncoderAgreeEveryCycle) {
+  testsupport::MatrixOptions opt;
+  opt.min_causes = 10;
+  opt.max_causes = 30;
+  opt.min_effects = 4;
+  opt.max_effects = 12;
+  for (int i = 0; i < 15; ++i) {
+    std::uint64_t seed = 500000u + static_cast<std::uint64_t>(GetParam() * 15 + i);
+    model::Matrix m = testsupport::random_matrix(seed, opt);
+    auto inputs = testsupport::random_inputs(m, seed, kCycles);
+    auto d = encoder_test::compare(m, inputs);
+    ASSERT_FALSE(d.has_value()) << encoder_test::report(seed, m, inputs, *d);
+  }
+}
+INSTANTIATE_TEST_SUITE_P(Shards, LargeShard, ::testing::Range(0, 2));
+
 std::vector<fs::path> example_matrices() {
   std::vector<fs::path> out;
   fs::path root = fs::path(CEMV_SOURCE_DIR) / "examples";
