@@ -271,6 +271,17 @@ TEST(RandomMatrix, OptionsSetTheSize) {
   expect_well_formed(m, 7);
 }
 
+TEST(RandomMatrix, DegenerateOptionsDoNotCrash) {
+  MatrixOptions o;
+  o.min_effects = o.max_effects = 0;
+  Matrix m = random_matrix(3, o);
+  EXPECT_TRUE(m.effects.empty());
+  EXPECT_TRUE(m.intersections.empty());
+  EXPECT_EQ(random_inputs(m, 3, 50).size(), 50u);
+  Matrix empty;
+  EXPECT_EQ(random_inputs(empty, 3, 50).size(), 50u);
+}
+
 TEST(BigMatrix, HasTheLimitsOf34AndEveryOption) {
   Matrix m = big_matrix(1);
   EXPECT_EQ(m.causes.size(), 128u);

@@ -177,7 +177,7 @@ Targets targets_of(const Matrix& m) {
 int pick_id(Rng& rng, const std::vector<int>& valid, const std::vector<int>& all, int max_id) {
   int r = rng.uniform(0, 99);
   if (r < 88 && !valid.empty()) return rng.pick(valid);
-  if (r < 94) return rng.pick(all);
+  if (r < 94 && !all.empty()) return rng.pick(all);
   return r < 97 ? 0 : max_id + rng.uniform(1, 5);
 }
 

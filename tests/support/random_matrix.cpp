@@ -235,8 +235,8 @@ void make_effect(Rng& rng, const MatrixOptions& opt, Matrix& m, Effect& e, bool 
   if (rng.chance(0.05)) e.note = "interlock also in BPCS";
 }
 
-// Processed intersections per effect, and the causes each effect is fed by:
-// used to place internal references that do (or do not) close a cycle.
+// Whether `to` depends on `from` through intersections and internal references:
+// tells whether a reference closes a cycle (feature "ref.cycle").
 bool reaches(const Matrix& m, Node from, Node to) {
   // Edges: cause -> effect (processed intersections); referenced element ->
   // reading cause (internal references).
@@ -272,6 +272,7 @@ void add_intersections(Rng& rng, const MatrixOptions& opt, Matrix& m) {
     if (c.function != CauseFunction::Comment) causes.push_back(c.id);
   for (const auto& e : m.effects)
     if (e.function != EffectFunction::Comment) effects.push_back(e.id);
+  if (causes.empty() || effects.empty()) return;  // options asked for an empty side
   int grid = static_cast<int>(causes.size() * effects.size());
   int target = opt.intersections >= 0 ? opt.intersections : (grid * 4 + 5) / 10;
   target = std::clamp(target, static_cast<int>(std::max(causes.size(), effects.size())),
@@ -356,6 +357,7 @@ void add_internal_refs(Rng& rng, const MatrixOptions& opt, Matrix& m) {
         const Cause* other = rng.pick(causes);
         if (other->id != c.id) name = "Cause[" + std::to_string(other->id) + "]";
       } else {
+        if (effects.empty()) continue;
         const Effect* e = rng.pick(effects);
         if (!fed.empty() && rng.chance(opt.p_cycle_ref)) e = m.find_effect(rng.pick(fed));
         name = "Effect[" + std::to_string(e->id) + "]";
