@@ -1,7 +1,80 @@
+// `cemv export-csv` and `cemv import-csv`: spreadsheet exchange (6.6, docs/csv.md).
+#include <fstream>
+#include <iostream>
+#include <memory>
+
 #include "cli/commands.hpp"
+#include "model/csv.hpp"
+#include "model/format.hpp"
 
 namespace cemv::cli {
 
-void add_csv_commands(CLI::App&, Context&) {}
+namespace {
+
+// Writes text to a file, or stdout when path is empty; false when it cannot.
+bool write_output(const std::string& path, const std::string& text, const char* what) {
+  if (path.empty()) {
+    std::cout << text;
+    std::cout.flush();
+    return true;
+  }
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  out.close();
+  if (!out) std::cerr << "error: " << path << ": cannot write the " << what << "\n";
+  return static_cast<bool>(out);
+}
+
+}  // namespace
+
+void add_csv_commands(CLI::App& app, Context& ctx) {
+  struct ExportOptions {
+    std::string file;
+    std::string output;
+  };
+  auto ex = std::make_shared<ExportOptions>();
+  auto* exp = app.add_subcommand(
+      "export-csv", "Write a matrix as one cemv-csv/1 spreadsheet file holding every field (6.6)");
+  exp->add_option("FILE", ex->file, "Matrix file (cemv-matrix/1)")->required();
+  exp->add_option("-o,--output", ex->output, "Write the CSV here instead of stdout");
+  exp->callback([ex, &ctx] {
+    const model::Matrix m = model::load_matrix(ex->file);
+    ctx.exit_code = write_output(ex->output, model::export_csv(m), "CSV file") ? 0 : 2;
+  });
+
+  struct ImportOptions {
+    std::string input;
+    std::string output;
+    std::string layout = "auto";
+    std::string separator;
+    std::string name;
+  };
+  auto im = std::make_shared<ImportOptions>();
+  auto* imp = app.add_subcommand(
+      "import-csv",
+      "Read a cemv-csv/1 file or a C&E grid spreadsheet (like the LSST interlock table) and "
+      "write a cemv-matrix/1 file; defects of the sheet are warnings on stderr");
+  imp->add_option("INPUT", im->input, "CSV file")->required();
+  imp->add_option("-o,--output", im->output, "Write the matrix here instead of stdout");
+  imp->add_option("--layout", im->layout, "auto (default), records (cemv-csv/1) or grid")
+      ->check(CLI::IsMember({"auto", "records", "grid"}));
+  imp->add_option("--separator", im->separator, "Grid separator: ';', ',' or 'tab' (default: detect)")
+      ->check(CLI::IsMember({";", ",", "tab"}));
+  imp->add_option("--name", im->name,
+                  "Grid: the matrix name (at most 16 characters, 6.1.2; default: from the file name)");
+  imp->callback([im, &ctx] {
+    model::CsvImportOptions options;
+    options.layout = im->layout == "records" ? model::CsvLayoutKind::Records
+                     : im->layout == "grid"  ? model::CsvLayoutKind::Grid
+                                             : model::CsvLayoutKind::Auto;
+    options.matrix_name = im->name;
+    if (!im->separator.empty()) options.separator = im->separator == "tab" ? '\t' : im->separator[0];
+    const std::string text = model::read_text_file(im->input);
+    const model::CsvImportResult result = model::import_csv(text, im->input, options);
+    for (const auto& w : result.warnings) std::cerr << "warning: " << w.str() << "\n";
+    ctx.exit_code =
+        write_output(im->output, model::to_canonical_json(result.matrix), "matrix") ? 0 : 2;
+  });
+}
 
 }  // namespace cemv::cli

@@ -1,1 +1,1382 @@
-// implemented in the foundation issue
+// Spreadsheet import and export (6.6), docs/csv.md.
+#include "model/csv.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <optional>
+#include <regex>
+#include <set>
+#include <utility>
+
+#include "model/io.hpp"
+
+namespace cemv::model {
+
+namespace {
+
+constexpr std::size_t kMaxMatrixNameLength = 16;  // 6.1.2
+constexpr std::size_t kMaxTitleLength = 60;       // 6.2.1
+
+// ---- small text helpers -------------------------------------------------------
+
+// Appends item to a separated list (not `s += (s.empty() ? "" : sep) + item`,
+// which trips GCC 12's -Wrestrict false positive at -O3).
+void join_to(std::string& list, std::string_view separator, const std::string& item) {
+  if (!list.empty()) list += separator;
+  list += item;
+}
+
+
+std::string_view trim(std::string_view s) {
+  auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; };
+  while (!s.empty() && blank(s.front())) s.remove_prefix(1);
+  while (!s.empty() && blank(s.back())) s.remove_suffix(1);
+  return s;
+}
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  for (auto& c : out)
+    if (c >= 'A' && c <= 'Z') c = static_cast<char>(c - 'A' + 'a');
+  return out;
+}
+
+std::string where_of(const std::string& source, int line, int column = 0) {
+  std::string w;
+  if (!source.empty()) w = source + ": ";
+  w += "line " + std::to_string(line);
+  if (column > 0) w += ", column " + std::to_string(column);
+  return w;
+}
+
+// "3-12, 14, 16-19" from a sorted list of column numbers.
+std::string column_ranges(const std::vector<int>& cols) {
+  std::string out;
+  for (std::size_t i = 0; i < cols.size();) {
+    std::size_t j = i;
+    while (j + 1 < cols.size() && cols[j + 1] == cols[j] + 1) ++j;
+    if (!out.empty()) out += ", ";
+    out += std::to_string(cols[i]);
+    if (j > i) out += "-" + std::to_string(cols[j]);
+    i = j + 1;
+  }
+  return out;
+}
+
+std::size_t utf8_length(std::string_view s) {
+  std::size_t n = 0;
+  for (char c : s) n += (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+  return n;
+}
+
+// Cuts UTF-8 text to at most n characters (code points, as the loader counts).
+std::string truncate_utf8(std::string_view s, std::size_t n) {
+  std::size_t chars = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if ((static_cast<unsigned char>(s[i]) & 0xC0) != 0x80 && chars++ == n) return std::string(s.substr(0, i));
+  }
+  return std::string(s);
+}
+
+// Free text of a hand-made sheet: control characters (line breaks inside a
+// quoted cell) become blanks, since the format allows none in text (docs/format.md).
+std::string one_line(std::string_view s) {
+  std::string out;
+  for (char c : s) {
+    auto u = static_cast<unsigned char>(c);
+    out += (u < 0x20 || u == 0x7f) ? ' ' : c;
+  }
+  return out;
+}
+
+// ---- value parsing (record layout) -------------------------------------------
+
+std::optional<long long> parse_integer(std::string_view text) {
+  text = trim(text);
+  if (text.empty()) return std::nullopt;
+  long long v = 0;
+  auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (ec != std::errc() || p != text.data() + text.size()) return std::nullopt;
+  return v;
+}
+
+std::optional<float> parse_float(std::string_view text) {
+  text = trim(text);
+  if (text.empty()) return std::nullopt;
+  if (text.front() == '+') text.remove_prefix(1);
+  float v = 0;
+  auto [p, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (ec != std::errc() || p != text.data() + text.size() || !std::isfinite(v)) return std::nullopt;
+  return v;
+}
+
+template <typename E>
+std::optional<E> enum_from(std::string_view text, std::initializer_list<E> values) {
+  std::string t = lower(trim(text));
+  for (E v : values)
+    if (t == lower(to_string(v))) return v;
+  return std::nullopt;
+}
+
+template <typename E>
+std::string enum_choices(std::initializer_list<E> values) {
+  std::string out;
+  for (E v : values) join_to(out, ", ", std::string(to_string(v)));
+  return out;
+}
+
+constexpr std::initializer_list<InputKind> kInputKinds = {InputKind::Discrete, InputKind::Analog};
+constexpr std::initializer_list<CauseFunction> kCauseFunctions = {
+    CauseFunction::Normal, CauseFunction::And, CauseFunction::Or, CauseFunction::TwoOoThree,
+    CauseFunction::Comment};
+constexpr std::initializer_list<LimitType> kLimitTypes = {LimitType::High, LimitType::Low};
+constexpr std::initializer_list<BadQuality> kBadQualities = {BadQuality::Ignore, BadQuality::Trip,
+                                                             BadQuality::Degrade};
+constexpr std::initializer_list<TimeMode> kTimeModes = {TimeMode::None, TimeMode::OnDelay,
+                                                        TimeMode::OffDelay, TimeMode::Timed};
+constexpr std::initializer_list<EffectFunction> kEffectFunctions = {EffectFunction::Normal,
+                                                                    EffectFunction::Comment};
+constexpr std::initializer_list<IntersectionType> kIntersectionTypes = {
+    IntersectionType::N, IntersectionType::S, IntersectionType::V,
+    IntersectionType::R, IntersectionType::X, IntersectionType::Note};
+
+// ---- record layout schema -------------------------------------------------------
+
+// Column names per record type, in the order export writes them (docs/csv.md).
+struct RecordSchema {
+  const char* type;
+  std::vector<std::string> columns;
+};
+
+const std::vector<RecordSchema>& record_schemas() {
+  static const std::vector<RecordSchema> schemas = {
+      {"property", {"key", "value"}},
+      {"sif_group", {"number", "name"}},
+      {"cause",
+       {"id", "name", "description", "sil", "input", "function", "bad_quality", "time_mode",
+        "time_ms", "auto_ack", "soft_bypass_allowed", "soft_bypass_max_s",
+        "soft_bypass_prealarm_s", "bypass_tag", "inhibit_tag", "first_out_group",
+        "mutually_locked_maintenance", "sif", "analog_limit_type", "analog_limit",
+        "analog_hysteresis", "analog_prewarning", "analog_delta", "analog_unit", "note"}},
+      {"cause_tag", {"cause", "position", "name", "ett", "soft_bypass_allowed"}},
+      {"effect",
+       {"id", "name", "description", "sil", "function", "output_delay_ms", "soft_bypass_allowed",
+        "bypass_tag", "reset_tag", "override_max_s", "override_prealarm_s", "process_data_tag",
+        "process_data_pass_through", "process_data_mask_tag", "mutually_locked_maintenance", "sif",
+        "note"}},
+      {"effect_tag", {"effect", "position", "name", "ett"}},
+      {"intersection", {"cause", "effect", "type", "xoon", "note"}},
+  };
+  return schemas;
+}
+
+const RecordSchema* find_schema(std::string_view type) {
+  for (const auto& s : record_schemas())
+    if (type == s.type) return &s;
+  return nullptr;
+}
+
+// ---- export -------------------------------------------------------------------
+
+class CsvWriter {
+ public:
+  void row(const std::vector<std::string>& fields) {
+    for (std::size_t i = 0; i < fields.size(); ++i) {
+      if (i) out_ += ',';
+      out_ += csv_quote(fields[i]);
+    }
+    out_ += "\r\n";
+  }
+  void header(const RecordSchema& s) {
+    std::vector<std::string> f{std::string("#") + s.type};
+    f.insert(f.end(), s.columns.begin(), s.columns.end());
+    row(f);
+  }
+  std::string take() { return std::move(out_); }
+
+ private:
+  std::string out_;
+};
+
+std::string bool_text(bool b) { return b ? "true" : "false"; }
+std::string opt_text(const std::optional<std::string>& s) { return s ? *s : ""; }
+std::string sif_text(const std::vector<int>& sif) {
+  std::string out;
+  for (int g : sif) join_to(out, " ", std::to_string(g));
+  return out;
+}
+
+// ---- import: record layout --------------------------------------------------------
+
+class RecordImporter {
+ public:
+  RecordImporter(const std::vector<CsvRecord>& records, const std::string& source)
+      : records_(records), source_(source) {}
+
+  Matrix run() {
+    for (const auto& r : records_) handle(r);
+    finish_tags();
+    if (!errors_.empty()) throw LoadError(errors_);
+    std::sort(m_.causes.begin(), m_.causes.end(),
+              [](const Cause& a, const Cause& b) { return a.id < b.id; });
+    std::sort(m_.effects.begin(), m_.effects.end(),
+              [](const Effect& a, const Effect& b) { return a.id < b.id; });
+    std::sort(m_.intersections.begin(), m_.intersections.end(),
+              [](const Intersection& a, const Intersection& b) {
+                return std::pair{a.cause, a.effect} < std::pair{b.cause, b.effect};
+              });
+    return m_;
+  }
+
+  // The CSV line of the element a loader path such as `causes[3].tags[1]` names.
+  std::optional<int> line_of_path(const std::string& path) const {
+    static const std::regex re(R"((causes|effects|intersections)\[(\d+)\])");
+    std::smatch mt;
+    if (!std::regex_search(path, mt, re)) return std::nullopt;
+    std::size_t i = std::stoul(mt[2].str());
+    std::vector<std::pair<std::pair<int, int>, int>> keyed;
+    if (mt[1] == "causes")
+      for (auto& [id, line] : cause_lines_) keyed.push_back({{id, 0}, line});
+    else if (mt[1] == "effects")
+      for (auto& [id, line] : effect_lines_) keyed.push_back({{id, 0}, line});
+    else
+      for (auto& [key, line] : intersection_lines_) keyed.push_back({key, line});
+    if (i >= keyed.size()) return std::nullopt;
+    return keyed[i].second;  // maps are ordered like the canonical arrays
+  }
+
+ private:
+  struct Row {
+    const CsvRecord* record;
+    const std::vector<int>* index;  // schema column -> field position (-1: absent)
+    const RecordSchema* schema;
+  };
+
+  void error(int line, int column, std::string what) {
+    errors_.push_back({where_of(source_, line, column), std::move(what)});
+  }
+
+  void handle(const CsvRecord& r) {
+    bool all_empty = std::all_of(r.fields.begin(), r.fields.end(),
+                                 [](const CsvField& f) { return f.text.empty(); });
+    if (all_empty) return;
+    const std::string& type = r.fields[0].text;
+    if (!type.empty() && type[0] == '#') return read_header(r);
+    const RecordSchema* schema = find_schema(type);
+    if (!schema) {
+      error(r.line, 1, "unknown record type '" + type +
+                           "' (expected property, sif_group, cause, cause_tag, effect, "
+                           "effect_tag, intersection or a '#' header)");
+      return;
+    }
+    auto h = headers_.find(type);
+    if (h == headers_.end()) {
+      error(r.line, 1, "'" + type + "' record before its header row '#" + type + "'");
+      return;
+    }
+    const std::size_t width = schema->columns.size() + 1;
+    for (std::size_t i = width; i < r.fields.size(); ++i)
+      if (!r.fields[i].text.empty()) {
+        error(r.line, static_cast<int>(i + 1),
+              "extra value '" + r.fields[i].text + "' beyond the " +
+                  std::to_string(schema->columns.size()) + " columns of '#" + type + "'");
+        break;  // still read the row, so later rows do not report follow-on errors
+      }
+    Row row{&r, &h->second, schema};
+    if (type == "property") read_property(row);
+    else if (type == "sif_group") read_sif_group(row);
+    else if (type == "cause") read_cause(row);
+    else if (type == "cause_tag") read_cause_tag(row);
+    else if (type == "effect") read_effect(row);
+    else if (type == "effect_tag") read_effect_tag(row);
+    else read_intersection(row);
+  }
+
+  void read_header(const CsvRecord& r) {
+    std::string type = r.fields[0].text.substr(1);
+    const RecordSchema* schema = find_schema(type);
+    if (!schema) {
+      error(r.line, 1, "unknown header '" + r.fields[0].text + "'");
+      return;
+    }
+    if (headers_.count(type)) {
+      error(r.line, 1, "header '#" + type + "' repeated");
+      return;
+    }
+    std::vector<int> index(schema->columns.size(), -1);
+    bool ok = true;
+    for (std::size_t i = 1; i < r.fields.size(); ++i) {
+      const std::string& name = r.fields[i].text;
+      if (name.empty()) continue;  // trailing empty cells a spreadsheet may add
+      auto it = std::find(schema->columns.begin(), schema->columns.end(), name);
+      if (it == schema->columns.end()) {
+        error(r.line, static_cast<int>(i + 1), "unknown column '" + name + "' for '" + type + "'");
+        ok = false;
+        continue;
+      }
+      auto k = static_cast<std::size_t>(it - schema->columns.begin());
+      if (index[k] >= 0) {
+        error(r.line, static_cast<int>(i + 1), "column '" + name + "' repeated");
+        ok = false;
+        continue;
+      }
+      index[k] = static_cast<int>(i);
+    }
+    for (std::size_t k = 0; k < index.size(); ++k)
+      if (index[k] < 0) {
+        error(r.line, 1, "header '#" + type + "' lacks column '" + schema->columns[k] + "'");
+        ok = false;
+      }
+    if (ok) headers_[type] = std::move(index);
+  }
+
+  // The field of a named column; an absent trailing cell reads as empty.
+  CsvField cell(const Row& row, std::string_view column) const {
+    const auto& cols = row.schema->columns;
+    auto k = static_cast<std::size_t>(std::find(cols.begin(), cols.end(), column) - cols.begin());
+    int pos = (*row.index)[k];
+    if (pos >= 0 && static_cast<std::size_t>(pos) < row.record->fields.size())
+      return row.record->fields[static_cast<std::size_t>(pos)];
+    CsvField f;
+    f.line = row.record->line;
+    f.column = pos + 1;
+    return f;
+  }
+
+  std::string text(const Row& row, std::string_view column) const { return cell(row, column).text; }
+
+  std::optional<std::string> optional_text(const Row& row, std::string_view column) const {
+    auto t = text(row, column);
+    if (t.empty()) return std::nullopt;
+    return t;
+  }
+
+  bool present(const Row& row, std::string_view column) const {
+    return !trim(text(row, column)).empty();
+  }
+
+  // Integer in [lo, hi]; empty -> fallback (nullopt fallback: required).
+  template <typename T>
+  T integer(const Row& row, std::string_view column, std::optional<T> fallback, long long lo,
+            long long hi) {
+    auto f = cell(row, column);
+    if (trim(f.text).empty()) {
+      if (fallback) return *fallback;
+      error(f.line, f.column, std::string(column) + ": value required");
+      return T{};
+    }
+    auto v = parse_integer(f.text);
+    if (!v || *v < lo || *v > hi) {
+      error(f.line, f.column, std::string(column) + ": '" + f.text + "' is not an integer in " +
+                                  std::to_string(lo) + ".." + std::to_string(hi));
+      return T{};
+    }
+    return static_cast<T>(*v);
+  }
+
+  int int_value(const Row& row, std::string_view column, std::optional<int> fallback) {
+    return integer<int>(row, column, fallback, std::numeric_limits<int>::min(),
+                        std::numeric_limits<int>::max());
+  }
+  std::uint32_t u32_value(const Row& row, std::string_view column, std::uint32_t fallback) {
+    return integer<std::uint32_t>(row, column, fallback, 0, std::numeric_limits<std::uint32_t>::max());
+  }
+
+  float float_value(const Row& row, std::string_view column, float fallback) {
+    auto f = cell(row, column);
+    if (trim(f.text).empty()) return fallback;
+    auto v = parse_float(f.text);
+    if (!v) {
+      error(f.line, f.column, std::string(column) + ": '" + f.text + "' is not a finite number");
+      return fallback;
+    }
+    return *v;
+  }
+
+  bool bool_value(const Row& row, std::string_view column, bool fallback) {
+    auto f = cell(row, column);
+    std::string t = lower(trim(f.text));
+    if (t.empty()) return fallback;
+    if (t == "true") return true;
+    if (t == "false") return false;
+    error(f.line, f.column, std::string(column) + ": '" + f.text + "' is not true or false");
+    return fallback;
+  }
+
+  template <typename E>
+  E enum_value(const Row& row, std::string_view column, E fallback,
+               std::initializer_list<E> values) {
+    auto f = cell(row, column);
+    if (trim(f.text).empty()) return fallback;
+    auto v = enum_from<E>(f.text, values);
+    if (!v) {
+      error(f.line, f.column, std::string(column) + ": '" + f.text + "' is not one of " +
+                                  enum_choices<E>(values));
+      return fallback;
+    }
+    return *v;
+  }
+
+  std::vector<int> sif_value(const Row& row) {
+    auto f = cell(row, "sif");
+    std::vector<int> out;
+    std::string token;
+    auto flush = [&] {
+      if (token.empty()) return;
+      auto v = parse_integer(token);
+      if (!v || *v < std::numeric_limits<int>::min() || *v > std::numeric_limits<int>::max())
+        error(f.line, f.column, "sif: '" + token + "' is not a SIF group number");
+      else
+        out.push_back(static_cast<int>(*v));
+      token.clear();
+    };
+    for (char c : f.text) {
+      if (c == ' ' || c == ';' || c == ',' || c == '\t') flush();
+      else token += c;
+    }
+    flush();
+    return out;
+  }
+
+  void read_property(const Row& row) {
+    auto key_field = cell(row, "key");
+    const std::string key = std::string(trim(key_field.text));
+    const std::string value = text(row, "value");
+    if (!properties_seen_.insert(key).second) {
+      error(key_field.line, key_field.column, "property '" + key + "' repeated");
+      return;
+    }
+    if (key == "format") {
+      if (value != kMatrixFormat)
+        error(key_field.line, key_field.column + 1,
+              "format: '" + value + "' is not '" + kMatrixFormat + "'");
+    } else if (key == "name") {
+      m_.name = value;
+    } else if (key == "title") {
+      m_.title = value;
+    } else if (key == "cycle_ms") {
+      m_.cycle_ms = u32_value(row, "value", 100);
+    } else if (key == "secure_write.enable_tag") {
+      m_.secure_write = SecureWrite{value};
+    } else if (key == "group_deactivation.enable_tag") {
+      if (!m_.group_deactivation) m_.group_deactivation.emplace();
+      m_.group_deactivation->enable_tag = value;
+    } else if (key == "group_deactivation.set_tag") {
+      if (!m_.group_deactivation) m_.group_deactivation.emplace();
+      m_.group_deactivation->set_tag = value;
+    } else {
+      error(key_field.line, key_field.column,
+            "unknown property '" + key +
+                "' (expected format, name, title, cycle_ms, secure_write.enable_tag, "
+                "group_deactivation.enable_tag, group_deactivation.set_tag)");
+    }
+  }
+
+  void read_sif_group(const Row& row) {
+    int n = int_value(row, "number", std::nullopt);
+    auto f = cell(row, "number");
+    if (!m_.sif_groups.emplace(n, text(row, "name")).second)
+      error(f.line, f.column, "SIF group " + std::to_string(n) + " repeated");
+  }
+
+  void read_cause(const Row& row) {
+    Cause c;
+    const std::size_t errors_before = errors_.size();
+    c.id = int_value(row, "id", std::nullopt);
+    if (errors_.size() != errors_before) unreadable_owner_ = true;
+    auto id_field = cell(row, "id");
+    if (!cause_lines_.emplace(c.id, row.record->line).second) {
+      error(id_field.line, id_field.column,
+            "cause id " + std::to_string(c.id) + " repeats line " +
+                std::to_string(cause_lines_[c.id]));
+      return;
+    }
+    c.name = text(row, "name");
+    c.description = text(row, "description");
+    c.sil = int_value(row, "sil", 0);
+    c.input = enum_value(row, "input", InputKind::Discrete, kInputKinds);
+    c.function = enum_value(row, "function", CauseFunction::Normal, kCauseFunctions);
+    c.bad_quality = enum_value(row, "bad_quality", BadQuality::Trip, kBadQualities);
+    c.time.mode = enum_value(row, "time_mode", TimeMode::None, kTimeModes);
+    c.time.ms = u32_value(row, "time_ms", 0);
+    c.auto_ack = bool_value(row, "auto_ack", true);
+    c.soft_bypass.allowed = bool_value(row, "soft_bypass_allowed", true);
+    c.soft_bypass.max_s = u32_value(row, "soft_bypass_max_s", 0);
+    c.soft_bypass.prealarm_s = u32_value(row, "soft_bypass_prealarm_s", 0);
+    c.bypass_tag = optional_text(row, "bypass_tag");
+    c.inhibit_tag = optional_text(row, "inhibit_tag");
+    c.first_out_group = int_value(row, "first_out_group", 0);
+    c.mutually_locked_maintenance = bool_value(row, "mutually_locked_maintenance", false);
+    c.sif = sif_value(row);
+    // The analog block exists exactly when its limit type is given.
+    if (present(row, "analog_limit_type")) {
+      AnalogParams a;
+      a.limit_type = enum_value(row, "analog_limit_type", LimitType::High, kLimitTypes);
+      auto limit = cell(row, "analog_limit");
+      if (trim(limit.text).empty())
+        error(limit.line, limit.column, "analog_limit: value required with analog_limit_type");
+      a.limit = float_value(row, "analog_limit", 0.0f);
+      a.hysteresis = float_value(row, "analog_hysteresis", 0.0f);
+      if (present(row, "analog_prewarning")) a.prewarning = float_value(row, "analog_prewarning", 0.0f);
+      a.delta = float_value(row, "analog_delta", 0.0f);
+      a.unit = text(row, "analog_unit");
+      c.analog = a;
+    } else {
+      for (const char* col : {"analog_limit", "analog_hysteresis", "analog_prewarning",
+                              "analog_delta", "analog_unit"})
+        if (!text(row, col).empty()) {
+          auto f = cell(row, col);
+          error(f.line, f.column, std::string(col) + " given without analog_limit_type");
+        }
+    }
+    c.note = text(row, "note");
+    m_.causes.push_back(std::move(c));
+  }
+
+  void read_effect(const Row& row) {
+    Effect e;
+    const std::size_t errors_before = errors_.size();
+    e.id = int_value(row, "id", std::nullopt);
+    if (errors_.size() != errors_before) unreadable_owner_ = true;
+    auto id_field = cell(row, "id");
+    if (!effect_lines_.emplace(e.id, row.record->line).second) {
+      error(id_field.line, id_field.column,
+            "effect id " + std::to_string(e.id) + " repeats line " +
+                std::to_string(effect_lines_[e.id]));
+      return;
+    }
+    e.name = text(row, "name");
+    e.description = text(row, "description");
+    e.sil = int_value(row, "sil", 0);
+    e.function = enum_value(row, "function", EffectFunction::Normal, kEffectFunctions);
+    e.output_delay_ms = u32_value(row, "output_delay_ms", 0);
+    e.soft_bypass_allowed = bool_value(row, "soft_bypass_allowed", false);
+    e.bypass_tag = optional_text(row, "bypass_tag");
+    e.reset_tag = optional_text(row, "reset_tag");
+    // The override block exists exactly when its maximum time is given.
+    if (present(row, "override_max_s")) {
+      Override o;
+      o.max_s = u32_value(row, "override_max_s", 0);
+      o.prealarm_s = u32_value(row, "override_prealarm_s", 0);
+      e.override_time = o;
+    } else if (present(row, "override_prealarm_s")) {
+      auto f = cell(row, "override_prealarm_s");
+      error(f.line, f.column, "override_prealarm_s given without override_max_s");
+    }
+    // The process-data block exists exactly when pass_through is given.
+    if (present(row, "process_data_pass_through")) {
+      ProcessData p;
+      p.tag = optional_text(row, "process_data_tag");
+      p.pass_through = bool_value(row, "process_data_pass_through", false);
+      p.mask_tag = optional_text(row, "process_data_mask_tag");
+      e.process_data = p;
+    } else {
+      for (const char* col : {"process_data_tag", "process_data_mask_tag"})
+        if (!text(row, col).empty()) {
+          auto f = cell(row, col);
+          error(f.line, f.column, std::string(col) + " given without process_data_pass_through");
+        }
+    }
+    e.mutually_locked_maintenance = bool_value(row, "mutually_locked_maintenance", false);
+    e.sif = sif_value(row);
+    e.note = text(row, "note");
+    m_.effects.push_back(std::move(e));
+  }
+
+  // Tags are collected first and attached once every cause/effect row is known,
+  // so tag rows may come before or after their element.
+  struct PendingTag {
+    int position;
+    int line;
+    int column;
+    CauseTag cause_tag;
+    EffectTag effect_tag;
+  };
+
+  void read_cause_tag(const Row& row) {
+    int owner = int_value(row, "cause", std::nullopt);
+    PendingTag t{int_value(row, "position", std::nullopt), row.record->line,
+                 cell(row, "position").column, {}, {}};
+    t.cause_tag.name = text(row, "name");
+    t.cause_tag.ett = bool_value(row, "ett", false);
+    t.cause_tag.soft_bypass_allowed = bool_value(row, "soft_bypass_allowed", true);
+    cause_tags_[owner].push_back(t);
+  }
+
+  void read_effect_tag(const Row& row) {
+    int owner = int_value(row, "effect", std::nullopt);
+    PendingTag t{int_value(row, "position", std::nullopt), row.record->line,
+                 cell(row, "position").column, {}, {}};
+    t.effect_tag.name = text(row, "name");
+    t.effect_tag.ett = bool_value(row, "ett", false);
+    effect_tags_[owner].push_back(t);
+  }
+
+  template <typename Element, typename Get>
+  void attach(std::map<int, std::vector<PendingTag>>& pending, std::vector<Element>& elements,
+              const char* kind, Get get) {
+    for (auto& [owner, tags] : pending) {
+      auto it = std::find_if(elements.begin(), elements.end(),
+                             [&](const Element& e) { return e.id == owner; });
+      if (it == elements.end()) {
+        // An element row whose id could not be read was reported already.
+        if (unreadable_owner_) continue;
+        error(tags.front().line, 2,
+              std::string(kind) + "_tag of " + kind + " " + std::to_string(owner) +
+                  ", which has no '" + kind + "' row");
+        continue;
+      }
+      std::stable_sort(tags.begin(), tags.end(),
+                       [](const PendingTag& a, const PendingTag& b) { return a.position < b.position; });
+      for (std::size_t i = 0; i < tags.size(); ++i) {
+        if (tags[i].position != static_cast<int>(i + 1)) {
+          error(tags[i].line, tags[i].column,
+                std::string(kind) + " " + std::to_string(owner) + ": tag position " +
+                    std::to_string(tags[i].position) + " where " + std::to_string(i + 1) +
+                    " was expected (positions run 1, 2, ... without gaps or repeats)");
+          break;
+        }
+        it->tags.push_back(get(tags[i]));
+      }
+    }
+  }
+
+  void finish_tags() {
+    attach(cause_tags_, m_.causes, "cause", [](const PendingTag& t) { return t.cause_tag; });
+    attach(effect_tags_, m_.effects, "effect", [](const PendingTag& t) { return t.effect_tag; });
+  }
+
+  void read_intersection(const Row& row) {
+    Intersection x;
+    x.cause = int_value(row, "cause", std::nullopt);
+    x.effect = int_value(row, "effect", std::nullopt);
+    auto type_field = cell(row, "type");
+    auto type = enum_from<IntersectionType>(type_field.text, kIntersectionTypes);
+    if (!type) {
+      error(type_field.line, type_field.column,
+            "type: '" + type_field.text + "' is not one of N, S, V, R, X, *");
+    } else {
+      x.type = *type;
+    }
+    if (present(row, "xoon")) x.xoon = int_value(row, "xoon", 0);
+    x.note = text(row, "note");
+    if (!intersection_lines_.emplace(std::pair{x.cause, x.effect}, row.record->line).second) {
+      error(row.record->line, 2,
+            "intersection of cause " + std::to_string(x.cause) + " and effect " +
+                std::to_string(x.effect) + " repeats line " +
+                std::to_string(intersection_lines_[{x.cause, x.effect}]));
+      return;
+    }
+    m_.intersections.push_back(std::move(x));
+  }
+
+  const std::vector<CsvRecord>& records_;
+  std::string source_;
+  Matrix m_;
+  std::vector<LoadIssue> errors_;
+  bool unreadable_owner_ = false;
+  std::map<std::string, std::vector<int>> headers_;
+  std::set<std::string> properties_seen_;
+  std::map<int, int> cause_lines_;
+  std::map<int, int> effect_lines_;
+  std::map<std::pair<int, int>, int> intersection_lines_;
+  std::map<int, std::vector<PendingTag>> cause_tags_;
+  std::map<int, std::vector<PendingTag>> effect_tags_;
+};
+
+// Loads the imported matrix back through the JSON loader so that every rule the
+// loader enforces holds for an imported matrix too.
+Matrix check_with_loader(const Matrix& m, const std::string& source,
+                         const RecordImporter* importer) {
+  try {
+    return parse_matrix(to_canonical_json(m), source);
+  } catch (const LoadError& e) {
+    std::vector<LoadIssue> issues;
+    for (const auto& issue : e.issues()) {
+      LoadIssue mapped = issue;
+      std::optional<int> line = importer ? importer->line_of_path(issue.where) : std::nullopt;
+      if (line) mapped.where = where_of(source, *line) + " (" + issue.where + ")";
+      issues.push_back(mapped);
+    }
+    throw LoadError(issues);
+  }
+}
+
+// ---- import: the grid layout ---------------------------------------------------------
+
+// Which separator a hand-made grid uses: the most frequent of ; , TAB in its
+// first two lines (';' wins ties: the separator of spreadsheets in locales with a
+// decimal comma, like the LSST table).
+char detect_separator(std::string_view text) {
+  std::size_t end = 0;
+  for (int lines = 0; end < text.size() && lines < 2; ++end)
+    if (text[end] == '\n') ++lines;
+  auto head = text.substr(0, end);
+  auto semi = std::count(head.begin(), head.end(), ';');
+  auto comma = std::count(head.begin(), head.end(), ',');
+  auto tab = std::count(head.begin(), head.end(), '\t');
+  if (tab > semi && tab > comma) return '\t';
+  if (comma > semi) return ',';
+  return ';';
+}
+
+struct SheetElement {
+  std::string sheet_id;   // as written, trimmed
+  std::string text;       // description, trimmed
+  int line = 0;
+  int column = 0;         // of the id cell
+  int id = 0;
+  std::string name;
+  std::string tag;
+  std::string note;
+};
+
+std::optional<int> trailing_number(std::string_view s) {
+  std::size_t i = s.size();
+  while (i > 0 && s[i - 1] >= '0' && s[i - 1] <= '9') --i;
+  if (i == s.size() || s.size() - i > 6) return std::nullopt;
+  return std::stoi(std::string(s.substr(i)));
+}
+
+class GridImporter {
+ public:
+  GridImporter(std::vector<CsvRecord> rows, std::string source, std::string name)
+      : rows_(std::move(rows)), source_(std::move(source)), name_(std::move(name)) {}
+
+  CsvImportResult run() {
+    read_effects();
+    read_causes();
+    number(effects_, "effect", "E", kMaxEffects);
+    number(causes_, "cause", "C", kMaxCauses);
+    read_cells();
+    report_cell_styles();
+    report_missing_override();
+
+    Matrix m;
+    std::string stem = source_;
+    if (auto slash = stem.find_last_of("/\\"); slash != std::string::npos) stem = stem.substr(slash + 1);
+    if (auto dot = stem.rfind('.'); dot != std::string::npos && dot > 0) stem = stem.substr(0, dot);
+    // 6.1.2: matrix names have at most 16 characters; 6.2.1: titles at most 60.
+    m.name = name_.empty() ? sanitize_identifier(stem, kMaxMatrixNameLength) : name_;
+    if (m.name.empty()) m.name = "IMPORTED_GRID";
+    m.title = truncate_utf8(one_line(stem.empty() ? std::string("Imported C&E grid") : stem),
+                            kMaxTitleLength);
+    for (const auto& c : causes_) {
+      Cause cause;
+      cause.id = c.id;
+      cause.name = c.name;
+      cause.description = c.text;
+      cause.note = c.note;
+      cause.tags.push_back(CauseTag{c.tag, false, true});
+      m.causes.push_back(std::move(cause));
+    }
+    for (const auto& e : effects_) {
+      Effect effect;
+      effect.id = e.id;
+      effect.name = e.name;
+      effect.description = e.text;
+      effect.note = e.note;
+      effect.tags.push_back(EffectTag{e.tag, false});
+      m.effects.push_back(std::move(effect));
+    }
+    m.intersections = intersections_;
+    std::sort(m.causes.begin(), m.causes.end(), [](auto& a, auto& b) { return a.id < b.id; });
+    std::sort(m.effects.begin(), m.effects.end(), [](auto& a, auto& b) { return a.id < b.id; });
+    std::sort(m.intersections.begin(), m.intersections.end(), [](auto& a, auto& b) {
+      return std::pair{a.cause, a.effect} < std::pair{b.cause, b.effect};
+    });
+
+    CsvImportResult result;
+    result.layout = CsvLayoutKind::Grid;
+    result.matrix = check_with_loader(m, source_, nullptr);
+    std::stable_sort(warnings_.begin(), warnings_.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (auto& [order, w] : warnings_) result.warnings.push_back(std::move(w));
+    return result;
+  }
+
+ private:
+  static constexpr std::size_t kFirstEffectColumn = 2;  // 0-based: description, id, cells
+
+  void warn(int line, int column, std::string what) {
+    warnings_.push_back({{line, column}, LoadIssue{where_of(source_, line, column), std::move(what)}});
+  }
+  void warn_text(int line, std::string where_suffix, std::string what) {
+    warnings_.push_back({{line, 0}, LoadIssue{where_of(source_, line) + where_suffix, std::move(what)}});
+  }
+
+  static std::string cell_text(const CsvRecord& r, std::size_t i) {
+    return i < r.fields.size() ? one_line(trim(r.fields[i].text)) : std::string();
+  }
+
+  void read_effects() {
+    if (rows_.size() < 2)
+      throw LoadError({{where_of(source_, rows_.empty() ? 1 : rows_.back().line),
+                        "not a C&E grid: expected a row of effect descriptions, then a row of "
+                        "effect ids from column 3 on (docs/csv.md)"}});
+    const CsvRecord& descriptions = rows_[0];
+    const CsvRecord& ids = rows_[1];
+    std::size_t last = 0;
+    for (std::size_t i = kFirstEffectColumn; i < ids.fields.size(); ++i)
+      if (!cell_text(ids, i).empty()) last = i + 1;
+    for (std::size_t i = kFirstEffectColumn; i < descriptions.fields.size(); ++i)
+      if (!cell_text(descriptions, i).empty()) last = std::max(last, i + 1);
+    if (last == 0)
+      throw LoadError({{where_of(source_, ids.line),
+                        "not a C&E grid: no effect ids in this row from column 3 on "
+                        "(docs/csv.md)"}});
+    if (last - kFirstEffectColumn > static_cast<std::size_t>(kMaxEffects))
+      throw LoadError({{where_of(source_, ids.line),
+                        "the grid has " + std::to_string(last - kFirstEffectColumn) +
+                            " effect columns; a matrix holds at most " + std::to_string(kMaxEffects) +
+                            " effects (3.4)"}});
+    effect_end_ = last;
+    for (std::size_t i = kFirstEffectColumn; i < last; ++i) {
+      SheetElement e;
+      e.sheet_id = cell_text(ids, i);
+      e.line = ids.line;
+      e.column = static_cast<int>(i + 1);
+      if (e.sheet_id.empty())
+        warn(ids.line, e.column,
+             "effect column without an id; named after its column (EFFECT_COL_" +
+                 std::to_string(i + 1) + ")");
+      describe(e, cell_text(descriptions, i), descriptions.line, static_cast<int>(i + 1), "effect");
+      effects_.push_back(std::move(e));
+    }
+  }
+
+  // Description truncated to the 80 characters of 6.3/6.4; the full text kept in the note.
+  void describe(SheetElement& e, const std::string& raw, int line, int column, const char* kind) {
+    const std::string text = one_line(raw);
+    e.text = text;
+    if (utf8_length(text) > kMaxDescriptionLength) {
+      e.text = truncate_utf8(text, kMaxDescriptionLength);
+      e.note = "description: " + text;
+      warn(line, column,
+           std::string(kind) + " description of " + std::to_string(utf8_length(text)) +
+               " characters truncated to " + std::to_string(kMaxDescriptionLength) +
+               "; the full text is kept in the note");
+    }
+  }
+
+  void read_causes() {
+    static const std::regex legend_re(R"(^\(\s*(\d+)\s*\)$)");
+    for (std::size_t r = 2; r < rows_.size(); ++r) {
+      const CsvRecord& row = rows_[r];
+      bool any = false;
+      for (std::size_t i = 0; i < row.fields.size(); ++i) any = any || !cell_text(row, i).empty();
+      if (!any) continue;
+      std::smatch mt;
+      std::string first = cell_text(row, 0);
+      if (std::regex_match(first, mt, legend_re)) {
+        std::string text;
+        for (std::size_t i = 1; i < row.fields.size(); ++i)
+          if (auto t = cell_text(row, i); !t.empty()) join_to(text, " ", t);
+        std::string key = "(" + mt[1].str() + ")";
+        if (!legend_.emplace(key, one_line(text)).second)
+          warn(row.line, 1, "footnote " + key + " defined twice in the legend; the first is kept");
+        continue;
+      }
+      bool marks = false;
+      for (std::size_t i = kFirstEffectColumn; i < row.fields.size(); ++i)
+        marks = marks || !cell_text(row, i).empty();
+      SheetElement c;
+      c.sheet_id = cell_text(row, 1);
+      c.line = row.line;
+      c.column = 2;
+      if (c.sheet_id.empty()) {
+        if (!marks) {
+          warn(row.line, 1, "text row without a cause id or intersections ignored: '" + first + "'");
+          continue;
+        }
+        warn(row.line, 2, "cause row without an id; imported, named after its line (CAUSE_LINE_" +
+                              std::to_string(row.line) + ")");
+      }
+      if (causes_.size() == static_cast<std::size_t>(kMaxCauses))
+        throw LoadError({{where_of(source_, row.line),
+                          "more than " + std::to_string(kMaxCauses) +
+                              " cause rows; a matrix holds at most " + std::to_string(kMaxCauses) +
+                              " causes (3.4)"}});
+      describe(c, first, row.line, 1, "cause");
+      cause_rows_.push_back(r);
+      causes_.push_back(std::move(c));
+    }
+    if (causes_.empty())
+      throw LoadError({{where_of(source_, rows_.back().line),
+                        "not a C&E grid: no cause rows after the two header rows (docs/csv.md)"}});
+  }
+
+  // Numeric ids follow the sheet's own numbering (`TMA-D-40` -> 40) when every id
+  // ends in a number within the limits of 3.4, so evidence refers to the same
+  // numbers as the sheet; otherwise elements are numbered by position. A repeated
+  // id keeps both elements: the later one gets the next free number and the
+  // suffix _2, _3, ... (merging would silently drop one row's intersections).
+  void number(std::vector<SheetElement>& elements, const char* kind, const char* prefix, int limit) {
+    std::vector<std::optional<int>> nums;
+    bool by_sheet = true;
+    for (const auto& e : elements) {
+      nums.push_back(e.sheet_id.empty() ? std::nullopt : trailing_number(e.sheet_id));
+      by_sheet = by_sheet && nums.back() && *nums.back() >= 1 && *nums.back() <= limit;
+    }
+    std::set<int> used;
+    int next_free = 0;
+    if (by_sheet) {
+      for (auto& n : nums) next_free = std::max(next_free, *n);
+      ++next_free;
+      std::set<int> seen;
+      int extra = 0;
+      for (auto& n : nums)
+        if (!seen.insert(*n).second) ++extra;
+      if (next_free + extra - 1 > limit) by_sheet = false;
+    }
+    if (!by_sheet && !elements.empty())
+      warn(elements.front().line, elements.front().column,
+           std::string(kind) + " ids do not all end in a number 1-" + std::to_string(limit) +
+               "; " + kind + "s are numbered by their position in the sheet");
+
+    std::map<std::string, std::size_t> first_by_id;  // sheet id -> index of first element
+    std::map<int, std::size_t> first_by_number;      // sheet number -> index of first element
+    std::set<std::string> names;                     // tag_key() of each, for uniqueness
+    for (std::size_t i = 0; i < elements.size(); ++i) {
+      auto& e = elements[i];
+      auto [first, fresh] = first_by_id.emplace(e.sheet_id, i);
+      bool duplicate = !fresh && !e.sheet_id.empty();
+      if (by_sheet) {
+        auto [same_number, unused] = first_by_number.emplace(*nums[i], i);
+        if (unused) {
+          e.id = *nums[i];
+        } else {
+          e.id = next_free++;
+          if (!duplicate)
+            warn(e.line, e.column,
+                 std::string(kind) + " id '" + e.sheet_id + "' ends in the same number as '" +
+                     elements[same_number->second].sheet_id + "'; numbered " + std::to_string(e.id));
+        }
+      } else {
+        e.id = static_cast<int>(i + 1);
+      }
+      std::string base = sanitize_identifier(e.sheet_id, kMaxTagNameLength - 3);
+      if (base.empty())
+        base = e.sheet_id.empty() ? (std::string(kind) == "cause" ? "CAUSE_LINE_" + std::to_string(e.line)
+                                                                   : "EFFECT_COL_" + std::to_string(e.column))
+                                  : std::string(prefix) + "_" + std::to_string(e.id);
+      else if (base[0] >= '0' && base[0] <= '9')
+        base = std::string(prefix) + "_" + base;  // a leading letter keeps names identifier-like
+      base = sanitize_identifier(base, kMaxTagNameLength - 3);
+      std::string name = base;
+      for (int k = 2; names.count(tag_key(name)); ++k) name = base + "_" + std::to_string(k);
+      names.insert(tag_key(name));
+      e.name = name;
+      e.tag = name;
+      std::string origin = "sheet id: " + (e.sheet_id.empty() ? std::string("(none)") : e.sheet_id);
+      e.note = e.note.empty() ? origin : origin + "; " + e.note;
+      if (duplicate) {
+        const auto& f = elements[first->second];
+        warn(e.line, e.column,
+             std::string(kind) + " id '" + e.sheet_id + "' repeats line " + std::to_string(f.line) +
+                 " ('" + f.text + "'); both rows are kept as separate " + kind + "s: line " +
+                 std::to_string(f.line) + " is " + kind + " " + std::to_string(f.id) + " " + f.name +
+                 ", this one " + kind + " " + std::to_string(e.id) + " " + e.name +
+                 " (not merged: merging would lose one row's intersections; give it its own id "
+                 "in the sheet)");
+        e.note += "; duplicate of the id of line " + std::to_string(f.line);
+      }
+    }
+    if (by_sheet) report_out_of_order(elements, first_by_number, kind);
+  }
+
+  // An element whose number breaks the ascending order of the sheet: the ones
+  // outside a longest ascending run of numbers (so one moved column is reported,
+  // not every column after it).
+  void report_out_of_order(const std::vector<SheetElement>& elements,
+                           const std::map<int, std::size_t>& first_by_number, const char* kind) {
+    std::vector<std::size_t> order;  // first occurrences, in sheet order
+    for (std::size_t i = 0; i < elements.size(); ++i) {
+      auto it = first_by_number.find(elements[i].id);
+      if (it != first_by_number.end() && it->second == i) order.push_back(i);
+    }
+    std::vector<std::size_t> tails;   // positions in `order`
+    std::vector<long> prev(order.size(), -1);
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      int key = elements[order[k]].id;
+      auto it = std::lower_bound(tails.begin(), tails.end(), key, [&](std::size_t t, int v) {
+        return elements[order[t]].id < v;
+      });
+      if (it != tails.begin()) prev[k] = static_cast<long>(*(it - 1));
+      if (it == tails.end()) tails.push_back(k);
+      else *it = k;
+    }
+    std::vector<bool> in_run(order.size(), false);
+    for (long k = tails.empty() ? -1 : static_cast<long>(tails.back()); k >= 0; k = prev[static_cast<std::size_t>(k)])
+      in_run[static_cast<std::size_t>(k)] = true;
+    for (std::size_t k = 0; k < order.size(); ++k) {
+      if (in_run[k]) continue;
+      const auto& e = elements[order[k]];
+      std::string place;
+      if (order[k] > 0) place += "after '" + elements[order[k] - 1].sheet_id + "'";
+      if (order[k] + 1 < elements.size())
+        join_to(place, ", ", "before '" + elements[order[k] + 1].sheet_id + "'");
+      warn(e.line, e.column,
+           std::string(kind) + " id '" + e.sheet_id + "' out of order (" + place +
+               "); it keeps its number (" + kind + " " + std::to_string(e.id) +
+               ") and the matrix lists " + kind + "s by number");
+    }
+  }
+
+  // Reads one intersection cell: a type letter, optionally followed by footnote
+  // references `(n)`. Anything else is a stray value: reported, never guessed.
+  void read_cells() {
+    static const std::regex mark_re(R"(^([NSVRXnsvrx*])\s*((\(\s*\d+\s*\)\s*)*)$)");
+    static const std::regex footnote_re(R"(\(\s*(\d+)\s*\))");
+    std::set<std::string> unexplained;
+    for (std::size_t k = 0; k < causes_.size(); ++k) {
+      const CsvRecord& row = rows_[cause_rows_[k]];
+      for (std::size_t i = kFirstEffectColumn; i < std::max(row.fields.size(), effect_end_); ++i) {
+        int column = static_cast<int>(i + 1);
+        if (i >= row.fields.size()) {
+          styles_.push_back({row.line, column, CellStyle::Missing});
+          continue;
+        }
+        const std::string& raw = row.fields[i].text;
+        std::string t(trim(raw));
+        if (i >= effect_end_) {
+          if (!t.empty())
+            warn(row.line, column,
+                 "stray value '" + t + "' right of the last effect column; ignored");
+          continue;
+        }
+        if (t.empty()) {
+          styles_.push_back({row.line, column, raw.empty() ? CellStyle::Empty : CellStyle::Blank});
+          continue;
+        }
+        const auto& cause = causes_[k];
+        const auto& effect = effects_[i - kFirstEffectColumn];
+        std::smatch mt;
+        if (!std::regex_match(t, mt, mark_re)) {
+          warn(row.line, column,
+               "stray value '" + t + "' at cause " + cause.name + " / effect " + effect.name +
+                   " is not N, S, V, R, X or * (with optional footnotes like R(1)); ignored: no "
+                   "intersection imported");
+          continue;
+        }
+        char letter = mt[1].str()[0];
+        if (letter >= 'a' && letter <= 'z') {
+          letter = static_cast<char>(letter - 'a' + 'A');
+          warn(row.line, column,
+               "lower-case mark '" + t + "' read as '" + std::string(1, letter) + "'");
+        }
+        Intersection x;
+        x.cause = cause.id;
+        x.effect = effect.id;
+        x.type = *enum_from<IntersectionType>(std::string(1, letter), kIntersectionTypes);
+        std::string refs = mt[2].str();
+        for (std::sregex_iterator it(refs.begin(), refs.end(), footnote_re), end; it != end; ++it) {
+          std::string key(1, '(');
+          key += (*it)[1].str();
+          key += ')';
+          std::string text = key;
+          if (auto l = legend_.find(key); l != legend_.end()) text += " " + l->second;
+          else unexplained.insert(key);
+          join_to(x.note, "; ", text);
+        }
+        intersections_.push_back(std::move(x));
+      }
+      if (row.fields.size() < effect_end_)
+        warn(row.line, static_cast<int>(row.fields.size()),
+             "row ends after column " + std::to_string(row.fields.size()) + " of " +
+                 std::to_string(effect_end_) + "; the missing cells read as no intersection");
+    }
+    if (!unexplained.empty()) {
+      std::string list;
+      for (const auto& k : unexplained) join_to(list, ", ", k);
+      warn(rows_[cause_rows_.front()].line, 0,
+           "footnotes " + list +
+               (legend_.empty() ? " are referenced but the file has no legend rows"
+                                : " have no legend entry") +
+               "; kept as notes on their intersections");
+    }
+  }
+
+  enum class CellStyle { Empty, Blank, Missing };
+  struct StyledCell {
+    int line;
+    int column;
+    CellStyle style;
+  };
+
+  // A grid should say "no intersection" one way. Cells that differ from the
+  // grid's usual way (empty vs. a space) are reported per row: they read the same,
+  // but a mixed sheet often means rows pasted from another version.
+  void report_cell_styles() {
+    std::size_t empty = 0, blank = 0;
+    for (const auto& s : styles_) {
+      if (s.style == CellStyle::Empty) ++empty;
+      if (s.style == CellStyle::Blank) ++blank;
+    }
+    if (empty == 0 || blank == 0) return;
+    CellStyle odd = blank >= empty ? CellStyle::Empty : CellStyle::Blank;
+    std::string usual = odd == CellStyle::Empty ? "a space (' ')" : "an empty cell";
+    std::string what = odd == CellStyle::Empty ? "empty cell" : "space-only cell";
+    std::map<int, std::vector<int>> by_line;
+    for (const auto& s : styles_)
+      if (s.style == odd) by_line[s.line].push_back(s.column);
+    for (auto& [line, cols] : by_line) {
+      std::string text = (cols.size() == 1 ? what : std::to_string(cols.size()) + " " + what + "s") +
+                         " where the grid otherwise uses " + usual +
+                         " for no intersection; read as no intersection";
+      if (cols.size() == 1) warn(line, cols.front(), text);
+      else warn_text(line, ", columns " + column_ranges(cols), text);
+    }
+  }
+
+  // 6.5.2: V and R need a maximum override time, which a grid never states.
+  void report_missing_override() {
+    std::set<int> need;
+    for (const auto& x : intersections_)
+      if (x.type == IntersectionType::V || x.type == IntersectionType::R) need.insert(x.effect);
+    if (need.empty()) return;
+    std::string list;
+    for (const auto& e : effects_)
+      if (need.count(e.id)) join_to(list, ", ", e.name);
+    warn(rows_[1].line, 0,
+         "the grid states no maximum override time (6.5.2) for the effects with V/R "
+         "intersections (" + list + "); none was invented: cemv validate reports each");
+  }
+
+  std::vector<CsvRecord> rows_;
+  std::string source_;
+  std::string name_;  // the matrix name asked for; empty: from the file name
+  std::size_t effect_end_ = 0;  // one past the last effect column (0-based)
+  std::vector<SheetElement> effects_;
+  std::vector<SheetElement> causes_;
+  std::vector<std::size_t> cause_rows_;
+  std::map<std::string, std::string> legend_;
+  std::vector<Intersection> intersections_;
+  std::vector<StyledCell> styles_;
+  std::vector<std::pair<std::pair<int, int>, LoadIssue>> warnings_;
+};
+
+}  // namespace
+
+// ---- RFC 4180 ---------------------------------------------------------------------
+
+std::vector<CsvRecord> parse_csv(std::string_view text, char separator, bool strict,
+                                 const std::string& source_name) {
+  std::vector<CsvRecord> records;
+  std::vector<LoadIssue> errors;
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+  int line = 1;
+  std::size_t i = 0;
+  const std::size_t n = text.size();
+  auto error = [&](int l, int c, std::string what) {
+    errors.push_back({where_of(source_name, l, c), std::move(what)});
+  };
+  while (i < n) {
+    CsvRecord rec;
+    rec.line = line;
+    bool end_of_record = false;
+    while (!end_of_record) {
+      CsvField f;
+      f.line = line;
+      f.column = static_cast<int>(rec.fields.size() + 1);
+      if (i < n && text[i] == '"') {
+        f.quoted = true;
+        int open_line = line;
+        ++i;
+        bool closed = false;
+        while (i < n) {
+          char c = text[i];
+          if (c == '"') {
+            if (i + 1 < n && text[i + 1] == '"') {
+              f.text += '"';
+              i += 2;
+              continue;
+            }
+            ++i;
+            closed = true;
+            break;
+          }
+          if (c == '\n') ++line;
+          f.text += c;
+          ++i;
+        }
+        if (!closed) {
+          error(open_line, f.column, "quoted field never closed (missing '\"')");
+          throw LoadError(errors);
+        }
+        // After the closing quote: the separator, the end of the record, or junk.
+        std::size_t junk_start = i;
+        while (i < n && text[i] != separator && text[i] != '\n' &&
+               !(text[i] == '\r' && i + 1 < n && text[i + 1] == '\n'))
+          ++i;
+        if (i > junk_start) {
+          if (strict)
+            error(line, f.column, "text after the closing quote of a quoted field");
+          else
+            f.text += std::string(text.substr(junk_start, i - junk_start));
+        }
+      } else {
+        bool reported = false;
+        while (i < n && text[i] != separator && text[i] != '\n' &&
+               !(text[i] == '\r' && i + 1 < n && text[i + 1] == '\n')) {
+          if (text[i] == '"' && strict && !reported) {
+            error(line, f.column, "quote inside an unquoted field (RFC 4180: quote the field and "
+                                  "double the quote)");
+            reported = true;  // one report per field is enough; keep reading
+          }
+          f.text += text[i++];
+        }
+      }
+      rec.fields.push_back(std::move(f));
+      if (i >= n) {
+        end_of_record = true;
+      } else if (text[i] == separator) {
+        ++i;
+        if (i >= n) {  // a trailing separator at the end of the text: one more empty field
+          CsvField last;
+          last.line = line;
+          last.column = static_cast<int>(rec.fields.size() + 1);
+          rec.fields.push_back(last);
+          end_of_record = true;
+        }
+      } else {
+        i += text[i] == '\r' ? 2 : 1;
+        ++line;
+        end_of_record = true;
+      }
+    }
+    records.push_back(std::move(rec));
+  }
+  if (!errors.empty()) throw LoadError(errors);
+  return records;
+}
+
+std::string csv_quote(std::string_view field, char separator) {
+  bool quote = field.find_first_of(std::string{separator, '"', '\r', '\n'}) != std::string_view::npos ||
+               (!field.empty() && (field.front() == ' ' || field.back() == ' ' ||
+                                   field.front() == '\t' || field.back() == '\t'));
+  if (!quote) return std::string(field);
+  std::string out = "\"";
+  for (char c : field) {
+    if (c == '"') out += '"';
+    out += c;
+  }
+  out += '"';
+  return out;
+}
+
+std::string sanitize_identifier(std::string_view text, std::size_t max_length) {
+  std::string out;
+  for (char c : text) {
+    bool keep = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9');
+    char ch = keep ? c : '_';
+    if (ch == '_' && (out.empty() || out.back() == '_')) continue;
+    out += ch;
+  }
+  if (out.size() > max_length) out.resize(max_length);
+  while (!out.empty() && out.back() == '_') out.pop_back();
+  return out;
+}
+
+// ---- export -------------------------------------------------------------------------
+
+std::string export_csv(const Matrix& m) {
+  CsvWriter w;
+  const auto& schemas = record_schemas();
+  auto schema = [&](const char* type) -> const RecordSchema& { return *find_schema(type); };
+
+  w.header(schema("property"));
+  w.row({"property", "format", kMatrixFormat});
+  w.row({"property", "name", m.name});
+  w.row({"property", "title", m.title});
+  w.row({"property", "cycle_ms", std::to_string(m.cycle_ms)});
+  if (m.secure_write) w.row({"property", "secure_write.enable_tag", m.secure_write->enable_tag});
+  if (m.group_deactivation) {
+    w.row({"property", "group_deactivation.enable_tag", m.group_deactivation->enable_tag});
+    w.row({"property", "group_deactivation.set_tag", m.group_deactivation->set_tag});
+  }
+
+  w.header(schema("sif_group"));
+  for (const auto& [n, name] : m.sif_groups) w.row({"sif_group", std::to_string(n), name});
+
+  w.header(schema("cause"));
+  for (const auto& c : m.causes) {
+    const auto& a = c.analog;
+    w.row({"cause", std::to_string(c.id), c.name, c.description, std::to_string(c.sil),
+           to_string(c.input), to_string(c.function), to_string(c.bad_quality),
+           to_string(c.time.mode), std::to_string(c.time.ms), bool_text(c.auto_ack),
+           bool_text(c.soft_bypass.allowed), std::to_string(c.soft_bypass.max_s),
+           std::to_string(c.soft_bypass.prealarm_s), opt_text(c.bypass_tag), opt_text(c.inhibit_tag),
+           std::to_string(c.first_out_group), bool_text(c.mutually_locked_maintenance),
+           sif_text(c.sif), a ? to_string(a->limit_type) : "", a ? float_text(a->limit) : "",
+           a ? float_text(a->hysteresis) : "",
+           a && a->prewarning ? float_text(*a->prewarning) : "", a ? float_text(a->delta) : "",
+           a ? a->unit : "", c.note});
+  }
+  w.header(schema("cause_tag"));
+  for (const auto& c : m.causes)
+    for (std::size_t k = 0; k < c.tags.size(); ++k)
+      w.row({"cause_tag", std::to_string(c.id), std::to_string(k + 1), c.tags[k].name,
+             bool_text(c.tags[k].ett), bool_text(c.tags[k].soft_bypass_allowed)});
+
+  w.header(schema("effect"));
+  for (const auto& e : m.effects) {
+    const auto& o = e.override_time;
+    const auto& p = e.process_data;
+    w.row({"effect", std::to_string(e.id), e.name, e.description, std::to_string(e.sil),
+           to_string(e.function), std::to_string(e.output_delay_ms), bool_text(e.soft_bypass_allowed),
+           opt_text(e.bypass_tag), opt_text(e.reset_tag), o ? std::to_string(o->max_s) : "",
+           o ? std::to_string(o->prealarm_s) : "", p ? opt_text(p->tag) : "",
+           p ? bool_text(p->pass_through) : "", p ? opt_text(p->mask_tag) : "",
+           bool_text(e.mutually_locked_maintenance), sif_text(e.sif), e.note});
+  }
+  w.header(schema("effect_tag"));
+  for (const auto& e : m.effects)
+    for (std::size_t k = 0; k < e.tags.size(); ++k)
+      w.row({"effect_tag", std::to_string(e.id), std::to_string(k + 1), e.tags[k].name,
+             bool_text(e.tags[k].ett)});
+
+  w.header(schema("intersection"));
+  for (const auto& x : m.intersections)
+    w.row({"intersection", std::to_string(x.cause), std::to_string(x.effect), to_string(x.type),
+           x.xoon ? std::to_string(*x.xoon) : "", x.note});
+  (void)schemas;
+  return w.take();
+}
+
+// ---- import -------------------------------------------------------------------------
+
+CsvImportResult import_csv(std::string_view text, const std::string& source_name,
+                           const CsvImportOptions& options) {
+  CsvLayoutKind layout = options.layout;
+  if (layout == CsvLayoutKind::Auto) {
+    std::string_view probe = text;
+    if (probe.substr(0, 3) == "\xEF\xBB\xBF") probe.remove_prefix(3);
+    // The record layout starts with a record type or its header in column 1
+    // (`#property,` as export writes it); a grid starts with a label or nothing.
+    std::string_view first = probe.substr(0, probe.find_first_of(",\r\n"));
+    if (!first.empty() && first.front() == '#') first.remove_prefix(1);
+    layout = find_schema(first) ? CsvLayoutKind::Records : CsvLayoutKind::Grid;
+  }
+  if (layout == CsvLayoutKind::Records) {
+    auto records = parse_csv(text, ',', true, source_name);
+    RecordImporter importer(records, source_name);
+    Matrix m = importer.run();
+    CsvImportResult result;
+    result.layout = CsvLayoutKind::Records;
+    result.matrix = check_with_loader(m, source_name, &importer);
+    return result;
+  }
+  char sep = options.separator ? options.separator : detect_separator(text);
+  auto rows = parse_csv(text, sep, false, source_name);
+  while (!rows.empty() && std::all_of(rows.back().fields.begin(), rows.back().fields.end(),
+                                      [](const CsvField& f) { return trim(f.text).empty(); }))
+    rows.pop_back();
+  return GridImporter(std::move(rows), source_name, options.matrix_name).run();
+}
+
+}  // namespace cemv::model

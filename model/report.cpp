@@ -1,1 +1,738 @@
-// implemented in the foundation issue
+// The configuration report of 11.4, docs/reports.md.
+//
+// The content is built once as a small document (headings, paragraphs, tables)
+// and rendered to Markdown or HTML, so both forms always say the same thing; the
+// JSON form carries the same sections as data plus the canonical matrix itself.
+#include "model/report.hpp"
+
+#include <map>
+#include <set>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "model/format.hpp"
+#include "model/io.hpp"
+#include "model/validate.hpp"
+
+namespace cemv::model {
+
+namespace {
+
+// ---- document model ------------------------------------------------------------------
+
+struct Text {
+  std::string text;
+  bool code = false;       // an identifier (name, tag): monospace, never reflowed
+  std::string css;         // HTML class of a grid cell
+};
+
+Text code(std::string s) { return Text{std::move(s), true, {}}; }
+Text plain(std::string s) { return Text{std::move(s), false, {}}; }
+
+struct Heading {
+  int level;
+  std::string text;
+  std::string anchor;
+};
+struct Paragraph {
+  std::vector<Text> parts;  // concatenated
+};
+struct Table {
+  std::vector<std::string> header;
+  std::vector<std::vector<Text>> rows;
+  bool grid = false;        // the C&E grid: compact cells
+};
+// One block of the document (not std::variant: GCC 12 reports false
+// -Wmaybe-uninitialized on moving variants of vectors at -O3).
+struct Block {
+  enum class Kind { Heading, Paragraph, Table } kind;
+  Heading heading;
+  Paragraph paragraph;
+  Table table;
+};
+
+struct Document {
+  std::string title;
+  std::vector<Block> blocks;
+  void h(int level, std::string text, std::string anchor = {}) {
+    blocks.push_back(Block{Block::Kind::Heading, Heading{level, std::move(text), std::move(anchor)}, {}, {}});
+  }
+  void p(std::vector<Text> parts) {
+    blocks.push_back(Block{Block::Kind::Paragraph, {}, Paragraph{std::move(parts)}, {}});
+  }
+  void p(std::string text) { p(std::vector<Text>{plain(std::move(text))}); }
+  void table(Table t) { blocks.push_back(Block{Block::Kind::Table, {}, {}, std::move(t)}); }
+};
+
+// ---- shared facts ---------------------------------------------------------------------
+
+// Appends item to a separated list (not `s += (s.empty() ? "" : sep) + item`,
+// which trips GCC 12's -Wrestrict false positive at -O3).
+void join_to(std::string& list, std::string_view separator, const std::string& item) {
+  if (!list.empty()) list += separator;
+  list += item;
+}
+
+
+std::string yes_no(bool b) { return b ? "yes" : "no"; }
+Text tag_or_none(const std::optional<std::string>& s) { return s ? code(*s) : plain("none"); }
+
+std::string sif_list(const std::vector<int>& sif) {
+  if (sif.empty()) return "none";
+  std::string out;
+  for (int g : sif) join_to(out, ", ", std::to_string(g));
+  return out;
+}
+
+// "S", "V 2oo3" (the X of XooN over the N intersections of that effect carrying xoon).
+std::string cell_text(const Matrix& m, const Intersection& x) {
+  std::string s = to_string(x.type);
+  if (x.xoon) {
+    int n = 0;
+    for (const auto* y : m.intersections_of_effect(x.effect))
+      if (y->xoon) ++n;
+    s += " " + std::to_string(*x.xoon) + "oo" + std::to_string(n);
+  }
+  return s;
+}
+
+struct Statistics {
+  std::map<std::string, int> by_type, by_function, by_input, by_time, by_bad_quality,
+      by_effect_function;
+  int cause_tags = 0, effect_tags = 0, bypass_tags = 0, inhibit_tags = 0, reset_tags = 0,
+      effect_bypass_tags = 0, internal_refs = 0, xoon_effects = 0, noted_intersections = 0;
+  std::size_t external_inputs = 0;
+  std::set<int> first_out_groups, sif_used;
+};
+
+Statistics statistics(const Matrix& m) {
+  Statistics s;
+  for (auto t : {IntersectionType::N, IntersectionType::S, IntersectionType::V, IntersectionType::R,
+                 IntersectionType::X, IntersectionType::Note})
+    s.by_type[to_string(t)] = 0;
+  for (auto f : {CauseFunction::Normal, CauseFunction::And, CauseFunction::Or,
+                 CauseFunction::TwoOoThree, CauseFunction::Comment})
+    s.by_function[to_string(f)] = 0;
+  for (auto k : {InputKind::Discrete, InputKind::Analog}) s.by_input[to_string(k)] = 0;
+  for (auto t : {TimeMode::None, TimeMode::OnDelay, TimeMode::OffDelay, TimeMode::Timed})
+    s.by_time[to_string(t)] = 0;
+  for (auto b : {BadQuality::Ignore, BadQuality::Trip, BadQuality::Degrade})
+    s.by_bad_quality[to_string(b)] = 0;
+  for (auto f : {EffectFunction::Normal, EffectFunction::Comment}) s.by_effect_function[to_string(f)] = 0;
+
+  auto count_ref = [&](const std::string& name) {
+    if (parse_internal_ref(name)) ++s.internal_refs;
+  };
+  for (const auto& c : m.causes) {
+    ++s.by_function[to_string(c.function)];
+    ++s.by_input[to_string(c.input)];
+    ++s.by_time[to_string(c.time.mode)];
+    ++s.by_bad_quality[to_string(c.bad_quality)];
+    s.cause_tags += static_cast<int>(c.tags.size());
+    for (const auto& t : c.tags) count_ref(t.name);
+    if (c.bypass_tag) ++s.bypass_tags;
+    if (c.inhibit_tag) ++s.inhibit_tags;
+    if (c.first_out_group) s.first_out_groups.insert(c.first_out_group);
+    s.sif_used.insert(c.sif.begin(), c.sif.end());
+  }
+  for (const auto& e : m.effects) {
+    ++s.by_effect_function[to_string(e.function)];
+    s.effect_tags += static_cast<int>(e.tags.size());
+    if (e.reset_tag) ++s.reset_tags;
+    if (e.bypass_tag) ++s.effect_bypass_tags;
+    s.sif_used.insert(e.sif.begin(), e.sif.end());
+    bool xoon = false;
+    for (const auto* x : m.intersections_of_effect(e.id)) xoon = xoon || x->xoon.has_value();
+    if (xoon) ++s.xoon_effects;
+  }
+  for (const auto& x : m.intersections) {
+    ++s.by_type[to_string(x.type)];
+    if (!x.note.empty()) ++s.noted_intersections;
+  }
+  s.external_inputs = InputTable(m).size();
+  return s;
+}
+
+const char* type_meaning(const std::string& t) {
+  if (t == "N") return "not stored (non-latching)";
+  if (t == "S") return "stored (latching, reset needed)";
+  if (t == "V") return "overridable";
+  if (t == "R") return "resettable and overridable";
+  if (t == "X") return "not yet specified (blocks transfer)";
+  return "for note only (not processed)";
+}
+
+// ---- the content ------------------------------------------------------------------------
+
+struct FieldRow {
+  std::string field;
+  Text value;
+  std::string section;
+};
+
+Table field_table(const std::vector<FieldRow>& rows) {
+  Table t;
+  t.header = {"Field", "Value", "Manual"};
+  for (const auto& r : rows) t.rows.push_back({code(r.field), r.value, plain(r.section)});
+  return t;
+}
+
+std::vector<FieldRow> cause_fields_of(const Cause& c) {
+  std::vector<FieldRow> r = {
+      {"id", plain(std::to_string(c.id)), "6.3"},
+      {"name", code(c.name), "6.3"},
+      {"description", plain(c.description), "6.3"},
+      {"sil", plain(c.sil ? std::to_string(c.sil) : "not stated"), "6.3"},
+      {"input", plain(to_string(c.input)), "6.3.4"},
+      {"function", plain(to_string(c.function)), "3.4, 6.3.1"},
+  };
+  if (c.analog) {
+    const auto& a = *c.analog;
+    r.push_back({"analog.limit_type", plain(to_string(a.limit_type)), "6.3.5"});
+    r.push_back({"analog.limit", plain(float_text(a.limit)), "6.3.5"});
+    r.push_back({"analog.hysteresis", plain(float_text(a.hysteresis)), "6.3.5"});
+    r.push_back({"analog.prewarning", plain(a.prewarning ? float_text(*a.prewarning) : "none"), "6.3.5"});
+    r.push_back({"analog.delta", plain(a.delta == 0.0f ? "0 (off)" : float_text(a.delta)), "6.3.5"});
+    r.push_back({"analog.unit", plain(a.unit.empty() ? "none" : a.unit), "6.3.5"});
+  } else {
+    r.push_back({"analog", plain("none"), "6.3.5"});
+  }
+  r.push_back({"bad_quality", plain(to_string(c.bad_quality)), "6.1.6, 13.1.5"});
+  r.push_back({"time.mode", plain(to_string(c.time.mode)), "6.3.6, 13.1.1"});
+  r.push_back({"time.ms", plain(std::to_string(c.time.ms)), "6.3.6, 13.1.1"});
+  r.push_back({"auto_ack", plain(yes_no(c.auto_ack)), "13.1.4"});
+  r.push_back({"soft_bypass.allowed", plain(yes_no(c.soft_bypass.allowed)), "6.3.6"});
+  r.push_back({"soft_bypass.max_s",
+               plain(c.soft_bypass.max_s ? std::to_string(c.soft_bypass.max_s) : "0 (untimed)"), "6.3.6"});
+  r.push_back({"soft_bypass.prealarm_s", plain(std::to_string(c.soft_bypass.prealarm_s)), "6.3.6"});
+  r.push_back({"bypass_tag", tag_or_none(c.bypass_tag), "13.1.2"});
+  r.push_back({"inhibit_tag", tag_or_none(c.inhibit_tag), "13.1.3"});
+  r.push_back({"first_out_group",
+               plain(c.first_out_group ? std::to_string(c.first_out_group) : "0 (none)"), "6.3"});
+  r.push_back({"mutually_locked_maintenance", plain(yes_no(c.mutually_locked_maintenance)), "6.3"});
+  r.push_back({"sif", plain(sif_list(c.sif)), "3.4"});
+  r.push_back({"note", plain(c.note.empty() ? "none" : c.note), ""});
+  return r;
+}
+
+std::vector<FieldRow> effect_fields_of(const Effect& e) {
+  std::vector<FieldRow> r = {
+      {"id", plain(std::to_string(e.id)), "6.4"},
+      {"name", code(e.name), "6.4"},
+      {"description", plain(e.description), "6.4"},
+      {"sil", plain(e.sil ? std::to_string(e.sil) : "not stated"), "6.4"},
+      {"function", plain(to_string(e.function)), "6.4.4"},
+      {"output_delay_ms",
+       plain(e.output_delay_ms ? std::to_string(e.output_delay_ms) : "0 (none)"), "6.4.5, 13.2.2"},
+      {"soft_bypass_allowed", plain(yes_no(e.soft_bypass_allowed)), "6.4.5"},
+      {"bypass_tag", tag_or_none(e.bypass_tag), "6.4.5"},
+      {"reset_tag", tag_or_none(e.reset_tag), "6.4.5"},
+  };
+  if (e.override_time) {
+    r.push_back({"override.max_s", plain(std::to_string(e.override_time->max_s)), "6.5.2"});
+    r.push_back({"override.prealarm_s", plain(std::to_string(e.override_time->prealarm_s)), "6.5.2"});
+  } else {
+    r.push_back({"override", plain("none"), "6.5.2"});
+  }
+  if (e.process_data) {
+    r.push_back({"process_data.tag", tag_or_none(e.process_data->tag), "6.4.5, 13.2.5"});
+    r.push_back({"process_data.pass_through", plain(yes_no(e.process_data->pass_through)), "6.4.5, 13.2.5"});
+    r.push_back({"process_data.mask_tag", tag_or_none(e.process_data->mask_tag), "6.4.5, 13.2.5"});
+  } else {
+    r.push_back({"process_data", plain("none"), "6.4.5, 13.2.5"});
+  }
+  r.push_back({"mutually_locked_maintenance", plain(yes_no(e.mutually_locked_maintenance)), "6.4"});
+  r.push_back({"sif", plain(sif_list(e.sif)), "3.4"});
+  r.push_back({"note", plain(e.note.empty() ? "none" : e.note), ""});
+  return r;
+}
+
+Document build(const Matrix& m, const std::string& sig, const std::vector<Diagnostic>& diags) {
+  Document d;
+  d.title = "Configuration report: " + m.name;
+  const Statistics s = statistics(m);
+  std::size_t errors = 0, warnings = 0;
+  for (const auto& x : diags) (x.severity == Severity::Error ? errors : warnings)++;
+
+  d.h(1, d.title);
+  d.p({plain("Matrix signature (SHA-256 of the canonical form): "), code(sig)});
+  d.p("Configuration report of manual section 11.4, written by cemv from the canonical form of "
+      "the matrix. It carries no time stamp: the same matrix always gives the same report.");
+
+  d.h(2, "1 Properties", "properties");
+  d.table(field_table({
+      {"format", plain(kMatrixFormat), ""},
+      {"name", code(m.name), "11.4"},
+      {"title", plain(m.title.empty() ? "none" : m.title), "11.4"},
+      {"cycle_ms", plain(std::to_string(m.cycle_ms)), "11.4, 13"},
+      {"secure_write.enable_tag",
+       m.secure_write ? code(m.secure_write->enable_tag) : plain("not configured"), "3.4"},
+      {"group_deactivation.enable_tag",
+       m.group_deactivation ? code(m.group_deactivation->enable_tag) : plain("not configured"), "6.1.7"},
+      {"group_deactivation.set_tag",
+       m.group_deactivation ? code(m.group_deactivation->set_tag) : plain("not configured"), "6.1.7"},
+  }));
+
+  d.h(2, "2 Size and usage", "size");
+  {
+    Table t;
+    t.header = {"Element", "Configured", "Limit (3.4)"};
+    t.rows.push_back({plain("Causes (rows)"), plain(std::to_string(m.causes.size())),
+                      plain(std::to_string(kMaxCauses))});
+    t.rows.push_back({plain("Effects (columns)"), plain(std::to_string(m.effects.size())),
+                      plain(std::to_string(kMaxEffects))});
+    t.rows.push_back({plain("Intersections"), plain(std::to_string(m.intersections.size())),
+                      plain(std::to_string(kMaxIntersections))});
+    t.rows.push_back({plain("Matrix size"),
+                      plain(std::to_string(m.causes.size()) + " x " + std::to_string(m.effects.size())),
+                      plain(std::to_string(kMaxCauses) + " x " + std::to_string(kMaxEffects))});
+    d.table(t);
+  }
+  auto count_table = [&](const std::string& what, const std::map<std::string, int>& counts,
+                         const std::vector<std::string>& order, bool meanings) {
+    Table t;
+    t.header = meanings ? std::vector<std::string>{what, "Meaning (6.5.2)", "Count"}
+                        : std::vector<std::string>{what, "Count"};
+    for (const auto& k : order) {
+      std::vector<Text> row{code(k)};
+      if (meanings) row.push_back(plain(type_meaning(k)));
+      row.push_back(plain(std::to_string(counts.at(k))));
+      t.rows.push_back(row);
+    }
+    d.table(t);
+  };
+  count_table("Intersection type", s.by_type, {"N", "S", "V", "R", "X", "*"}, true);
+  count_table("Cause function type (3.4)", s.by_function, {"normal", "and", "or", "2oo3", "comment"}, false);
+  count_table("Cause input (6.3.4)", s.by_input, {"discrete", "analog"}, false);
+  count_table("Cause time response (13.1.1)", s.by_time, {"none", "on_delay", "off_delay", "timed"}, false);
+  count_table("Cause bad quality handling (6.1.6)", s.by_bad_quality, {"ignore", "trip", "degrade"}, false);
+  count_table("Effect function type (6.4.4)", s.by_effect_function, {"normal", "comment"}, false);
+  {
+    Table t;
+    t.header = {"Tags", "Count"};
+    auto row = [&](const std::string& what, std::size_t n) {
+      t.rows.push_back({plain(what), plain(std::to_string(n))});
+    };
+    row("Cause input tags (1-3 per cause)", static_cast<std::size_t>(s.cause_tags));
+    row("Effect output tags (1-4 per effect)", static_cast<std::size_t>(s.effect_tags));
+    row("Internal references among the input tags (6.1.3)", static_cast<std::size_t>(s.internal_refs));
+    row("Distinct external input tags the matrix reads", s.external_inputs);
+    row("Cause bypass tags", static_cast<std::size_t>(s.bypass_tags));
+    row("Cause inhibit tags", static_cast<std::size_t>(s.inhibit_tags));
+    row("Effect bypass tags", static_cast<std::size_t>(s.effect_bypass_tags));
+    row("Effect reset tags", static_cast<std::size_t>(s.reset_tags));
+    row("Effects with an XooN assignment", static_cast<std::size_t>(s.xoon_effects));
+    row("Intersections with a note", static_cast<std::size_t>(s.noted_intersections));
+    row("First-out groups used", s.first_out_groups.size());
+    row("SIF groups defined", m.sif_groups.size());
+    d.table(t);
+  }
+
+  d.h(2, "3 Validation summary", "validation");
+  d.p("Plausibility check of 11.5 (cemv validate): " + std::to_string(errors) + " error(s), " +
+      std::to_string(warnings) + " warning(s).");
+  if (!diags.empty()) {
+    Table t;
+    t.header = {"Severity", "Rule", "Element", "Manual", "Message"};
+    for (const auto& x : diags)
+      t.rows.push_back({plain(x.severity == Severity::Error ? "error" : "warning"), code(x.rule),
+                        plain(x.element), plain(x.section), plain(x.message)});
+    d.table(t);
+  }
+
+  d.h(2, "4 SIF groups", "sif");
+  {
+    std::set<int> groups(s.sif_used);
+    for (const auto& [g, name] : m.sif_groups) groups.insert(g);
+    if (groups.empty()) {
+      d.p("No safety instrumented function groups are configured.");
+    } else {
+      Table t;
+      t.header = {"Group", "Name", "Causes", "Effects"};
+      for (int g : groups) {
+        std::string causes, effects;
+        for (const auto& c : m.causes)
+          for (int x : c.sif)
+            if (x == g) join_to(causes, ", ", std::to_string(c.id) + " " + c.name);
+        for (const auto& e : m.effects)
+          for (int x : e.sif)
+            if (x == g) join_to(effects, ", ", std::to_string(e.id) + " " + e.name);
+        auto name = m.sif_groups.find(g);
+        t.rows.push_back({plain(std::to_string(g)),
+                          plain(name != m.sif_groups.end() ? name->second : "(not defined)"),
+                          plain(causes.empty() ? "none" : causes), plain(effects.empty() ? "none" : effects)});
+      }
+      d.table(t);
+    }
+  }
+
+  d.h(2, "5 First-out groups", "first-out");
+  if (s.first_out_groups.empty()) {
+    d.p("No cause belongs to a first-out group.");
+  } else {
+    Table t;
+    t.header = {"Group", "Causes"};
+    for (int g : s.first_out_groups) {
+      std::string causes;
+      for (const auto& c : m.causes)
+        if (c.first_out_group == g) join_to(causes, ", ", std::to_string(c.id) + " " + c.name);
+      t.rows.push_back({plain(std::to_string(g)), plain(causes)});
+    }
+    d.table(t);
+  }
+
+  d.h(2, "6 Causes", "causes");
+  if (m.causes.empty()) d.p("No causes.");
+  for (const auto& c : m.causes) {
+    d.h(3, "Cause " + std::to_string(c.id) + ": " + c.name, "cause-" + std::to_string(c.id));
+    d.table(field_table(cause_fields_of(c)));
+    Table tags;
+    tags.header = {"Tag", "Name", "Energize-to-trip (6.3.4)", "Soft bypass allowed (6.3.6)"};
+    for (std::size_t k = 0; k < c.tags.size(); ++k)
+      tags.rows.push_back({plain(std::to_string(k + 1)), code(c.tags[k].name), plain(yes_no(c.tags[k].ett)),
+                           plain(yes_no(c.tags[k].soft_bypass_allowed))});
+    if (tags.rows.empty()) d.p("No input tags.");
+    else d.table(tags);
+    std::string xs;
+    for (const auto* x : m.intersections_of_cause(c.id)) {
+      const Effect* e = m.find_effect(x->effect);
+      join_to(xs, ", ", "effect " + std::to_string(x->effect) + " " + (e ? e->name : "?") + " (" +
+                            cell_text(m, *x) + ")");
+    }
+    d.p("Intersections: " + (xs.empty() ? std::string("none") : xs) + ".");
+  }
+
+  d.h(2, "7 Effects", "effects");
+  if (m.effects.empty()) d.p("No effects.");
+  for (const auto& e : m.effects) {
+    d.h(3, "Effect " + std::to_string(e.id) + ": " + e.name, "effect-" + std::to_string(e.id));
+    d.table(field_table(effect_fields_of(e)));
+    Table tags;
+    tags.header = {"Tag", "Name", "Energize-to-trip (6.4.4)"};
+    for (std::size_t k = 0; k < e.tags.size(); ++k)
+      tags.rows.push_back({plain(std::to_string(k + 1)), code(e.tags[k].name), plain(yes_no(e.tags[k].ett))});
+    if (tags.rows.empty()) d.p("No output tags.");
+    else d.table(tags);
+    std::string xs;
+    for (const auto* x : m.intersections_of_effect(e.id)) {
+      const Cause* c = m.find_cause(x->cause);
+      join_to(xs, ", ", "cause " + std::to_string(x->cause) + " " + (c ? c->name : "?") + " (" +
+                            cell_text(m, *x) + ")");
+    }
+    d.p("Intersections: " + (xs.empty() ? std::string("none") : xs) + ".");
+  }
+
+  d.h(2, "8 Intersections", "intersections");
+  if (m.intersections.empty() || m.effects.empty() || m.causes.empty()) {
+    d.p("No intersections.");
+  } else {
+    d.p("The grid: one row per cause, one column per effect (by id); a cell shows the "
+        "intersection type (6.5.2) and, for an XooN assignment, XooN; '+' marks a note. "
+        "The list below gives every intersection with its note.");
+    Table grid;
+    grid.grid = true;
+    grid.header = {"Cause \\ Effect"};
+    for (const auto& e : m.effects) grid.header.push_back(std::to_string(e.id) + " " + e.name);
+    for (const auto& c : m.causes) {
+      std::vector<Text> row{plain(std::to_string(c.id) + " " + c.name)};
+      for (const auto& e : m.effects) {
+        const Intersection* x = m.find_intersection(c.id, e.id);
+        Text t;
+        if (x) {
+          t.text = cell_text(m, *x);
+          if (!x->note.empty()) t.text += "+";
+          std::string type = to_string(x->type);
+          t.css = "t-" + std::string(type == "*" ? "note" : type);
+        }
+        row.push_back(t);
+      }
+      grid.rows.push_back(row);
+    }
+    d.table(grid);
+    Table list;
+    list.header = {"Cause", "Effect", "Type", "XooN", "Note"};
+    for (const auto& x : m.intersections) {
+      const Cause* c = m.find_cause(x.cause);
+      const Effect* e = m.find_effect(x.effect);
+      std::string xoon = "none";
+      if (x.xoon) {
+        std::string t = cell_text(m, x);
+        xoon = t.substr(t.find(' ') + 1);
+      }
+      list.rows.push_back({plain(std::to_string(x.cause) + " " + (c ? c->name : "?")),
+                           plain(std::to_string(x.effect) + " " + (e ? e->name : "?")),
+                           code(to_string(x.type)), plain(xoon), plain(x.note.empty() ? "none" : x.note)});
+    }
+    d.table(list);
+  }
+
+  d.h(2, "Signature", "signature");
+  d.p({plain("End of the configuration report of "), code(m.name), plain(". Matrix signature: "),
+       code(sig)});
+  return d;
+}
+
+// ---- Markdown ------------------------------------------------------------------------------
+
+std::string md_escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '\\': case '`': case '*': case '_': case '[': case ']': case '<': case '>': case '|':
+      case '#':
+        out += '\\';
+        out += c;
+        break;
+      case '\r': break;
+      case '\n': out += "<br>"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+std::string md_text(const Text& t) {
+  if (t.code && !t.text.empty() && t.text.find_first_of("`|\n\r") == std::string::npos)
+    return "`" + t.text + "`";
+  return md_escape(t.text);
+}
+
+std::string render_markdown(const Document& d) {
+  std::string out;
+  for (const auto& b : d.blocks) {
+    if (b.kind == Block::Kind::Heading) {
+      const Heading* h = &b.heading;
+      out += std::string(static_cast<std::size_t>(h->level), '#') + " " + md_escape(h->text) + "\n\n";
+    } else if (b.kind == Block::Kind::Paragraph) {
+      const Paragraph* p = &b.paragraph;
+      for (const auto& t : p->parts) out += md_text(t);
+      out += "\n\n";
+    } else {
+      const Table* t = &b.table;
+      out += "|";
+      for (const auto& h : t->header) {
+        out += ' ';
+        out += md_escape(h);
+        out += " |";
+      }
+      out += "\n|";
+      for (std::size_t i = 0; i < t->header.size(); ++i) out += t->grid && i ? ":-:|" : "---|";
+      out += "\n";
+      for (const auto& row : t->rows) {
+        out += "|";
+        for (const auto& cell : row) {
+          out += ' ';
+          out += md_text(cell);
+          out += " |";
+        }
+        out += "\n";
+      }
+      out += "\n";
+    }
+  }
+  return out;
+}
+
+// ---- HTML ----------------------------------------------------------------------------------
+
+std::string html_escape(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&#39;"; break;
+      case '\r': break;
+      case '\n': out += "<br>"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+std::string html_text(const Text& t) {
+  return t.code ? "<code>" + html_escape(t.text) + "</code>" : html_escape(t.text);
+}
+
+const char* kCss = R"(body{font-family:sans-serif;margin:2em;color:#111;line-height:1.4}
+h1{font-size:1.6em}h2{font-size:1.3em;border-bottom:1px solid #999;margin-top:2em}h3{font-size:1.1em}
+table{border-collapse:collapse;margin:0.5em 0 1em 0}
+th,td{border:1px solid #999;padding:2px 6px;text-align:left;vertical-align:top}
+th{background:#eee}code{font-family:monospace;background:#f4f4f4}
+table.grid td,table.grid th{text-align:center;font-family:monospace;min-width:2em}
+table.grid th{writing-mode:vertical-rl;transform:rotate(180deg);white-space:nowrap}
+table.grid th:first-child,table.grid td:first-child{writing-mode:horizontal-tb;transform:none;text-align:left}
+td.t-N{background:#fde2e2}td.t-S{background:#fbc4a0}td.t-V{background:#fff3b0}
+td.t-R{background:#e3c6f5}td.t-X{background:#ff6b6b;font-weight:bold}td.t-note{background:#ddd}
+p.sig code{font-size:0.9em}
+@media print{body{margin:0}h2{page-break-after:avoid}}
+)";
+
+std::string render_html(const Document& d) {
+  std::string out =
+      "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" +
+      html_escape(d.title) + "</title>\n<style>\n" + kCss + "</style>\n</head>\n<body>\n";
+  for (const auto& b : d.blocks) {
+    if (b.kind == Block::Kind::Heading) {
+      const Heading* h = &b.heading;
+      std::string lvl = std::to_string(h->level);
+      out += "<h" + lvl;
+      if (!h->anchor.empty()) out += " id=\"" + html_escape(h->anchor) + "\"";
+      out += ">" + html_escape(h->text) + "</h" + lvl + ">\n";
+    } else if (b.kind == Block::Kind::Paragraph) {
+      const Paragraph* p = &b.paragraph;
+      out += "<p>";
+      for (const auto& t : p->parts) out += html_text(t);
+      out += "</p>\n";
+    } else {
+      const Table* t = &b.table;
+      out += t->grid ? "<table class=\"grid\">\n<tr>" : "<table>\n<tr>";
+      for (const auto& h : t->header) out += "<th>" + html_escape(h) + "</th>";
+      out += "</tr>\n";
+      for (const auto& row : t->rows) {
+        out += "<tr>";
+        for (const auto& cell : row)
+          out += (cell.css.empty() ? std::string("<td>") : "<td class=\"" + html_escape(cell.css) + "\">") +
+                 html_text(cell) + "</td>";
+        out += "</tr>\n";
+      }
+      out += "</table>\n";
+    }
+  }
+  out += "</body>\n</html>\n";
+  return out;
+}
+
+// ---- JSON ----------------------------------------------------------------------------------
+
+using ojson = nlohmann::ordered_json;
+
+ojson counts_json(const std::map<std::string, int>& counts, const std::vector<std::string>& order) {
+  ojson j = ojson::object();
+  for (const auto& k : order) j[k] = counts.at(k);
+  return j;
+}
+
+std::string render_json(const Matrix& m, const std::string& sig, const std::vector<Diagnostic>& diags) {
+  const Statistics s = statistics(m);
+  ojson j;
+  j["format"] = "cemv-report/1";
+  j["report"] = "configuration";
+  j["signature"] = sig;
+  j["properties"] = {
+      {"name", m.name},
+      {"title", m.title},
+      {"cycle_ms", m.cycle_ms},
+      {"secure_write_enable_tag", m.secure_write ? ojson(m.secure_write->enable_tag) : ojson(nullptr)},
+      {"group_deactivation_enable_tag",
+       m.group_deactivation ? ojson(m.group_deactivation->enable_tag) : ojson(nullptr)},
+      {"group_deactivation_set_tag",
+       m.group_deactivation ? ojson(m.group_deactivation->set_tag) : ojson(nullptr)},
+  };
+  ojson st;
+  st["causes"] = {{"configured", m.causes.size()}, {"limit", kMaxCauses}};
+  st["effects"] = {{"configured", m.effects.size()}, {"limit", kMaxEffects}};
+  st["intersections"] = {{"configured", m.intersections.size()}, {"limit", kMaxIntersections}};
+  st["intersection_types"] = counts_json(s.by_type, {"N", "S", "V", "R", "X", "*"});
+  st["cause_functions"] = counts_json(s.by_function, {"normal", "and", "or", "2oo3", "comment"});
+  st["cause_inputs"] = counts_json(s.by_input, {"discrete", "analog"});
+  st["cause_time_modes"] = counts_json(s.by_time, {"none", "on_delay", "off_delay", "timed"});
+  st["cause_bad_quality"] = counts_json(s.by_bad_quality, {"ignore", "trip", "degrade"});
+  st["effect_functions"] = counts_json(s.by_effect_function, {"normal", "comment"});
+  st["tags"] = {
+      {"cause_input_tags", s.cause_tags},
+      {"effect_output_tags", s.effect_tags},
+      {"internal_references", s.internal_refs},
+      {"external_inputs", s.external_inputs},
+      {"cause_bypass_tags", s.bypass_tags},
+      {"cause_inhibit_tags", s.inhibit_tags},
+      {"effect_bypass_tags", s.effect_bypass_tags},
+      {"effect_reset_tags", s.reset_tags},
+  };
+  st["xoon_effects"] = s.xoon_effects;
+  st["noted_intersections"] = s.noted_intersections;
+  st["first_out_groups_used"] = s.first_out_groups.size();
+  st["sif_groups_defined"] = m.sif_groups.size();
+  j["statistics"] = st;
+
+  std::size_t errors = 0, warnings = 0;
+  ojson list = ojson::array();
+  for (const auto& x : diags) {
+    (x.severity == Severity::Error ? errors : warnings)++;
+    list.push_back({{"severity", x.severity == Severity::Error ? "error" : "warning"},
+                    {"rule", x.rule},
+                    {"element", x.element},
+                    {"section", x.section},
+                    {"message", x.message}});
+  }
+  j["validation"] = {{"errors", errors}, {"warnings", warnings}, {"diagnostics", list}};
+
+  std::set<int> groups(s.sif_used);
+  for (const auto& [g, name] : m.sif_groups) groups.insert(g);
+  ojson sif = ojson::array();
+  for (int g : groups) {
+    ojson causes = ojson::array(), effects = ojson::array();
+    for (const auto& c : m.causes)
+      for (int x : c.sif)
+        if (x == g) causes.push_back(c.id);
+    for (const auto& e : m.effects)
+      for (int x : e.sif)
+        if (x == g) effects.push_back(e.id);
+    auto name = m.sif_groups.find(g);
+    sif.push_back({{"group", g},
+                   {"name", name != m.sif_groups.end() ? ojson(name->second) : ojson(nullptr)},
+                   {"causes", causes},
+                   {"effects", effects}});
+  }
+  j["sif_groups"] = sif;
+  ojson first_out = ojson::array();
+  for (int g : s.first_out_groups) {
+    ojson causes = ojson::array();
+    for (const auto& c : m.causes)
+      if (c.first_out_group == g) causes.push_back(c.id);
+    first_out.push_back({{"group", g}, {"causes", causes}});
+  }
+  j["first_out_groups"] = first_out;
+  ojson grid = ojson::array();
+  for (const auto& c : m.causes) {
+    std::string row;
+    for (const auto& e : m.effects) {
+      const Intersection* x = m.find_intersection(c.id, e.id);
+      row += x ? to_string(x->type) : ".";
+    }
+    grid.push_back({{"cause", c.id}, {"cells", row}});
+  }
+  j["grid"] = {{"effects", [&] {
+                  ojson ids = ojson::array();
+                  for (const auto& e : m.effects) ids.push_back(e.id);
+                  return ids;
+                }()},
+               {"rows", grid}};
+  // Every cause, effect and intersection with every field, exactly as the
+  // canonical form writes them (the text the signature is computed over).
+  j["matrix"] = ojson::parse(to_canonical_json(m));
+  j["signature_end"] = sig;
+  return j.dump(2, ' ', false, ojson::error_handler_t::replace) + "\n";
+}
+
+}  // namespace
+
+std::optional<ReportFormat> report_format_from_string(std::string_view name) {
+  if (name == "md" || name == "markdown") return ReportFormat::Markdown;
+  if (name == "html") return ReportFormat::Html;
+  if (name == "json") return ReportFormat::Json;
+  return std::nullopt;
+}
+
+std::string configuration_report(const Matrix& m, ReportFormat format) {
+  const std::string sig = signature(m);
+  const std::vector<Diagnostic> diags = validate(m);
+  if (format == ReportFormat::Json) return render_json(m, sig, diags);
+  Document d = build(m, sig, diags);
+  return format == ReportFormat::Html ? render_html(d) : render_markdown(d);
+}
+
+}  // namespace cemv::model

@@ -1,0 +1,89 @@
+// Spreadsheet import and export (6.6, bulk data engineering), docs/csv.md.
+//
+// Two layouts:
+//  - the record layout `cemv-csv/1`: one RFC 4180 file, one record per row, the
+//    first column naming the record type (property, sif_group, cause, cause_tag,
+//    effect, effect_tag, intersection), each type with its own header row. It holds
+//    every field of cemv-matrix/1, so export then import is lossless.
+//  - the grid layout of real C&E spreadsheets (e.g. the LSST TMA interlock table):
+//    a row of effect descriptions, a row of effect ids, then per cause its
+//    description, its id and one cell per effect (N/S/V/R/X/* with optional
+//    footnotes like `R(1)`). Imported as it is: defects become warnings with line
+//    and column, and no safety parameter the grid does not state is invented.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "model/format.hpp"
+#include "model/matrix.hpp"
+
+namespace cemv::model {
+
+inline constexpr const char* kCsvLayout = "cemv-csv/1";
+
+// ---- RFC 4180 reading -------------------------------------------------------
+
+struct CsvField {
+  std::string text;
+  int line = 0;     // 1-based physical line where the field starts
+  int column = 0;   // 1-based field number within its record
+  bool quoted = false;
+};
+
+struct CsvRecord {
+  int line = 0;     // 1-based physical line where the record starts
+  std::vector<CsvField> fields;
+};
+
+// Splits text into records (RFC 4180: `"` quoting with `""` escapes, records
+// ending in CRLF or LF, line breaks allowed inside quoted fields, a UTF-8 BOM
+// skipped). Strict mode rejects a quote inside an unquoted field and text after a
+// closing quote; lenient mode (for hand-made grids) keeps them literally. An
+// unterminated quote is always an error. Errors are LoadIssues at `line L,
+// column C`; reading continues so every error is reported; throws LoadError.
+std::vector<CsvRecord> parse_csv(std::string_view text, char separator, bool strict,
+                                 const std::string& source_name = "");
+
+// One field as RFC 4180 writes it: quoted when it holds the separator, a quote,
+// CR/LF, or leading/trailing blanks; quotes doubled.
+std::string csv_quote(std::string_view field, char separator = ',');
+
+// ---- The record layout --------------------------------------------------------
+
+// The whole matrix as a `cemv-csv/1` file (CRLF line ends, deterministic).
+std::string export_csv(const Matrix& m);
+
+// ---- Import -------------------------------------------------------------------
+
+enum class CsvLayoutKind { Auto, Records, Grid };
+
+struct CsvImportOptions {
+  CsvLayoutKind layout = CsvLayoutKind::Auto;
+  char separator = 0;  // grid layout only; 0 = detect from the header rows
+  // Grid layout only: the matrix name (6.1.2: at most 16 characters); empty =
+  // the sanitized file stem.
+  std::string matrix_name;
+};
+
+struct CsvImportResult {
+  Matrix matrix;                    // already checked by parse_matrix
+  std::vector<LoadIssue> warnings;  // in file order
+  CsvLayoutKind layout = CsvLayoutKind::Records;
+};
+
+// Reads either layout (Auto: the record layout when the first cell is one of its
+// record types or headers, e.g. `#property`, else the grid). `source_name` names the input in messages, and
+// for the grid gives the matrix its name and title (its file stem). Throws
+// LoadError (line/column) when the text cannot be read as a matrix.
+CsvImportResult import_csv(std::string_view text, const std::string& source_name,
+                           const CsvImportOptions& options = {});
+
+// The grid's identifier rule: letters, digits and `_` only, no leading, trailing
+// or repeated `_` (6.1.4 chart-name rules, which also satisfy the element-name
+// rule), at most max_length characters. `TMA-D-1` -> `TMA_D_1`. Empty when
+// nothing is left.
+std::string sanitize_identifier(std::string_view text, std::size_t max_length);
+
+}  // namespace cemv::model

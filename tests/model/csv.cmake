@@ -1,0 +1,45 @@
+# Spreadsheet import/export (6.6, docs/csv.md).
+add_executable(test_model_csv ${CMAKE_CURRENT_LIST_DIR}/test_csv.cpp ${CMAKE_CURRENT_LIST_DIR}/test_csv_grid.cpp)
+target_link_libraries(test_model_csv PRIVATE cemv_model GTest::gtest_main)
+target_compile_definitions(test_model_csv PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+gtest_discover_tests(test_model_csv DISCOVERY_MODE PRE_TEST)
+
+# The command line: exit statuses and messages (cwd = repo root).
+set(CSV_CASES tests/model/csv_cases)
+set(LSST ${CSV_CASES}/lsst/lsst-tma-interlock-table.csv)
+set(CSV_TMP ${CMAKE_CURRENT_BINARY_DIR}/csv_cli)
+file(MAKE_DIRECTORY ${CSV_TMP})
+cemv_cli_test(NAME cli_import_csv_lsst EXIT 0
+  MATCH "line 35, column 2: cause id 'TMA-D-40' repeats line 25.*kept as separate causes"
+  COMMAND $<TARGET_FILE:cemv> import-csv ${LSST} -o ${CSV_TMP}/lsst.json)
+cemv_cli_test(NAME cli_import_csv_lsst_stdout EXIT 0
+  MATCH "\"name\": \"TMA_D_40_2\""
+  COMMAND $<TARGET_FILE:cemv> import-csv ${LSST})
+# What the grid does not state, validate reports: the override time of each effect with R.
+cemv_cli_test(NAME cli_import_csv_lsst_validate EXIT 1
+  MATCH "TMA_A_1 .*override.*TMA_A_2 .*override.*TMA_A_4 .*override.*TMA_A_5 .*override"
+  COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/csv_cases/cli_import_then_validate.sh $<TARGET_FILE:cemv> ${LSST} ${CSV_TMP}/validate)
+cemv_cli_test(NAME cli_import_csv_forced_grid EXIT 0 MATCH "effect id 'TMA-A-17' out of order"
+  COMMAND $<TARGET_FILE:cemv> import-csv --layout grid ${LSST} -o ${CSV_TMP}/lsst3.json)
+cemv_cli_test(NAME cli_import_csv_separator_option EXIT 0 MATCH "\"name\": \"E_2\""
+  COMMAND $<TARGET_FILE:cemv> import-csv --separator tab ${CSV_CASES}/tab_grid.tsv)
+cemv_cli_test(NAME cli_import_csv_missing_file EXIT 2 MATCH "error: .*no_such_file.csv"
+  COMMAND $<TARGET_FILE:cemv> import-csv ${CSV_CASES}/no_such_file.csv)
+cemv_cli_test(NAME cli_import_csv_unterminated_quote EXIT 2
+  MATCH "error: tests/model/csv_cases/bad_unterminated_quote.csv: line 3, column 3: quoted field never closed"
+  COMMAND $<TARGET_FILE:cemv> import-csv ${CSV_CASES}/bad_unterminated_quote.csv)
+cemv_cli_test(NAME cli_import_csv_bad_values EXIT 2
+  MATCH "line 6, column 4: type: 'Z' is not one of"
+  COMMAND $<TARGET_FILE:cemv> import-csv ${CSV_CASES}/bad_values.csv)
+cemv_cli_test(NAME cli_import_csv_not_a_grid EXIT 2 MATCH "not a C&E grid"
+  COMMAND $<TARGET_FILE:cemv> import-csv ${CSV_CASES}/not_a_grid.csv)
+cemv_cli_test(NAME cli_import_csv_bad_layout EXIT 2 MATCH "layout"
+  COMMAND $<TARGET_FILE:cemv> import-csv --layout sideways ${LSST})
+cemv_cli_test(NAME cli_export_csv_missing_file EXIT 2 MATCH "error:"
+  COMMAND $<TARGET_FILE:cemv> export-csv ${CSV_CASES}/no_such_matrix.json)
+# Export, import, export again: byte-identical CSV, and the same canonical matrix.
+foreach(example tank-overfill burner-management pipeline-hipps compressor)
+  cemv_cli_test(NAME cli_csv_round_trip_${example} EXIT 0 MATCH "round trip identical"
+    COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/csv_cases/cli_round_trip.sh $<TARGET_FILE:cemv>
+            examples/${example}/matrix.json ${CSV_TMP}/round_trip)
+endforeach()
