@@ -168,7 +168,11 @@ void DependencyGraph::Impl::build(const Matrix& m) {
     if (e.function != EffectFunction::Comment) nodes.push_back({Node::Kind::Effect, e.id});
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-  for (const auto& n : nodes) boost::add_vertex(VertexProps{n}, g);
+  // Sized construction, then the bundles: add_vertex(property, g) goes through
+  // Boost's named-graph lookup, which GCC's sanitizer builds flag as
+  // maybe-uninitialized.
+  g = Graph(nodes.size());
+  for (Vertex v = 0; v < nodes.size(); ++v) g[v].node = nodes[v];
 
   // One edge per (kind, from, to): a repeated intersection or two references to
   // the same element carry the same data dependency.

@@ -427,9 +427,16 @@ class Validator {
     has_svr = has_v_or_r || has_s_or_r;
     std::uint32_t max_s = e.override_time ? e.override_time->max_s : 0;
     std::uint32_t prealarm_s = e.override_time ? e.override_time->prealarm_s : 0;
-    if (has_v_or_r && max_s == 0)
+    if (has_v_or_r && max_s == 0) {
+      std::string links;
+      for (const auto* x : links_of_effect(e.id))
+        if (x->type == IntersectionType::V || x->type == IntersectionType::R)
+          links += (links.empty() ? "" : ", ") + std::string(to_string(x->type)) + " from cause[" +
+                   std::to_string(x->cause) + "]";
       add("E-OVERRIDE-TIME-MISSING", w,
-          "the effect has V or R intersections but no maximum override time (override.max_s)");
+          "the effect has V or R intersections (" + links +
+              ") but no maximum override time (override.max_s)");
+    }
     if (!has_v_or_r && e.override_time && (max_s != 0 || prealarm_s != 0))
       add("W-OVERRIDE-UNUSED", w,
           "override.max_s = " + std::to_string(max_s) +
@@ -747,6 +754,15 @@ class Validator {
     }
     for (const auto& r : internal_references(m_))
       if (r.source.kind == Node::Kind::Cause) cause_read.insert(r.source.id);
+    auto matrix_read = [&](const std::string& tag) {
+      if (auto ref = parse_internal_ref(tag); ref && ref->kind == InternalRef::Kind::Cause)
+        cause_read.insert(ref->id);
+    };
+    if (m_.secure_write) matrix_read(m_.secure_write->enable_tag);
+    if (m_.group_deactivation) {
+      matrix_read(m_.group_deactivation->enable_tag);
+      matrix_read(m_.group_deactivation->set_tag);
+    }
     for (const auto& c : m_.causes)
       if (processed(c) && !cause_linked.count(c.id) && !cause_read.count(c.id))
         add("W-CAUSE-UNUSED", at(c),

@@ -411,6 +411,17 @@ const std::vector<RuleCase>& rule_cases() {
          resort(m);
        },
        "cause[5] SPARE"},
+      {"CauseReadByMatrixTag", "W-CAUSE-UNUSED",
+       [](Matrix& m) {
+         m.causes.push_back(discrete_cause(5, "KEY_SWITCH", "ZS_500"));
+         resort(m);
+       },
+       [](Matrix& m) {
+         m.causes.push_back(discrete_cause(5, "KEY_SWITCH", "ZS_500"));
+         m.group_deactivation->enable_tag = "Cause[5]";
+         resort(m);
+       },
+       "cause[5] KEY_SWITCH"},
       {"CauseOnlyNote", "W-CAUSE-UNUSED",
        [](Matrix& m) {
          add_linked_cause(m, discrete_cause(5, "SPARE", "ZS_500"), 3);
