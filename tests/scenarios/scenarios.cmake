@@ -6,7 +6,7 @@
 set(CEMV_SCEN ${CMAKE_CURRENT_LIST_DIR})
 
 # scenario file (without .json) -> matrix in matrices/ (without .json)
-set(cemv_chapter13_scenarios
+set(cemv_chapter13_scenarios  # and the other rules of issue 3 section 3, issue3_*
   13_1_1_on_delay_bullets1_2_4_delayed_activation:ch13_causes
   13_1_1_on_delay_bullets3_5_canceled:ch13_causes
   13_1_1_off_delay_bullets1_2_4_active_for_the_delay:ch13_causes
@@ -53,6 +53,15 @@ set(cemv_chapter13_scenarios
   13_2_5_table_row3_pass_through_item1:ch13_process_data
   13_2_5_table_row4_pass_through_and_mask_items1_2:ch13_process_data
   13_2_5_pass_through_with_output_delay:ch13_process_data
+  # issue 3 section 3 rules beyond chapter 13
+  issue3_first_out:issue3_rules
+  issue3_prewarning_and_delta_alarm:issue3_rules
+  issue3_xoon_assignment:issue3_rules
+  issue3_internal_references:issue3_rules
+  issue3_simulation:issue3_rules
+  issue3_mutually_locked_maintenance:issue3_rules
+  issue3_group_deactivation:issue3_rules
+  issue3_secure_write:issue3_secure_write
 )
 foreach(entry ${cemv_chapter13_scenarios})
   string(REPLACE ":" ";" parts ${entry})
