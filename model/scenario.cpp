@@ -143,6 +143,14 @@ class Parser {
                 "the scenario exceeds " + std::to_string(kMaxScenarioCycles) + " cycles in total");
           break;
         }
+        std::uint64_t width = std::max<std::uint64_t>(1, table_.size());
+        if (total * width > kMaxScenarioTagValues) {
+          error("steps[" + std::to_string(i) + "]",
+                "the scenario is too long for this matrix: " + std::to_string(total) + " cycles x " +
+                    std::to_string(width) + " input tags exceed " +
+                    std::to_string(kMaxScenarioTagValues) + " input values");
+          break;
+        }
       }
     }
     finish();

@@ -26,6 +26,8 @@ inline constexpr const char* kScenarioFormat = "cemv-scenario/1";
 
 // Guard against scenarios that would expand to an unreasonable trace.
 inline constexpr std::uint64_t kMaxScenarioCycles = 1'000'000;
+// ... and against an expansion too large for memory: cycles x input tags.
+inline constexpr std::uint64_t kMaxScenarioTagValues = 32'000'000;
 
 // One input assignment: the tag (index into InputTable), and what is set. A
 // plain value sets the value and good quality; {"value","quality"} may set

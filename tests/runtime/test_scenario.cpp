@@ -237,3 +237,22 @@ TEST(ScenarioDefaults, AgreeWithTheRuntime) {
 
 }  // namespace
 }  // namespace cemv::testing
+
+namespace cemv::testing {
+namespace {
+
+// The expansion holds one frame per cycle: a long scenario on a wide matrix is
+// refused with a message instead of exhausting memory.
+TEST(ScenarioParse, RefusesExpansionsTooLargeForMemory) {
+  Matrix m;
+  m.name = "WIDE";
+  for (int i = 1; i <= 40; ++i) m.causes.push_back(make_cause(i, CauseFunction::Or, 3, Kind::DiscreteDtt));
+  EXPECT_EQ(InputTable(m).size(), 120u);
+  std::string msg = first_issue(R"({"format":"cemv-scenario/1","steps":[{"cycles":300000}]})", m);
+  EXPECT_EQ(msg, "steps[0]: the scenario is too long for this matrix: 300000 cycles x 120 input tags "
+                 "exceed 32000000 input values");
+  EXPECT_EQ(first_issue(R"({"format":"cemv-scenario/1","steps":[{"cycles":200000}]})", m), "(accepted)");
+}
+
+}  // namespace
+}  // namespace cemv::testing
