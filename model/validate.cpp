@@ -70,6 +70,7 @@ const std::vector<RuleInfo> kRules = {
     {"E-XOON-RANGE", E, "6.5.2", "the X of an XooN assignment is outside 2-15"},
     {"W-ACK-NO-EFFECT", W, "6.3.6", "manual acknowledgement (auto_ack false) has no effect with an OFF delay or a timed cause"},
     {"W-ANALOG-UNUSED", W, "6.3.5", "a discrete cause has analog parameters, which are ignored"},
+    {"W-BAD-QUALITY-IGNORED", W, "6.3.6", "bad quality is ignored where the channel driver's substitute value 0.0 / FALSE does not trip: a channel fault goes unnoticed"},
     {"W-CAUSE-SELF-BYPASS", W, "6.3.6", "a cause's bypass or inhibit tag is one of its own input tags"},
     {"W-CAUSE-UNUSED", W, "11.5", "a cause has no intersection and no internal reference reads it"},
     {"W-DELTA-HYSTERESIS", W, "6.3.5", "hysteresis >= delta: the discrepancy alarm can never clear"},
@@ -345,6 +346,25 @@ class Validator {
       add("W-ACK-NO-EFFECT", w,
           std::string("auto_ack is false but time.mode is ") + to_string(c.time.mode) +
               ": acknowledgement applies only with none or on_delay");
+
+    // 6.3.6 note on 'Ignore "Bad Quality"': the F-channel drivers deliver the
+    // substitute value 0.0 (FALSE) on a channel fault. Where that value is not
+    // a trip, ignoring bad quality hides a failed sensor.
+    if (c.bad_quality == BadQuality::Ignore) {
+      if (c.input == InputKind::Analog && c.analog && c.analog->limit_type == LimitType::High &&
+          c.analog->limit > 0.0f)
+        add("W-BAD-QUALITY-IGNORED", w,
+            "bad_quality is ignore: on a channel fault the substitute value 0.0 stays below the "
+            "high limit " + num(c.analog->limit) + ", so a failed sensor never trips the cause");
+      if (c.input == InputKind::Discrete)
+        for (std::size_t i = 0; i < c.tags.size(); ++i)
+          if (c.tags[i].ett && !parse_internal_ref(c.tags[i].name))
+            add("W-BAD-QUALITY-IGNORED", w,
+                "bad_quality is ignore: input tag " + std::to_string(i + 1) + " " +
+                    quoted(c.tags[i].name) +
+                    " is energize-to-trip, so the substitute value FALSE of a channel fault "
+                    "never trips it");
+    }
 
     // Soft bypass of the whole cause (6.3.6).
     const auto& sb = c.soft_bypass;

@@ -396,6 +396,25 @@ const std::vector<RuleCase>& rule_cases() {
       {"AnalogUnused", "W-ANALOG-UNUSED",
        [](Matrix& m) { cause(m, 2).analog = analog(LimitType::Low, 1, 0, std::nullopt, 0); }, nothing,
        "cause[2] PSH_200"},
+      {"BadQualityIgnoredHighLimit", "W-BAD-QUALITY-IGNORED",
+       [](Matrix& m) { cause(m, 1).bad_quality = BadQuality::Ignore; },
+       [](Matrix& m) {
+         cause(m, 1).bad_quality = BadQuality::Ignore;  // a low limit >= 0 trips on 0.0
+         auto& a = *cause(m, 1).analog;
+         a.limit_type = LimitType::Low;
+         a.limit = 10;
+         a.prewarning = 12;
+       },
+       "cause[1] LT100_HH"},
+      {"BadQualityIgnoredEtt", "W-BAD-QUALITY-IGNORED",
+       [](Matrix& m) {
+         cause(m, 3).bad_quality = BadQuality::Ignore;
+         cause(m, 3).tags[1].ett = true;
+       },
+       [](Matrix& m) {
+         cause(m, 3).bad_quality = BadQuality::Ignore;  // DTT: FALSE is a trip
+       },
+       "cause[3] XS_300"},
       {"SelfBypass", "W-CAUSE-SELF-BYPASS", [](Matrix& m) { cause(m, 2).bypass_tag = "ps_200"; },
        [](Matrix& m) { cause(m, 2).bypass_tag = "PS_200_BYP"; }, "cause[2] PSH_200"},
       {"SelfInhibit", "W-CAUSE-SELF-BYPASS", [](Matrix& m) { cause(m, 3).inhibit_tag = "XS_300B"; },
