@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <random>
 #include <set>
 #include <tuple>
 
@@ -283,6 +284,42 @@ TEST(GridImport, UnreadableGridsAreErrors) {
   EXPECT_THROW(import_csv("x;y\n;;\nc;1;N\n", "noids.csv"), LoadError);
   EXPECT_THROW(import_csv(";;A\n;;E1\n", "nocauses.csv"), LoadError);
   EXPECT_THROW(import_csv(";;A\n;;E1\nc;1;\"N\n", "quote.csv"), LoadError);
+}
+
+// Never a crash: seeded byte mutations of both layouts either import or throw
+// LoadError (run under the sanitizer build as well).
+TEST(CsvImportRobustness, MutatedInputsImportOrFailCleanly) {
+  const std::string grid = read_text_file(kExternal / "lsst-tma-interlock-table.csv");
+  const std::string records = export_csv(import_csv(grid, "lsst.csv").matrix);
+  const std::string alphabet = ";,\"\n\r (1)NSVRX*#-_a9\t\x01\xff";
+  std::mt19937 rng(20241121);
+  int imported = 0, rejected = 0;
+  for (const std::string* base : {&grid, &records}) {
+    for (int round = 0; round < 150; ++round) {
+      std::string text = *base;
+      const int edits = 1 + static_cast<int>(rng() % 6);
+      for (int k = 0; k < edits && !text.empty(); ++k) {
+        std::size_t at = rng() % text.size();
+        char c = alphabet[rng() % alphabet.size()];
+        switch (rng() % 3) {
+          case 0: text[at] = c; break;
+          case 1: text.insert(text.begin() + static_cast<long>(at), c); break;
+          default: text.erase(at, 1 + rng() % 40); break;
+        }
+      }
+      try {
+        auto r = import_csv(text, "mutant.csv");
+        // Whatever was imported loads.
+        parse_matrix(to_canonical_json(r.matrix));
+        ++imported;
+      } catch (const LoadError& e) {
+        EXPECT_FALSE(e.issues().empty());
+        ++rejected;
+      }
+    }
+  }
+  EXPECT_GT(imported, 0);
+  EXPECT_GT(rejected, 0);
 }
 
 }  // namespace
