@@ -19,6 +19,7 @@ Evaluator::Evaluator(const Encoding& enc) : enc_(enc) {
     state_slot_.push_back(slot);
   }
   for (const auto& i : ts.inputvars()) {
+    input_index_.emplace(i.var.id(), input_slot_.size());
     int slot = static_cast<int>(program_.size());
     program_.push_back(Instr{kVar, {}, {}});
     memo_.emplace(i.var.id(), slot);
@@ -155,11 +156,9 @@ void Evaluator::run() {
 std::vector<Evaluator::Value> Evaluator::input_values(const model::CycleInput& in) const {
   const auto& ts = enc_.ts;
   std::vector<Value> v(ts.inputvars().size());
-  std::unordered_map<unsigned, std::size_t> index;
-  for (std::size_t i = 0; i < ts.inputvars().size(); ++i) index.emplace(ts.inputvars()[i].var.id(), i);
   auto set_var = [&](const z3::expr& var, Value val) {
-    auto it = index.find(var.id());
-    if (it != index.end()) v[it->second] = val;
+    auto it = input_index_.find(var.id());
+    if (it != input_index_.end()) v[it->second] = val;
   };
   for (std::size_t t = 0; t < enc_.tag_value.size() && t < in.tags.size(); ++t) {
     const auto& tv = in.tags[t];

@@ -60,6 +60,7 @@ class Evaluator {
   std::vector<int> observable_slot_;
   std::vector<Value> state_;
   std::unordered_map<unsigned, int> memo_;  // Z3 AST id -> slot
+  std::unordered_map<unsigned, std::size_t> input_index_;  // Z3 AST id -> input variable index
   std::uint64_t cycles_ = 0;
 };
 

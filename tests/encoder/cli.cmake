@@ -16,3 +16,7 @@ cemv_cli_test(NAME cli_export_smt_bad_format_exit_2 EXIT 2 MATCH "format"
   COMMAND $<TARGET_FILE:cemv> export-smt ${_hipps} --format dimacs)
 cemv_cli_test(NAME cli_export_smt_missing_file_exit_2 EXIT 2 MATCH "no_such_matrix.json"
   COMMAND $<TARGET_FILE:cemv> export-smt no_such_matrix.json)
+
+# Independence (issue 4): nothing under encoder/ includes the runtime.
+cemv_cli_test(NAME encoder_does_not_include_runtime EXIT 1
+  COMMAND grep -rnE "#include +[<\"]runtime/" ${PROJECT_SOURCE_DIR}/encoder)
