@@ -55,6 +55,58 @@ TEST_P(LargeShard, RuntimeAndEncoderAgreeEveryCycle) {
 }
 INSTANTIATE_TEST_SUITE_P(Shards, LargeShard, ::testing::Range(0, 2));
 
+// Regression (found by the differential test, seed 1169, while the runtime was
+// in progress): a group deactivation ends a running override in the cycle
+// where req_R falls. E.5 clears the R latch because the override was running
+// at the end of the previous cycle (E.3 `was_running`), so the effect goes
+// inactive without a reset.
+TEST(Regression, GroupDeactivationEndingOverrideWhileRequestFallsClearsRLatch) {
+  model::Matrix m;
+  m.name = "REG";
+  m.cycle_ms = 100;
+  m.group_deactivation = model::GroupDeactivation{"EN_GDM", "SET_GDM"};
+  model::Cause c;
+  c.id = 1;
+  c.name = "C1";
+  c.tags.push_back({"IN1", false, true});
+  m.causes.push_back(c);
+  model::Effect e;
+  e.id = 1;
+  e.name = "E1";
+  e.tags.push_back({"OUT1", false});
+  e.reset_tag = "RST";
+  e.override_time = model::Override{10, 0};
+  m.effects.push_back(e);
+  m.intersections.push_back({1, 1, model::IntersectionType::R, std::nullopt, ""});
+  model::InputTable t(m);
+  auto frame = [&](float in1, float rst, float en, float set) {
+    model::CycleInput f;
+    f.tags.resize(t.size());
+    f.tags[*t.find("IN1")].value = in1;
+    f.tags[*t.find("RST")].value = rst;
+    f.tags[*t.find("EN_GDM")].value = en;
+    f.tags[*t.find("SET_GDM")].value = set;
+    return f;
+  };
+  std::vector<model::CycleInput> in = {frame(1, 0, 0, 0), frame(0, 0, 0, 0), frame(0, 1, 0, 0),
+                                       frame(0, 0, 0, 0), frame(1, 0, 1, 1), frame(1, 0, 1, 1)};
+  z3::context ctx;
+  auto enc = encoder::encode(ctx, m);
+  encoder::Evaluator ev(*enc);
+  std::vector<int> active, latched, override_active;
+  for (const auto& f : in) {
+    ev.step(f);
+    active.push_back(ev.value("effect[1].active"));
+    latched.push_back(ev.value("effect[1].latched"));
+    override_active.push_back(ev.value("effect[1].override_active"));
+  }
+  EXPECT_EQ(active, (std::vector<int>{0, 1, 0, 0, 0, 0}));
+  EXPECT_EQ(override_active, (std::vector<int>{0, 0, 1, 1, 0, 0}));
+  EXPECT_EQ(latched, (std::vector<int>{0, 1, 1, 1, 0, 0}));
+  auto d = encoder_test::compare(m, in);
+  EXPECT_FALSE(d.has_value()) << encoder_test::report(0, m, in, *d);
+}
+
 std::vector<fs::path> example_matrices() {
   std::vector<fs::path> out;
   fs::path root = fs::path(CEMV_SOURCE_DIR) / "examples";
