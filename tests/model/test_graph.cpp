@@ -21,7 +21,12 @@ Node E(int id) { return {Node::Kind::Effect, id}; }
 
 std::string str(const std::vector<Node>& ns) {
   std::string s;
-  for (const auto& n : ns) s += (s.empty() ? "" : " ") + to_string(n);
+  // Appending piecewise: GCC 12 -O2 reports a false -Wrestrict (GCC bug 105651)
+  // on `const char* + std::string` temporaries.
+  for (const auto& n : ns) {
+    if (!s.empty()) s += ' ';
+    s += to_string(n);
+  }
   return s;
 }
 
