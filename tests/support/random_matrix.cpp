@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <deque>
+#include <optional>
 #include <set>
 #include <string>
 
@@ -370,6 +371,45 @@ void add_internal_refs(Rng& rng, const MatrixOptions& opt, Matrix& m) {
   }
 }
 
+// Internal references as control tags (6.1.3: any input tag may read the state
+// of a cause, an effect or an effect tag): a cause bypassed or inhibited by
+// another cause, an effect reset by a cause. Never the element itself.
+void add_control_refs(Rng& rng, const MatrixOptions& opt, Matrix& m) {
+  std::vector<int> causes, effects;
+  for (const auto& c : m.causes)
+    if (c.function != CauseFunction::Comment) causes.push_back(c.id);
+  for (const auto& e : m.effects)
+    if (e.function != EffectFunction::Comment) effects.push_back(e.id);
+  auto reference = [&](bool self_is_cause, int self) -> std::optional<std::string> {
+    int kind = rng.uniform(0, 2);
+    if (kind == 0 && !causes.empty()) {
+      int id = rng.pick(causes);
+      if (self_is_cause && id == self) return std::nullopt;
+      return "Cause[" + std::to_string(id) + "]";
+    }
+    if (effects.empty()) return std::nullopt;
+    int id = rng.pick(effects);
+    if (!self_is_cause && id == self) return std::nullopt;
+    std::string name = "Effect[" + std::to_string(id) + "]";
+    if (kind == 2) name += "[" + std::to_string(rng.uniform(1, static_cast<int>(m.find_effect(id)->tags.size()))) + "]";
+    return name;
+  };
+  for (auto& c : m.causes) {
+    if (c.function == CauseFunction::Comment) continue;
+    if (c.bypass_tag && rng.chance(opt.p_control_ref))
+      if (auto r = reference(true, c.id)) c.bypass_tag = r;
+    if (c.inhibit_tag && rng.chance(opt.p_control_ref))
+      if (auto r = reference(true, c.id)) c.inhibit_tag = r;
+  }
+  for (auto& e : m.effects) {
+    if (e.function == EffectFunction::Comment) continue;
+    if (e.bypass_tag && rng.chance(opt.p_control_ref))
+      if (auto r = reference(false, e.id)) e.bypass_tag = r;
+    if (e.reset_tag && rng.chance(opt.p_control_ref))
+      if (auto r = reference(false, e.id)) e.reset_tag = r;
+  }
+}
+
 std::uint64_t mix(std::uint64_t a, std::uint64_t b) {
   Rng r(a * 0x9E3779B97F4A7C15ull + b);
   return r.next();
@@ -415,6 +455,10 @@ Matrix random_matrix(std::uint64_t seed, const MatrixOptions& opt) {
   }
   add_intersections(rng, opt, m);
   add_internal_refs(rng, opt, m);
+  // A separate stream, so that adding this option left every other field of
+  // the matrices of earlier versions unchanged.
+  Rng control_rng(mix(seed, 0x6374726c /* "ctrl" */));
+  add_control_refs(control_rng, opt, m);
   return m;
 }
 
@@ -456,7 +500,7 @@ const std::vector<std::string>& feature_names() {
       "soft_bypass.not_allowed", "soft_bypass.untimed", "soft_bypass.timed", "soft_bypass.prealarm",
       "cause.bypass_tag", "cause.bypass_tag_shared", "cause.inhibit_tag", "cause.first_out",
       "cause.mutually_locked", "cause.sif",
-      "ref.cause", "ref.effect", "ref.effect_tag", "ref.cycle",
+      "ref.cause", "ref.effect", "ref.effect_tag", "ref.cycle", "ref.control",
       "effect.comment", "effect.ett", "effect.dtt", "effect.multiple_tags", "effect.output_delay",
       "effect.soft_bypass_allowed", "effect.bypass_tag", "effect.reset_tag", "effect.reset_tag_shared",
       "effect.no_reset_tag", "effect.override", "effect.override_prealarm",
@@ -517,6 +561,8 @@ std::map<std::string, int> feature_counts(const Matrix& m) {
       ++bypass_users[tag_key(*c.bypass_tag)];
     }
     if (c.inhibit_tag) ++f["cause.inhibit_tag"];
+    for (const auto* tag : {&c.bypass_tag, &c.inhibit_tag})
+      if (*tag && parse_internal_ref(**tag)) ++f["ref.control"];
     if (c.first_out_group) ++f["cause.first_out"];
     if (c.mutually_locked_maintenance) ++f["cause.mutually_locked"];
     if (!c.sif.empty()) ++f["cause.sif"];
@@ -540,6 +586,8 @@ std::map<std::string, int> feature_counts(const Matrix& m) {
     if (e.output_delay_ms) ++f["effect.output_delay"];
     if (e.soft_bypass_allowed) ++f["effect.soft_bypass_allowed"];
     if (e.bypass_tag) ++f["effect.bypass_tag"];
+    for (const auto* tag : {&e.bypass_tag, &e.reset_tag})
+      if (*tag && parse_internal_ref(**tag)) ++f["ref.control"];
     if (e.reset_tag) {
       ++f["effect.reset_tag"];
       ++reset_users[tag_key(*e.reset_tag)];

@@ -62,6 +62,7 @@ struct MatrixOptions {
   double p_shared_tag = 0.15;        // an input tag also read by an earlier cause
   double p_internal_ref = 0.15;      // a discrete cause tag is Cause[x]/Effect[x]/Effect[x][y]
   double p_cycle_ref = 0.4;          // ...of which: chosen to close a cycle
+  double p_control_ref = 0.1;        // a bypass / inhibit / reset tag is an internal reference
   double p_first_out = 0.4;
   double p_xoon = 0.3;               // per effect with >= 2 intersections
   double p_output_delay = 0.3;
