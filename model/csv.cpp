@@ -742,6 +742,39 @@ std::optional<int> trailing_number(std::string_view s) {
   return std::stoi(std::string(s.substr(i)));
 }
 
+// A grid cell's mark: a type letter, then footnote references `(n)`, blanks
+// allowed around them ("R(1)", "N (1)(2)"). nullopt for anything else.
+struct Mark {
+  char letter;
+  std::vector<std::string> footnotes;  // the numbers, as written
+};
+
+std::optional<Mark> parse_mark(std::string_view t) {
+  if (t.empty() || std::string_view("NSVRXnsvrx*").find(t[0]) == std::string_view::npos)
+    return std::nullopt;
+  Mark mark{t[0], {}};
+  std::size_t i = 1;
+  auto skip_blanks = [&] {
+    while (i < t.size() && (t[i] == ' ' || t[i] == '\t')) ++i;
+  };
+  skip_blanks();
+  while (i < t.size()) {
+    if (t[i] != '(') return std::nullopt;
+    ++i;
+    skip_blanks();
+    std::size_t start = i;
+    while (i < t.size() && t[i] >= '0' && t[i] <= '9') ++i;
+    if (i == start) return std::nullopt;
+    std::string number(t.substr(start, i - start));
+    skip_blanks();
+    if (i >= t.size() || t[i] != ')') return std::nullopt;
+    ++i;
+    skip_blanks();
+    mark.footnotes.push_back(std::move(number));
+  }
+  return mark;
+}
+
 class GridImporter {
  public:
   GridImporter(std::vector<CsvRecord> rows, std::string source, std::string name)
@@ -1030,8 +1063,6 @@ class GridImporter {
   // Reads one intersection cell: a type letter, optionally followed by footnote
   // references `(n)`. Anything else is a stray value: reported, never guessed.
   void read_cells() {
-    static const std::regex mark_re(R"(^([NSVRXnsvrx*])\s*((\(\s*\d+\s*\)\s*)*)$)");
-    static const std::regex footnote_re(R"(\(\s*(\d+)\s*\))");
     std::set<std::string> unexplained;
     for (std::size_t k = 0; k < causes_.size(); ++k) {
       const CsvRecord& row = rows_[cause_rows_[k]];
@@ -1055,15 +1086,15 @@ class GridImporter {
         }
         const auto& cause = causes_[k];
         const auto& effect = effects_[i - kFirstEffectColumn];
-        std::smatch mt;
-        if (!std::regex_match(t, mt, mark_re)) {
+        const auto mark = parse_mark(t);
+        if (!mark) {
           warn(row.line, column,
                "stray value '" + t + "' at cause " + cause.name + " / effect " + effect.name +
                    " is not N, S, V, R, X or * (with optional footnotes like R(1)); ignored: no "
                    "intersection imported");
           continue;
         }
-        char letter = mt[1].str()[0];
+        char letter = mark->letter;
         if (letter >= 'a' && letter <= 'z') {
           letter = static_cast<char>(letter - 'a' + 'A');
           warn(row.line, column,
@@ -1073,10 +1104,9 @@ class GridImporter {
         x.cause = cause.id;
         x.effect = effect.id;
         x.type = *enum_from<IntersectionType>(std::string(1, letter), kIntersectionTypes);
-        std::string refs = mt[2].str();
-        for (std::sregex_iterator it(refs.begin(), refs.end(), footnote_re), end; it != end; ++it) {
+        for (const auto& number : mark->footnotes) {
           std::string key(1, '(');
-          key += (*it)[1].str();
+          key += number;
           key += ')';
           std::string text = key;
           if (auto l = legend_.find(key); l != legend_.end()) text += " " + l->second;

@@ -467,6 +467,24 @@ Document build(const Matrix& m, const std::string& sig, const std::vector<Diagno
     d.table(list);
   }
 
+  // 11.4 "List of user notes": every note in one place, so none is overlooked.
+  d.h(2, "9 User notes", "notes");
+  {
+    Table t;
+    t.header = {"Element", "Note"};
+    for (const auto& c : m.causes)
+      if (!c.note.empty()) t.rows.push_back({plain("cause " + std::to_string(c.id) + " " + c.name), plain(c.note)});
+    for (const auto& e : m.effects)
+      if (!e.note.empty()) t.rows.push_back({plain("effect " + std::to_string(e.id) + " " + e.name), plain(e.note)});
+    for (const auto& x : m.intersections)
+      if (!x.note.empty())
+        t.rows.push_back({plain("intersection cause " + std::to_string(x.cause) + " / effect " +
+                                std::to_string(x.effect)),
+                          plain(x.note)});
+    if (t.rows.empty()) d.p("No notes.");
+    else d.table(t);
+  }
+
   d.h(2, "Signature", "signature");
   d.p({plain("End of the configuration report of "), code(m.name), plain(". Matrix signature: "),
        code(sig)});

@@ -204,14 +204,15 @@ TEST(GridImport, LegendRowsExplainFootnotes) {
 TEST(GridImport, StrayValuesAreReportedAndNeverGuessed) {
   auto r = import_csv(std::string(kHeader) +
                           "High level;C-1;Yes;n;extra\n"
-                          "Low flow;C-2;R 1;\n",
+                          "Low flow;C-2;R 1;S ( 2 )\n",
                       "stray.csv");
   EXPECT_TRUE(has_warning(r, "line 3, column 3", "stray value 'Yes'")) << warnings_text(r);
   EXPECT_TRUE(has_warning(r, "line 3, column 4", "lower-case mark 'n' read as 'N'"));
   EXPECT_TRUE(has_warning(r, "line 3, column 5", "stray value 'extra' right of the last effect column"));
   EXPECT_TRUE(has_warning(r, "line 4, column 3", "stray value 'R 1'"));
-  EXPECT_EQ(r.matrix.intersections.size(), 1u);
+  EXPECT_EQ(r.matrix.intersections.size(), 2u);
   EXPECT_EQ(r.matrix.find_intersection(1, 2)->type, IntersectionType::N);
+  EXPECT_EQ(r.matrix.find_intersection(2, 2)->note, "(2)");  // blanks around a footnote are fine
 }
 
 TEST(GridImport, LongDescriptionsAreTruncatedWithTheFullTextInTheNote) {

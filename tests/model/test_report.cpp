@@ -35,7 +35,8 @@ TEST(Report, MarkdownHasEverySectionAndTheSignatureTopAndBottom) {
   EXPECT_GT(md.rfind(sig), md.find("## 8 Intersections"));
   for (const char* section : {"# Configuration report: RT\\_ALL", "## 1 Properties", "## 2 Size and usage",
                               "## 3 Validation summary", "## 4 SIF groups", "## 5 First-out groups",
-                              "## 6 Causes", "## 7 Effects", "## 8 Intersections", "## Signature"})
+                              "## 6 Causes", "## 7 Effects", "## 8 Intersections", "## 9 User notes",
+                              "## Signature"})
     EXPECT_NE(md.find(section), std::string::npos) << section;
   // Every cause and effect has its own detail section, every intersection a row.
   for (const auto& c : m.causes)
@@ -58,6 +59,8 @@ TEST(Report, MarkdownHasEverySectionAndTheSignatureTopAndBottom) {
   EXPECT_NE(md.find("V 2oo3+"), std::string::npos);
   EXPECT_NE(md.find("| 64 | Last | 3 REF\\_OR | none |"), std::string::npos);
   EXPECT_NE(md.find("| 15 | 4 LT\\_LOW |"), std::string::npos);
+  // User notes (11.4) in one list.
+  EXPECT_NE(md.find("| intersection cause 4 / effect 2 | (2) |"), std::string::npos);
   // Markdown-significant characters in free text are escaped, not interpreted.
   EXPECT_NE(md.find("| Pressure \"PT\"; trip |"), std::string::npos);
   EXPECT_NE(md.find("Tank level high-high, \"A\"; B"), std::string::npos);
@@ -85,9 +88,10 @@ TEST(Report, HtmlIsOneSelfContainedEscapedFile) {
   EXPECT_EQ(html.find("<script"), std::string::npos);
   EXPECT_EQ(html.find("<img"), std::string::npos);
   EXPECT_EQ(html.find("<link"), std::string::npos);
-  // The only "src=" and "http" are the escaped text of the note.
-  EXPECT_EQ(count(html, "src="), 1u);
-  EXPECT_EQ(count(html, "http"), 1u);
+  // The only "src=" and "http" are the escaped text of the note (in the effect's
+  // field table and in the list of user notes).
+  EXPECT_EQ(count(html, "src="), count(html, "&lt;img src=http://"));
+  EXPECT_EQ(count(html, "http"), count(html, "&lt;img src=http://"));
   EXPECT_NE(html.find("&lt;img src=http://example.com/x.png&gt;"), std::string::npos);
   EXPECT_EQ(html.find("href="), std::string::npos);
   EXPECT_EQ(html.find("url("), std::string::npos);
