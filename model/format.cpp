@@ -19,7 +19,6 @@
 #include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
-#include <unordered_set>
 
 #include "model/io.hpp"
 
@@ -42,9 +41,8 @@ LoadError::LoadError(std::vector<LoadIssue> issues)
 namespace {
 
 // The loader reads into an insertion-ordered DOM so that issues come out in
-// file order; the writer uses the sorted one so that keys come out sorted.
+// file order.
 using InJson = nlohmann::ordered_json;
-using OutJson = nlohmann::json;
 
 // Beyond this many issues a file is clearly not a matrix: stop listing.
 constexpr std::size_t kMaxIssues = 100;
@@ -143,14 +141,23 @@ std::string suggestion(std::string_view word, const std::vector<std::string_view
 
 // ---- Lexical pre-scan ----------------------------------------------------------
 
-// Runs before the JSON parser so that hostile or non-JSON numbers get a precise
-// position: nesting deeper than kMaxJsonDepth (the parser and the destructor
-// of a DOM must never be given a million levels), numbers that overflow a
-// double (1e999), and the non-JSON words NaN / Infinity. Returns false when
-// the text must not be handed to the parser.
+// No object of the format has more than 64 members (sif_groups); the bound
+// keeps every per-object key lookup cheap on hostile input.
+constexpr std::size_t kMaxObjectMembers = 256;
+
+// Runs before the JSON parser so that hostile or non-JSON input gets a precise
+// position: nesting deeper than kMaxJsonDepth (neither the parser nor the DOM
+// must ever be given a million levels), objects with more than
+// kMaxObjectMembers members, numbers that overflow a double (1e999), and the
+// non-JSON words NaN / Infinity. Returns false when the text must not be
+// handed to the parser. Anything else that is wrong is the parser's to report.
 bool prescan(std::string_view text, std::vector<LoadIssue>& issues) {
   bool ok = true;
-  int depth = 0;
+  struct Level {
+    bool object;
+    std::size_t members;
+  };
+  std::vector<Level> levels;
   const std::size_t n = text.size();
   for (std::size_t i = 0; i < n; ++i) {
     char c = text[i];
@@ -158,14 +165,20 @@ bool prescan(std::string_view text, std::vector<LoadIssue>& issues) {
       for (++i; i < n && text[i] != '"'; ++i)
         if (text[i] == '\\') ++i;
     } else if (c == '{' || c == '[') {
-      if (++depth > kMaxJsonDepth) {
-        issues.push_back({line_column(text, i), "JSON nesting deeper than " +
-                                                     std::to_string(kMaxJsonDepth) +
-                                                     " levels (a matrix needs 5)"});
+      if (levels.size() == static_cast<std::size_t>(kMaxJsonDepth)) {
+        issues.push_back({line_column(text, i), "JSON nesting deeper than " + std::to_string(kMaxJsonDepth) +
+                                                    " levels (a matrix needs 5)"});
         return false;
       }
+      levels.push_back({c == '{', 1});
     } else if (c == '}' || c == ']') {
-      if (depth > 0) --depth;
+      if (!levels.empty()) levels.pop_back();
+    } else if (c == ',') {
+      if (!levels.empty() && levels.back().object && ++levels.back().members > kMaxObjectMembers) {
+        issues.push_back({line_column(text, i), "object with more than " + std::to_string(kMaxObjectMembers) +
+                                                    " members (no object of a matrix has that many)"});
+        return false;
+      }
     } else if (c == '-' || (c >= '0' && c <= '9')) {
       std::size_t end = i;
       bool digits = false;
@@ -202,51 +215,68 @@ bool prescan(std::string_view text, std::vector<LoadIssue>& issues) {
   return ok;
 }
 
-// Reports keys repeated within one object, which nlohmann would silently
-// collapse to the last value: an assessor reading the file might see the first.
-class DuplicateKeyFinder {
+// Builds the insertion-ordered DOM (nlohmann's own SAX DOM builder) and reports
+// keys repeated within one object, which the DOM would silently collapse to
+// one value: an assessor reading the file might see the other.
+class DomBuilder {
  public:
-  explicit DuplicateKeyFinder(std::vector<LoadIssue>& issues) : issues_(issues) {}
+  using Dom = nlohmann::detail::json_sax_dom_parser<InJson>;
+  DomBuilder(InJson& root, std::vector<LoadIssue>& issues) : dom_(root, true), issues_(issues) {}
 
-  bool operator()(int, InJson::parse_event_t event, InJson& parsed) {
-    using E = InJson::parse_event_t;
-    switch (event) {
-      case E::object_start:
-      case E::array_start: {
-        std::string path = frames_.empty() ? "" : child_path(frames_.back());
-        frames_.push_back(Frame{event == E::object_start, std::move(path), {}, 0, {}});
-        break;
-      }
-      case E::key: {
-        Frame& f = frames_.back();
-        f.key = parsed.get<std::string>();
-        if (!f.keys.insert(f.key).second && issues_.size() < kMaxIssues)
-          issues_.push_back({member_path(f.path, f.key), "duplicate key (a key may appear once per object)"});
-        break;
-      }
-      case E::value:
-        if (!frames_.empty() && !frames_.back().object) ++frames_.back().index;
-        break;
-      case E::object_end:
-      case E::array_end:
-        frames_.pop_back();
-        if (!frames_.empty() && !frames_.back().object) ++frames_.back().index;
-        break;
-    }
-    return true;
+  bool null() { return scalar() && dom_.null(); }
+  bool boolean(bool v) { return scalar() && dom_.boolean(v); }
+  bool number_integer(InJson::number_integer_t v) { return scalar() && dom_.number_integer(v); }
+  bool number_unsigned(InJson::number_unsigned_t v) { return scalar() && dom_.number_unsigned(v); }
+  bool number_float(InJson::number_float_t v, const std::string& s) { return scalar() && dom_.number_float(v, s); }
+  bool string(std::string& v) { return scalar() && dom_.string(v); }
+  bool binary(InJson::binary_t& v) { return scalar() && dom_.binary(v); }
+  bool start_object(std::size_t n) {
+    frames_.push_back({true, 0, {}});
+    return dom_.start_object(n);
+  }
+  bool key(std::string& k) {
+    auto& keys = frames_.back().keys;
+    if (std::find(keys.begin(), keys.end(), k) != keys.end() && issues_.size() < kMaxIssues)
+      issues_.push_back({member_path(path(), k), "duplicate key (a key may appear once per object)"});
+    keys.push_back(k);
+    return dom_.key(k);
+  }
+  bool end_object() {
+    frames_.pop_back();
+    return dom_.end_object() && scalar();
+  }
+  bool start_array(std::size_t n) {
+    frames_.push_back({false, 0, {}});
+    return dom_.start_array(n);
+  }
+  bool end_array() {
+    frames_.pop_back();
+    return dom_.end_array() && scalar();
+  }
+  template <class Exception>
+  bool parse_error(std::size_t position, const std::string& token, const Exception& e) {
+    return dom_.parse_error(position, token, e);
   }
 
  private:
   struct Frame {
-    bool object = false;
-    std::string path;
-    std::string key;
-    std::size_t index = 0;
-    std::unordered_set<std::string> keys;
+    bool object;
+    std::size_t index;               // arrays: index of the next element
+    std::vector<std::string> keys;   // objects: keys so far, the last one current
   };
-  static std::string child_path(const Frame& f) {
-    return f.object ? member_path(f.path, f.key) : element_path(f.path, f.index);
+  // A value (or a whole container) is complete: advance the enclosing array.
+  bool scalar() {
+    if (!frames_.empty() && !frames_.back().object) ++frames_.back().index;
+    return true;
   }
+  // Path of the innermost open container.
+  std::string path() const {
+    std::string p;
+    for (std::size_t i = 0; i + 1 < frames_.size(); ++i)
+      p = frames_[i].object ? member_path(p, frames_[i].keys.back()) : element_path(p, frames_[i].index);
+    return p;
+  }
+  Dom dom_;
   std::vector<LoadIssue>& issues_;
   std::vector<Frame> frames_;
 };
@@ -809,147 +839,310 @@ void sort_elements(Matrix& m) {
 
 // ---- The canonical writer -------------------------------------------------------
 
-OutJson optional_text(const std::optional<std::string>& s) { return s ? OutJson(*s) : OutJson(nullptr); }
+// Writes JSON text directly (no DOM: the canonical form is on the path of every
+// report). Each object's keys must be written in increasing byte order, which
+// key() enforces, so the "sorted keys" promise cannot silently break.
+class CanonicalWriter {
+ public:
+  std::string take() { return std::move(out_); }
 
-// Floats travel through the DOM as the double of the float; emit() prints them
-// with float_text, so every REAL is written in its shortest single form.
-OutJson real_value(float f) {
-  if (!std::isfinite(f)) throw std::invalid_argument("a matrix value is NaN or infinite; it has no JSON form");
-  return OutJson(static_cast<double>(f == 0.0f ? 0.0f : f));
-}
+  void begin_object() { open('{'); }
+  void end_object() { close('}'); }
+  void begin_array() { open('['); }
+  void end_array() { close(']'); }
 
-OutJson sorted_sif(std::vector<int> sif) {
+  CanonicalWriter& key(std::string_view k) {
+    Level& level = levels_.back();
+    if (level.count > 0 && !(level.last_key < k))
+      throw std::logic_error("canonical writer: key '" + std::string(k) + "' out of order");
+    level.last_key = k;
+    next_member();
+    write_string(k);
+    out_ += ": ";
+    return *this;
+  }
+  // Starts the next element of an array.
+  CanonicalWriter& item() {
+    next_member();
+    return *this;
+  }
+
+  void value(std::string_view s) { write_string(s); }
+  void value(const char* s) { write_string(s); }
+  void value(const std::string& s) { write_string(s); }
+  void value(bool b) { out_ += b ? "true" : "false"; }
+  void value(int v) { out_ += std::to_string(v); }
+  void value(std::uint32_t v) { out_ += std::to_string(v); }
+  void value(float f) {
+    if (!std::isfinite(f)) throw std::invalid_argument("a matrix value is NaN or infinite; it has no JSON form");
+    out_ += float_text(f == 0.0f ? 0.0f : f);
+  }
+  void null() { out_ += "null"; }
+  void value(const std::optional<std::string>& s) { s ? value(*s) : null(); }
+  void value(const std::optional<float>& f) { f ? value(*f) : null(); }
+  void value(const std::optional<int>& v) { v ? value(*v) : null(); }
+
+ private:
+  struct Level {
+    std::size_t count = 0;
+    std::string_view last_key;
+  };
+  void open(char c) {
+    out_ += c;
+    levels_.push_back({});
+  }
+  void close(char c) {
+    bool empty = levels_.back().count == 0;
+    levels_.pop_back();
+    if (!empty) {
+      out_ += '\n';
+      indent();
+    }
+    out_ += c;
+  }
+  void next_member() {
+    if (levels_.back().count++ > 0) out_ += ',';
+    out_ += '\n';
+    indent();
+  }
+  void indent() { out_.append(2 * levels_.size(), ' '); }
+
+  // JSON string; UTF-8 kept as is, control characters escaped, and any byte
+  // sequence that is not UTF-8 (possible only in matrices built in code)
+  // replaced by U+FFFD so the output is always valid JSON.
+  void write_string(std::string_view s) {
+    out_ += '"';
+    for (std::size_t i = 0; i < s.size();) {
+      auto c = static_cast<unsigned char>(s[i]);
+      if (c < 0x80) {
+        switch (c) {
+          case '"': out_ += "\\\""; break;
+          case '\\': out_ += "\\\\"; break;
+          case '\n': out_ += "\\n"; break;
+          case '\r': out_ += "\\r"; break;
+          case '\t': out_ += "\\t"; break;
+          case '\b': out_ += "\\b"; break;
+          case '\f': out_ += "\\f"; break;
+          default:
+            if (c < 0x20) {
+              char buf[8];
+              std::snprintf(buf, sizeof buf, "\\u%04x", c);
+              out_ += buf;
+            } else {
+              out_ += static_cast<char>(c);
+            }
+        }
+        ++i;
+        continue;
+      }
+      std::size_t length = utf8_sequence_length(s.substr(i));
+      if (length == 0) {
+        out_ += "\xEF\xBF\xBD";
+        ++i;
+      } else {
+        out_.append(s.substr(i, length));
+        i += length;
+      }
+    }
+    out_ += '"';
+  }
+  // Length of the well-formed UTF-8 sequence at the start of s (RFC 3629), 0 if none.
+  static std::size_t utf8_sequence_length(std::string_view s) {
+    auto b = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
+    auto cont = [&](std::size_t k) { return k < s.size() && (b(k) & 0xC0) == 0x80; };
+    unsigned char c = b(0);
+    if (c >= 0xC2 && c <= 0xDF) return cont(1) ? 2 : 0;
+    if (c >= 0xE0 && c <= 0xEF) {
+      if (!cont(1) || !cont(2)) return 0;
+      if (c == 0xE0 && b(1) < 0xA0) return 0;   // overlong
+      if (c == 0xED && b(1) > 0x9F) return 0;   // surrogates
+      return 3;
+    }
+    if (c >= 0xF0 && c <= 0xF4) {
+      if (!cont(1) || !cont(2) || !cont(3)) return 0;
+      if (c == 0xF0 && b(1) < 0x90) return 0;   // overlong
+      if (c == 0xF4 && b(1) > 0x8F) return 0;   // beyond U+10FFFF
+      return 4;
+    }
+    return 0;
+  }
+
+  std::string out_;
+  std::vector<Level> levels_;
+};
+
+void write_sif(CanonicalWriter& w, std::vector<int> sif) {
   std::sort(sif.begin(), sif.end());
-  return OutJson(sif);
+  w.begin_array();
+  for (int g : sif) w.item().value(g);
+  w.end_array();
 }
 
-OutJson cause_json(const Cause& c) {
-  OutJson tags = OutJson::array();
-  for (const auto& t : c.tags)
-    tags.push_back({{"name", t.name}, {"ett", t.ett}, {"soft_bypass_allowed", t.soft_bypass_allowed}});
-  OutJson analog = nullptr;
+// Keys in byte order, by hand: CanonicalWriter::key() checks it.
+void write_cause(CanonicalWriter& w, const Cause& c) {
+  w.begin_object();
+  w.key("analog");
   if (c.analog) {
-    const auto& a = *c.analog;
-    analog = {{"limit_type", to_string(a.limit_type)},
-              {"limit", real_value(a.limit)},
-              {"hysteresis", real_value(a.hysteresis)},
-              {"prewarning", a.prewarning ? real_value(*a.prewarning) : OutJson(nullptr)},
-              {"delta", real_value(a.delta)},
-              {"unit", a.unit}};
-  }
-  return {{"id", c.id},
-          {"name", c.name},
-          {"description", c.description},
-          {"sil", c.sil},
-          {"input", to_string(c.input)},
-          {"function", to_string(c.function)},
-          {"tags", tags},
-          {"analog", analog},
-          {"bad_quality", to_string(c.bad_quality)},
-          {"time", {{"mode", to_string(c.time.mode)}, {"ms", c.time.ms}}},
-          {"auto_ack", c.auto_ack},
-          {"soft_bypass",
-           {{"allowed", c.soft_bypass.allowed}, {"max_s", c.soft_bypass.max_s}, {"prealarm_s", c.soft_bypass.prealarm_s}}},
-          {"bypass_tag", optional_text(c.bypass_tag)},
-          {"inhibit_tag", optional_text(c.inhibit_tag)},
-          {"first_out_group", c.first_out_group},
-          {"mutually_locked_maintenance", c.mutually_locked_maintenance},
-          {"sif", sorted_sif(c.sif)},
-          {"note", c.note}};
-}
-
-OutJson effect_json(const Effect& e) {
-  OutJson tags = OutJson::array();
-  for (const auto& t : e.tags) tags.push_back({{"name", t.name}, {"ett", t.ett}});
-  OutJson override_json = nullptr;
-  if (e.override_time) override_json = {{"max_s", e.override_time->max_s}, {"prealarm_s", e.override_time->prealarm_s}};
-  OutJson process = nullptr;
-  if (e.process_data)
-    process = {{"tag", optional_text(e.process_data->tag)},
-               {"pass_through", e.process_data->pass_through},
-               {"mask_tag", optional_text(e.process_data->mask_tag)}};
-  return {{"id", e.id},
-          {"name", e.name},
-          {"description", e.description},
-          {"sil", e.sil},
-          {"function", to_string(e.function)},
-          {"tags", tags},
-          {"output_delay_ms", e.output_delay_ms},
-          {"soft_bypass_allowed", e.soft_bypass_allowed},
-          {"bypass_tag", optional_text(e.bypass_tag)},
-          {"reset_tag", optional_text(e.reset_tag)},
-          {"override", override_json},
-          {"process_data", process},
-          {"mutually_locked_maintenance", e.mutually_locked_maintenance},
-          {"sif", sorted_sif(e.sif)},
-          {"note", e.note}};
-}
-
-OutJson matrix_json(const Matrix& m) {
-  Matrix sorted = m;
-  sort_elements(sorted);
-  OutJson groups = OutJson::object();
-  for (const auto& [number, name] : sorted.sif_groups) groups[std::to_string(number)] = name;
-  OutJson causes = OutJson::array(), effects = OutJson::array(), intersections = OutJson::array();
-  for (const auto& c : sorted.causes) causes.push_back(cause_json(c));
-  for (const auto& e : sorted.effects) effects.push_back(effect_json(e));
-  for (const auto& x : sorted.intersections)
-    intersections.push_back({{"cause", x.cause},
-                             {"effect", x.effect},
-                             {"type", to_string(x.type)},
-                             {"xoon", x.xoon ? OutJson(*x.xoon) : OutJson(nullptr)},
-                             {"note", x.note}});
-  OutJson secure = nullptr, group = nullptr;
-  if (sorted.secure_write) secure = {{"enable_tag", sorted.secure_write->enable_tag}};
-  if (sorted.group_deactivation)
-    group = {{"enable_tag", sorted.group_deactivation->enable_tag}, {"set_tag", sorted.group_deactivation->set_tag}};
-  return {{"format", kMatrixFormat},
-          {"name", sorted.name},
-          {"title", sorted.title},
-          {"cycle_ms", sorted.cycle_ms},
-          {"sif_groups", groups},
-          {"secure_write", secure},
-          {"group_deactivation", group},
-          {"causes", causes},
-          {"effects", effects},
-          {"intersections", intersections}};
-}
-
-std::string scalar_text(const OutJson& j) {
-  if (j.is_number_float()) return float_text(static_cast<float>(j.get<double>()));
-  // Strings from a loaded file are valid UTF-8; anything else is replaced
-  // deterministically rather than thrown on.
-  return j.dump(-1, ' ', false, OutJson::error_handler_t::replace);
-}
-
-// nlohmann::json keeps object keys in a std::map, so they come out sorted by
-// bytes; each element on its own line, two spaces per level.
-void emit(const OutJson& j, int indent, std::string& out) {
-  std::string pad(static_cast<std::size_t>(indent + 2), ' ');
-  if (j.is_object() && !j.empty()) {
-    out += "{\n";
-    std::size_t i = 0;
-    for (auto it = j.begin(); it != j.end(); ++it, ++i) {
-      out += pad + OutJson(it.key()).dump(-1, ' ', false, OutJson::error_handler_t::replace) + ": ";
-      emit(it.value(), indent + 2, out);
-      out += i + 1 < j.size() ? ",\n" : "\n";
-    }
-    out += std::string(static_cast<std::size_t>(indent), ' ') + "}";
-  } else if (j.is_array() && !j.empty()) {
-    out += "[\n";
-    for (std::size_t i = 0; i < j.size(); ++i) {
-      out += pad;
-      emit(j[i], indent + 2, out);
-      out += i + 1 < j.size() ? ",\n" : "\n";
-    }
-    out += std::string(static_cast<std::size_t>(indent), ' ') + "]";
-  } else if (j.is_object()) {
-    out += "{}";
-  } else if (j.is_array()) {
-    out += "[]";
+    const AnalogParams& a = *c.analog;
+    w.begin_object();
+    w.key("delta").value(a.delta);
+    w.key("hysteresis").value(a.hysteresis);
+    w.key("limit").value(a.limit);
+    w.key("limit_type").value(to_string(a.limit_type));
+    w.key("prewarning").value(a.prewarning);
+    w.key("unit").value(a.unit);
+    w.end_object();
   } else {
-    out += scalar_text(j);
+    w.null();
   }
+  w.key("auto_ack").value(c.auto_ack);
+  w.key("bad_quality").value(to_string(c.bad_quality));
+  w.key("bypass_tag").value(c.bypass_tag);
+  w.key("description").value(c.description);
+  w.key("first_out_group").value(c.first_out_group);
+  w.key("function").value(to_string(c.function));
+  w.key("id").value(c.id);
+  w.key("inhibit_tag").value(c.inhibit_tag);
+  w.key("input").value(to_string(c.input));
+  w.key("mutually_locked_maintenance").value(c.mutually_locked_maintenance);
+  w.key("name").value(c.name);
+  w.key("note").value(c.note);
+  w.key("sif");
+  write_sif(w, c.sif);
+  w.key("sil").value(c.sil);
+  w.key("soft_bypass").begin_object();
+  w.key("allowed").value(c.soft_bypass.allowed);
+  w.key("max_s").value(c.soft_bypass.max_s);
+  w.key("prealarm_s").value(c.soft_bypass.prealarm_s);
+  w.end_object();
+  w.key("tags").begin_array();
+  for (const auto& t : c.tags) {
+    w.item().begin_object();
+    w.key("ett").value(t.ett);
+    w.key("name").value(t.name);
+    w.key("soft_bypass_allowed").value(t.soft_bypass_allowed);
+    w.end_object();
+  }
+  w.end_array();
+  w.key("time").begin_object();
+  w.key("mode").value(to_string(c.time.mode));
+  w.key("ms").value(c.time.ms);
+  w.end_object();
+  w.end_object();
+}
+
+void write_effect(CanonicalWriter& w, const Effect& e) {
+  w.begin_object();
+  w.key("bypass_tag").value(e.bypass_tag);
+  w.key("description").value(e.description);
+  w.key("function").value(to_string(e.function));
+  w.key("id").value(e.id);
+  w.key("mutually_locked_maintenance").value(e.mutually_locked_maintenance);
+  w.key("name").value(e.name);
+  w.key("note").value(e.note);
+  w.key("output_delay_ms").value(e.output_delay_ms);
+  w.key("override");
+  if (e.override_time) {
+    w.begin_object();
+    w.key("max_s").value(e.override_time->max_s);
+    w.key("prealarm_s").value(e.override_time->prealarm_s);
+    w.end_object();
+  } else {
+    w.null();
+  }
+  w.key("process_data");
+  if (e.process_data) {
+    w.begin_object();
+    w.key("mask_tag").value(e.process_data->mask_tag);
+    w.key("pass_through").value(e.process_data->pass_through);
+    w.key("tag").value(e.process_data->tag);
+    w.end_object();
+  } else {
+    w.null();
+  }
+  w.key("reset_tag").value(e.reset_tag);
+  w.key("sif");
+  write_sif(w, e.sif);
+  w.key("sil").value(e.sil);
+  w.key("soft_bypass_allowed").value(e.soft_bypass_allowed);
+  w.key("tags").begin_array();
+  for (const auto& t : e.tags) {
+    w.item().begin_object();
+    w.key("ett").value(t.ett);
+    w.key("name").value(t.name);
+    w.end_object();
+  }
+  w.end_array();
+  w.end_object();
+}
+
+void write_intersection(CanonicalWriter& w, const Intersection& x) {
+  w.begin_object();
+  w.key("cause").value(x.cause);
+  w.key("effect").value(x.effect);
+  w.key("note").value(x.note);
+  w.key("type").value(to_string(x.type));
+  w.key("xoon").value(x.xoon);
+  w.end_object();
+}
+
+// Elements in id order (stable), whatever order a matrix built in code has.
+template <class T, class Less>
+std::vector<const T*> ordered(const std::vector<T>& items, Less less) {
+  std::vector<const T*> out;
+  out.reserve(items.size());
+  for (const auto& item : items) out.push_back(&item);
+  std::stable_sort(out.begin(), out.end(), [&](const T* a, const T* b) { return less(*a, *b); });
+  return out;
+}
+
+std::string canonical_text(const Matrix& m) {
+  CanonicalWriter w;
+  w.begin_object();
+  w.key("causes").begin_array();
+  for (const Cause* c : ordered(m.causes, [](const Cause& a, const Cause& b) { return a.id < b.id; }))
+    write_cause(w.item(), *c);
+  w.end_array();
+  w.key("cycle_ms").value(m.cycle_ms);
+  w.key("effects").begin_array();
+  for (const Effect* e : ordered(m.effects, [](const Effect& a, const Effect& b) { return a.id < b.id; }))
+    write_effect(w.item(), *e);
+  w.end_array();
+  w.key("format").value(kMatrixFormat);
+  w.key("group_deactivation");
+  if (m.group_deactivation) {
+    w.begin_object();
+    w.key("enable_tag").value(m.group_deactivation->enable_tag);
+    w.key("set_tag").value(m.group_deactivation->set_tag);
+    w.end_object();
+  } else {
+    w.null();
+  }
+  w.key("intersections").begin_array();
+  for (const Intersection* x : ordered(m.intersections, [](const Intersection& a, const Intersection& b) {
+         return std::pair{a.cause, a.effect} < std::pair{b.cause, b.effect};
+       }))
+    write_intersection(w.item(), *x);
+  w.end_array();
+  w.key("name").value(m.name);
+  w.key("secure_write");
+  if (m.secure_write) {
+    w.begin_object();
+    w.key("enable_tag").value(m.secure_write->enable_tag);
+    w.end_object();
+  } else {
+    w.null();
+  }
+  // JSON object keys are strings, so group numbers sort as text ("10" < "2").
+  std::vector<std::pair<std::string, const std::string*>> groups;
+  for (const auto& [number, name] : m.sif_groups) groups.emplace_back(std::to_string(number), &name);
+  std::sort(groups.begin(), groups.end());
+  w.key("sif_groups").begin_object();
+  for (const auto& [number, name] : groups) w.key(number).value(*name);
+  w.end_object();
+  w.key("title").value(m.title);
+  w.end_object();
+  return w.take() + "\n";
 }
 
 }  // namespace
@@ -1024,8 +1217,8 @@ Matrix parse_matrix(std::string_view json_text, const std::string& source_name) 
 
   InJson root;
   try {
-    DuplicateKeyFinder finder(issues);
-    root = InJson::parse(json_text.begin(), json_text.end(), std::ref(finder));
+    DomBuilder builder(root, issues);
+    InJson::sax_parse(json_text.begin(), json_text.end(), &builder);
   } catch (const InJson::parse_error& e) {
     std::size_t index = e.byte == 0 ? 0 : e.byte - 1;
     issues.push_back({line_column(json_text, index), parse_error_text(e.what())});
@@ -1075,12 +1268,7 @@ std::string float_text(float v) {
   return std::string(buf, result.ptr);
 }
 
-std::string to_canonical_json(const Matrix& m) {
-  std::string out;
-  emit(matrix_json(m), 0, out);
-  out += "\n";
-  return out;
-}
+std::string to_canonical_json(const Matrix& m) { return canonical_text(m); }
 
 void save_matrix(const Matrix& m, const std::filesystem::path& file) {
   std::string text = to_canonical_json(m);

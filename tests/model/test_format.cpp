@@ -8,11 +8,14 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <random>
 #include <sstream>
 
 #include <unistd.h>
+
+#include <nlohmann/json.hpp>
 
 #include "model/format.hpp"
 #include "tests/support/random_matrix.hpp"
@@ -442,6 +445,15 @@ TEST(Hostile, DeepNestingIsRejectedWithItsPosition) {
   EXPECT_EQ(parse_matrix(in_string).title, "\"" + std::string(1000, '['));
 }
 
+TEST(Hostile, WideObjectsAreRejectedBeforeParsing) {
+  std::string text = R"({"format": "cemv-matrix/1", "name": "M", "title": "t")";
+  for (int i = 0; i < 200000; ++i) text += ", \"k" + std::to_string(i) + "\": 0";
+  text += "}";
+  auto issues = issues_of(text);
+  ASSERT_EQ(issues.size(), 1u);
+  EXPECT_NE(issues[0].find("object with more than 256 members"), std::string::npos) << issues[0];
+}
+
 TEST(Hostile, LoadsFromADeviceWithoutSizeStopAtTheCap) {
   if (!fs::exists("/dev/zero")) GTEST_FAIL() << "/dev/zero missing";
   try {
@@ -469,6 +481,41 @@ TEST(Canonical, IsSortedIndentedAndEndsWithANewline) {
   EXPECT_NE(text.find("\"bad_quality\": \"trip\""), std::string::npos);
   EXPECT_NE(text.find("\"sif_groups\": {}"), std::string::npos);
   EXPECT_NE(text.find("\"cycle_ms\": 100"), std::string::npos);
+}
+
+// Every object of the canonical text, at every depth, has its keys in strictly
+// increasing byte order.
+TEST(Canonical, EveryObjectHasSortedKeys) {
+  std::string text = to_canonical_json(cemv::testsupport::big_matrix(1));
+  auto doc = nlohmann::ordered_json::parse(text);
+  int objects = 0;
+  std::function<void(const nlohmann::ordered_json&)> walk = [&](const nlohmann::ordered_json& j) {
+    if (j.is_object()) {
+      ++objects;
+      std::string previous;
+      bool first = true;
+      for (auto it = j.begin(); it != j.end(); ++it) {
+        EXPECT_TRUE(first || previous < it.key()) << previous << " before " << it.key();
+        previous = it.key();
+        first = false;
+        walk(it.value());
+      }
+    } else if (j.is_array()) {
+      for (const auto& e : j) walk(e);
+    }
+  };
+  walk(doc);
+  EXPECT_GT(objects, 1000);
+}
+
+TEST(Canonical, EscapesTextAndRepairsBrokenUtf8FromCode) {
+  Matrix m = parse_matrix(kMinimal);
+  m.title = "a\"b\\c\nd\x01 \xC3\xA9 \xFF end";  // built in code: not loadable as is
+  std::string text = to_canonical_json(m);
+  EXPECT_NE(text.find("\"title\": \"a\\\"b\\\\c\\nd\\u0001 \xC3\xA9 \xEF\xBF\xBD end\""), std::string::npos) << text;
+  // The canonical text is valid JSON even then (the loader itself rejects the
+  // control characters, which is why this goes through nlohmann).
+  EXPECT_EQ(nlohmann::json::parse(text)["title"], "a\"b\\c\nd\x01 \xC3\xA9 \xEF\xBF\xBD end");
 }
 
 TEST(Canonical, RoundTripsTheIssueExampleAndTheMinimalFile) {
