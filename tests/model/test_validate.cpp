@@ -20,15 +20,23 @@ namespace {
 
 using testcases::clean_matrix;
 
+// "ZS_" + number, built by appending (GCC 12 at -O3 reports a false -Wrestrict
+// for a string literal + std::string temporary).
+std::string numbered(const char* prefix, int n) {
+  std::string s(prefix);
+  s += std::to_string(n);
+  return s;
+}
+
 Cause& cause(Matrix& m, int id) {
   for (auto& c : m.causes)
     if (c.id == id) return c;
-  throw std::runtime_error("no cause " + std::to_string(id));
+  throw std::runtime_error(numbered("no cause ", id));
 }
 Effect& effect(Matrix& m, int id) {
   for (auto& e : m.effects)
     if (e.id == id) return e;
-  throw std::runtime_error("no effect " + std::to_string(id));
+  throw std::runtime_error(numbered("no effect ", id));
 }
 Intersection& inter(Matrix& m, int c, int e) {
   for (auto& x : m.intersections)
@@ -237,11 +245,11 @@ const std::vector<RuleCase>& rule_cases() {
       {"LimitCauses", "E-LIMIT",
        [](Matrix& m) {
          for (int id = 5; id <= 129; ++id)
-           add_linked_cause(m, discrete_cause(id, "C" + std::to_string(id), "ZS_" + std::to_string(id)), 3);
+           add_linked_cause(m, discrete_cause(id, numbered("C", id), numbered("ZS_", id)), 3);
        },
        [](Matrix& m) {
          for (int id = 5; id <= 128; ++id)
-           add_linked_cause(m, discrete_cause(id, "C" + std::to_string(id), "ZS_" + std::to_string(id)), 3);
+           add_linked_cause(m, discrete_cause(id, numbered("C", id), numbered("ZS_", id)), 3);
        },
        "matrix"},
       {"OutputTagReference", "E-OUTPUT-TAG-REFERENCE",
@@ -292,11 +300,11 @@ const std::vector<RuleCase>& rule_cases() {
        [](Matrix& m) { cause(m, 1).sif = {1}; }, "cause[1] LT100_HH"},
       {"SifRangeCount", "E-SIF-RANGE",
        [](Matrix& m) {
-         for (int s = 1; s <= 5; ++s) m.sif_groups[s] = "g";
+         for (int s = 1; s <= 5; ++s) m.sif_groups.emplace(s, "g");
          effect(m, 1).sif = {1, 2, 3, 4, 5};
        },
        [](Matrix& m) {
-         for (int s = 1; s <= 5; ++s) m.sif_groups[s] = "g";
+         for (int s = 1; s <= 5; ++s) m.sif_groups.emplace(s, "g");
          effect(m, 1).sif = {1, 2, 3, 4};
        },
        "effect[1] CLOSE_INLET"},
@@ -370,7 +378,7 @@ const std::vector<RuleCase>& rule_cases() {
       {"XooNRangeHigh", "E-XOON-RANGE",
        [](Matrix& m) {
          for (int id = 5; id <= 20; ++id) {
-           add_linked_cause(m, discrete_cause(id, "C" + std::to_string(id), "ZS_" + std::to_string(id)), 2);
+           add_linked_cause(m, discrete_cause(id, numbered("C", id), numbered("ZS_", id)), 2);
            inter(m, id, 2).xoon = 16;
          }
          inter(m, 2, 2).xoon = 16;
@@ -378,7 +386,7 @@ const std::vector<RuleCase>& rule_cases() {
        },
        [](Matrix& m) {
          for (int id = 5; id <= 20; ++id) {
-           add_linked_cause(m, discrete_cause(id, "C" + std::to_string(id), "ZS_" + std::to_string(id)), 2);
+           add_linked_cause(m, discrete_cause(id, numbered("C", id), numbered("ZS_", id)), 2);
            inter(m, id, 2).xoon = 15;
          }
          inter(m, 2, 2).xoon = 15;
@@ -721,9 +729,9 @@ TEST(Validate, CycleCapIsReported) {
   // 20 causes each reading five effects that all of them trip: a knot with far
   // more than kMaxReportedCycles elementary cycles.
   testcases::MatrixBuilder b("KNOT");
-  for (int e = 1; e <= 5; ++e) b.effect(e, "E" + std::to_string(e), {"Y" + std::to_string(e)});
+  for (int e = 1; e <= 5; ++e) b.effect(e, numbered("E", e), {numbered("Y", e)});
   for (int c = 1; c <= 20; ++c) {
-    b.cause(c, "C" + std::to_string(c), {"Effect[1]", "Effect[2]", "Effect[3]"});
+    b.cause(c, numbered("C", c), {"Effect[1]", "Effect[2]", "Effect[3]"});
     b.last_cause().bypass_tag = "Effect[4]";
     b.last_cause().inhibit_tag = "Effect[5]";
     for (int e = 1; e <= 5; ++e) b.link(c, e);
