@@ -113,3 +113,6 @@ cemv_cli_test(NAME scenario_timing_table EXIT 0
           ${CEMV_SCEN}/13_1_1_on_delay_bullets1_2_4_delayed_activation.json)
 cemv_cli_test(NAME scenario_trace EXIT 0 MATCH "^ \"format\": \"cemv-trace/1\",$"
   COMMAND bash -c "$<TARGET_FILE:cemv> simulate ${cemv_rej_matrix} ${CEMV_SCEN}/13_1_1_on_delay_bullets1_2_4_delayed_activation.json --trace ${PROJECT_BINARY_DIR}/scenario_trace_on_delay.json >/dev/null && cat ${PROJECT_BINARY_DIR}/scenario_trace_on_delay.json")
+# Deterministic output: two runs, trace included, are byte-identical.
+cemv_cli_test(NAME scenario_output_deterministic EXIT 0 MATCH "^identical$"
+  COMMAND bash -c "c=$<TARGET_FILE:cemv> && m=${CEMV_SCEN}/matrices/ch13_effects.json && s=${CEMV_SCEN}/13_2_2_V_items4_5_6_output_delay_and_override.json && t=${PROJECT_BINARY_DIR}/scenario_det && $c simulate $m $s --trace $t.1.json > $t.1.txt && $c simulate $m $s --trace $t.2.json > $t.2.txt && cmp $t.1.txt $t.2.txt && cmp $t.1.json $t.2.json && echo identical")
