@@ -38,8 +38,9 @@ inline constexpr std::size_t kMaxFileBytes = 16u << 20;
 inline constexpr int kMaxJsonDepth = 64;
 
 // Parses and checks the structure of a matrix: syntax, types, unknown keys,
-// ranges, limits of 3.4, tag-name syntax of 6.1.4, unique ids. Cross-element
-// plausibility (11.5) is validate()'s job, not the loader's.
+// ranges, limits of 3.4, tag-name syntax of 6.1.4. Cross-element plausibility
+// (11.5: duplicate ids or names, dangling references, ...) is validate()'s job,
+// not the loader's; elements come back sorted by id (stable).
 Matrix parse_matrix(std::string_view json_text, const std::string& source_name = "");
 Matrix load_matrix(const std::filesystem::path& file);
 
