@@ -20,6 +20,10 @@ struct FunctionRow {
   int needed;  // tripped tags that trip the cause
 };
 
+// Printed in ctest's test list: a readable case, not the struct's raw bytes
+// (which hold addresses and differ between runs).
+void PrintTo(const FunctionRow& r, std::ostream* os) { *os << r.name; }
+
 const FunctionRow kRows[] = {
     {"Standard_1tag", CauseFunction::Normal, 1, 1},  // "Input tag = FALSE"
     {"AND_2tags", CauseFunction::And, 2, 2},         // "both input tags = FALSE"

@@ -972,6 +972,13 @@ struct PassMaskRow {
   bool expected;
 };
 
+// Printed in ctest's test list: a readable case, not the struct's raw bytes
+// (which hold addresses and differ between runs).
+void PrintTo(const PassMaskRow& r, std::ostream* os) {
+  *os << "pass_through=" << r.pass_through << " mask=" << r.mask_configured << " ett=" << r.ett
+      << " active=" << r.effect_active << " process=" << r.process << " mask_tag=" << r.mask;
+}
+
 class PassThroughMask : public ::testing::TestWithParam<PassMaskRow> {};
 
 TEST_P(PassThroughMask, OutputValue) {

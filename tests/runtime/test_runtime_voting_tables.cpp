@@ -35,6 +35,10 @@ struct Row {
   const char* erratum = nullptr;   // why the expectation differs from the print
 };
 
+// Printed in ctest's test list: a readable case, not the struct's raw bytes
+// (which hold addresses and differ between runs).
+void PrintTo(const Row& r, std::ostream* os) { *os << r.table << " case " << r.case_no; }
+
 constexpr auto OR = CauseFunction::Or;
 constexpr auto AND = CauseFunction::And;
 constexpr auto V23 = CauseFunction::TwoOoThree;

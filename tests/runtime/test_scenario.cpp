@@ -123,6 +123,10 @@ struct Rejection {
   const char* message;
 };
 
+// Printed in ctest's test list: a readable case, not the struct's raw bytes
+// (which hold addresses and differ between runs).
+void PrintTo(const Rejection& r, std::ostream* os) { *os << r.name; }
+
 class ScenarioRejects : public ::testing::TestWithParam<Rejection> {};
 
 TEST_P(ScenarioRejects, NamesTheBadItem) {
