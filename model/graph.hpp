@@ -59,8 +59,10 @@ class DependencyGraph {
 
   // Every processed cause and effect (comment-only elements excluded), in the
   // order a scan cycle evaluates them: topological, ties broken by causes
-  // before effects then by id; a cycle is broken at its smallest node, whose
-  // incoming references from the rest of the cycle read the previous cycle.
+  // before effects then by id; when only cycles remain, the smallest node of a
+  // strongly connected component no other remaining component feeds goes next,
+  // and its incoming references from the rest of its cycle read the previous
+  // cycle (so a node merely downstream of a cycle never reads a stale value).
   const std::vector<Node>& evaluation_order() const;
   const std::vector<Edge>& edges() const;
 
