@@ -98,43 +98,39 @@ std::string report(std::uint64_t seed, const model::Matrix& m0,
   bool progress = true;
   for (int round = 0; progress && round < 4; ++round) {
     progress = false;
-    for (std::size_t i = 0; i < m.intersections.size();) {
-      model::Matrix t = m;
-      t.intersections.erase(t.intersections.begin() + static_cast<long>(i));
-      if (still_fails(t, reindex(m, t, in))) {
-        in = reindex(m, t, in);
-        m = std::move(t);
-        progress = true;
-      } else {
-        ++i;
+    // Removes list element i (via `without`) whenever the disagreement survives it.
+    auto shrink = [&](auto size_of, auto without) {
+      for (std::size_t i = 0; i < size_of(m);) {
+        model::Matrix t = without(m, i);
+        auto t_in = reindex(m, t, in);
+        if (still_fails(t, t_in)) {
+          in = std::move(t_in);
+          m = std::move(t);
+          progress = true;
+        } else {
+          ++i;
+        }
       }
-    }
-    for (std::size_t i = 0; i < m.effects.size();) {
-      model::Matrix t = m;
-      int id = t.effects[i].id;
-      t.effects.erase(t.effects.begin() + static_cast<long>(i));
-      std::erase_if(t.intersections, [&](const auto& x) { return x.effect == id; });
-      if (still_fails(t, reindex(m, t, in))) {
-        in = reindex(m, t, in);
-        m = std::move(t);
-        progress = true;
-      } else {
-        ++i;
-      }
-    }
-    for (std::size_t i = 0; i < m.causes.size();) {
-      model::Matrix t = m;
-      int id = t.causes[i].id;
-      t.causes.erase(t.causes.begin() + static_cast<long>(i));
-      std::erase_if(t.intersections, [&](const auto& x) { return x.cause == id; });
-      if (still_fails(t, reindex(m, t, in))) {
-        in = reindex(m, t, in);
-        m = std::move(t);
-        progress = true;
-      } else {
-        ++i;
-      }
-    }
+    };
+    shrink([](const model::Matrix& x) { return x.intersections.size(); },
+           [](model::Matrix t, std::size_t i) {
+             t.intersections.erase(t.intersections.begin() + static_cast<long>(i));
+             return t;
+           });
+    shrink([](const model::Matrix& x) { return x.effects.size(); },
+           [](model::Matrix t, std::size_t i) {
+             int id = t.effects[i].id;
+             t.effects.erase(t.effects.begin() + static_cast<long>(i));
+             std::erase_if(t.intersections, [&](const auto& x) { return x.effect == id; });
+             return t;
+           });
+    shrink([](const model::Matrix& x) { return x.causes.size(); },
+           [](model::Matrix t, std::size_t i) {
+             int id = t.causes[i].id;
+             t.causes.erase(t.causes.begin() + static_cast<long>(i));
+             std::erase_if(t.intersections, [&](const auto& x) { return x.cause == id; });
+             return t;
+           });
     // Drop leading cycles is not sound (state); drop commands instead.
     for (std::size_t k = 0; k < in.size(); ++k)
       for (std::size_t j = 0; j < in[k].commands.size();) {
