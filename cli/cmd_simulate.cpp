@@ -220,7 +220,8 @@ int run_simulate(const std::string& matrix_file, const std::string& scenario_fil
   std::cout << "scenario " << scenario_file << ": " << sc.steps.size() << " steps, "
             << ex.cycles.size() << " cycles, " << checked << " expectations, " << failed
             << " failed";
-  if (refused_total) std::cout << ", " << refused_total << " commands refused";
+  if (refused_total)
+    std::cout << ", " << refused_total << (refused_total == 1 ? " command" : " commands") << " refused";
   std::cout << "\n" << (failed ? "FAIL" : "PASS") << "\n";
 
   if (!trace_file.empty()) {
