@@ -221,14 +221,7 @@ class RecordImporter {
     for (const auto& r : records_) handle(r);
     finish_tags();
     if (!errors_.empty()) throw LoadError(errors_);
-    std::sort(m_.causes.begin(), m_.causes.end(),
-              [](const Cause& a, const Cause& b) { return a.id < b.id; });
-    std::sort(m_.effects.begin(), m_.effects.end(),
-              [](const Effect& a, const Effect& b) { return a.id < b.id; });
-    std::sort(m_.intersections.begin(), m_.intersections.end(),
-              [](const Intersection& a, const Intersection& b) {
-                return std::pair{a.cause, a.effect} < std::pair{b.cause, b.effect};
-              });
+    m_.sort_by_id();
     return m_;
   }
 
@@ -817,11 +810,7 @@ class GridImporter {
       m.effects.push_back(std::move(effect));
     }
     m.intersections = intersections_;
-    std::sort(m.causes.begin(), m.causes.end(), [](auto& a, auto& b) { return a.id < b.id; });
-    std::sort(m.effects.begin(), m.effects.end(), [](auto& a, auto& b) { return a.id < b.id; });
-    std::sort(m.intersections.begin(), m.intersections.end(), [](auto& a, auto& b) {
-      return std::pair{a.cause, a.effect} < std::pair{b.cause, b.effect};
-    });
+    m.sort_by_id();
 
     CsvImportResult result;
     result.layout = CsvLayoutKind::Grid;

@@ -827,16 +827,6 @@ void read_matrix(Reader& r, const InJson& root, Matrix& m) {
   });
 }
 
-// Elements in id order so that Matrix::find_* (binary search) work; stable so
-// that duplicates (validate() reports them) keep their file order.
-void sort_elements(Matrix& m) {
-  std::stable_sort(m.causes.begin(), m.causes.end(), [](const Cause& a, const Cause& b) { return a.id < b.id; });
-  std::stable_sort(m.effects.begin(), m.effects.end(), [](const Effect& a, const Effect& b) { return a.id < b.id; });
-  std::stable_sort(m.intersections.begin(), m.intersections.end(), [](const Intersection& a, const Intersection& b) {
-    return std::pair{a.cause, a.effect} < std::pair{b.cause, b.effect};
-  });
-}
-
 // ---- The canonical writer -------------------------------------------------------
 
 // Writes JSON text directly (no DOM: the canonical form is on the path of every
@@ -1232,7 +1222,7 @@ Matrix parse_matrix(std::string_view json_text, const std::string& source_name) 
   Reader reader(issues);
   read_matrix(reader, root, m);
   if (!issues.empty()) throw LoadError(std::move(issues));
-  sort_elements(m);
+  m.sort_by_id();
   return m;
 }
 

@@ -4,6 +4,17 @@
 
 namespace cemv::model {
 
+void Matrix::sort_by_id() {
+  std::stable_sort(causes.begin(), causes.end(),
+                   [](const Cause& a, const Cause& b) { return a.id < b.id; });
+  std::stable_sort(effects.begin(), effects.end(),
+                   [](const Effect& a, const Effect& b) { return a.id < b.id; });
+  std::stable_sort(intersections.begin(), intersections.end(),
+                   [](const Intersection& a, const Intersection& b) {
+                     return std::pair{a.cause, a.effect} < std::pair{b.cause, b.effect};
+                   });
+}
+
 const Cause* Matrix::find_cause(int id) const {
   auto it = std::lower_bound(causes.begin(), causes.end(), id,
                              [](const Cause& c, int v) { return c.id < v; });

@@ -147,6 +147,11 @@ struct Matrix {
   std::vector<Effect> effects;        // kept sorted by id
   std::vector<Intersection> intersections;  // sorted by (cause, effect)
 
+  // Restores the order the fields above promise (find_* binary-search it).
+  // Stable, so elements with a repeated id (validate() reports them) keep
+  // their file order and every platform sorts them alike.
+  void sort_by_id();
+
   const Cause* find_cause(int id) const;
   const Effect* find_effect(int id) const;
   const Intersection* find_intersection(int cause, int effect) const;

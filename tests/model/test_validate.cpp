@@ -43,17 +43,6 @@ Intersection& inter(Matrix& m, int c, int e) {
     if (x.cause == c && x.effect == e) return x;
   throw std::runtime_error("no intersection");
 }
-// Keeps the vectors sorted after a mutation, as the loader does.
-void resort(Matrix& m) {
-  std::stable_sort(m.causes.begin(), m.causes.end(),
-                   [](const Cause& a, const Cause& b) { return a.id < b.id; });
-  std::stable_sort(m.effects.begin(), m.effects.end(),
-                   [](const Effect& a, const Effect& b) { return a.id < b.id; });
-  std::stable_sort(m.intersections.begin(), m.intersections.end(),
-                   [](const Intersection& a, const Intersection& b) {
-                     return std::pair{a.cause, a.effect} < std::pair{b.cause, b.effect};
-                   });
-}
 Cause discrete_cause(int id, std::string name, std::string tag) {
   Cause c;
   c.id = id;
@@ -72,7 +61,7 @@ void add_linked_cause(Matrix& m, Cause c, int effect_id) {
   int id = c.id;
   m.causes.push_back(std::move(c));
   m.intersections.push_back(Intersection{id, effect_id, IntersectionType::N, std::nullopt, ""});
-  resort(m);
+  m.sort_by_id();
 }
 
 std::string dump(const std::vector<Diagnostic>& ds) {
@@ -151,22 +140,22 @@ const std::vector<RuleCase>& rule_cases() {
       {"DuplicateEffectId", "E-DUPLICATE-EFFECT-ID",
        [](Matrix& m) {
          m.effects.push_back(plain_effect(3, "OTHER", "XY_900"));
-         resort(m);
+         m.sort_by_id();
        },
        [](Matrix& m) {
          m.effects.push_back(plain_effect(4, "OTHER", "XY_900"));
          m.intersections.push_back(Intersection{4, 4, IntersectionType::N, std::nullopt, ""});
-         resort(m);
+         m.sort_by_id();
        },
        "effect[3] OTHER"},
       {"DuplicateEffectName", "E-DUPLICATE-EFFECT-NAME",
        [](Matrix& m) {
          m.effects.push_back(plain_effect(4, "Close_Inlet", "XY_900"));
-         resort(m);
+         m.sort_by_id();
        },
        [](Matrix& m) {
          m.effects.push_back(plain_effect(4, "CLOSE_INLET_2", "XY_900"));
-         resort(m);
+         m.sort_by_id();
        },
        "effect[4] Close_Inlet"},
       {"EffectNoTag", "E-EFFECT-TAG-COUNT", [](Matrix& m) { effect(m, 3).tags.clear(); },
@@ -214,17 +203,17 @@ const std::vector<RuleCase>& rule_cases() {
        [](Matrix& m) {
          m.effects.push_back(plain_effect(0, "NULL", "XY_0"));
          m.intersections.push_back(Intersection{4, 0, IntersectionType::N, std::nullopt, ""});
-         resort(m);
+         m.sort_by_id();
        },
        nothing, "effect[0] NULL"},
       {"IntersectionDanglingCause", "E-INTERSECTION-DANGLING",
        [](Matrix& m) {
          m.intersections.push_back(Intersection{9, 1, IntersectionType::N, std::nullopt, ""});
-         resort(m);
+         m.sort_by_id();
        },
        [](Matrix& m) {
          m.intersections.push_back(Intersection{4, 1, IntersectionType::N, std::nullopt, ""});
-         resort(m);
+         m.sort_by_id();
        },
        "intersection cause[9]/effect[1]"},
       {"IntersectionDanglingEffect", "E-INTERSECTION-DANGLING",
@@ -235,11 +224,11 @@ const std::vector<RuleCase>& rule_cases() {
       {"IntersectionRepeated", "E-INTERSECTION-REPEATED",
        [](Matrix& m) {
          m.intersections.push_back(Intersection{1, 1, IntersectionType::S, std::nullopt, ""});
-         resort(m);
+         m.sort_by_id();
        },
        [](Matrix& m) {
          m.intersections.push_back(Intersection{1, 3, IntersectionType::N, std::nullopt, ""});
-         resort(m);
+         m.sort_by_id();
        },
        "intersection cause[1]/effect[1]"},
       {"IntersectionX", "E-INTERSECTION-X",
@@ -434,23 +423,23 @@ const std::vector<RuleCase>& rule_cases() {
       {"CauseUnused", "W-CAUSE-UNUSED",
        [](Matrix& m) {
          m.causes.push_back(discrete_cause(5, "SPARE", "ZS_500"));
-         resort(m);
+         m.sort_by_id();
        },
        [](Matrix& m) {
          m.causes.push_back(discrete_cause(5, "SPARE", "ZS_500"));
          effect(m, 3).bypass_tag = "Cause[5]";  // read by an internal reference
-         resort(m);
+         m.sort_by_id();
        },
        "cause[5] SPARE"},
       {"CauseReadByMatrixTag", "W-CAUSE-UNUSED",
        [](Matrix& m) {
          m.causes.push_back(discrete_cause(5, "KEY_SWITCH", "ZS_500"));
-         resort(m);
+         m.sort_by_id();
        },
        [](Matrix& m) {
          m.causes.push_back(discrete_cause(5, "KEY_SWITCH", "ZS_500"));
          m.group_deactivation->enable_tag = "Cause[5]";
-         resort(m);
+         m.sort_by_id();
        },
        "cause[5] KEY_SWITCH"},
       {"CauseOnlyNote", "W-CAUSE-UNUSED",
@@ -479,19 +468,19 @@ const std::vector<RuleCase>& rule_cases() {
       {"EffectUndriven", "W-EFFECT-UNDRIVEN",
        [](Matrix& m) {
          m.effects.push_back(plain_effect(4, "SPARE", "XY_400"));
-         resort(m);
+         m.sort_by_id();
        },
        [](Matrix& m) {
          m.effects.push_back(plain_effect(4, "SPARE", "XY_400"));
          m.intersections.push_back(Intersection{4, 4, IntersectionType::N, std::nullopt, ""});
-         resort(m);
+         m.sort_by_id();
        },
        "effect[4] SPARE"},
       {"EffectOnlyNote", "W-EFFECT-UNDRIVEN",
        [](Matrix& m) {
          m.effects.push_back(plain_effect(4, "SPARE", "XY_400"));
          m.intersections.push_back(Intersection{4, 4, IntersectionType::Note, std::nullopt, ""});
-         resort(m);
+         m.sort_by_id();
        },
        nothing, "effect[4] SPARE"},
       {"InputTagRepeated", "W-INPUT-TAG-REPEATED",
@@ -533,12 +522,12 @@ const std::vector<RuleCase>& rule_cases() {
          Cause c = discrete_cause(5, "NOTE_ONLY", "ZS_500");
          c.function = CauseFunction::Comment;
          m.causes.push_back(c);
-         resort(m);
+         m.sort_by_id();
          cause(m, 4).tags[0].name = "Cause[5]";
        },
        [](Matrix& m) {
          m.causes.push_back(discrete_cause(5, "REAL_ONE", "ZS_500"));
-         resort(m);
+         m.sort_by_id();
          cause(m, 4).tags[0].name = "Cause[5]";
        },
        "cause[4] INLET_CLOSED"},
@@ -684,7 +673,7 @@ TEST(Validate, OrderIsRuleThenElementAndDeterministic) {
   m.intersections.push_back(Intersection{1, 3, IntersectionType::X, std::nullopt, ""});
   m.causes.push_back(discrete_cause(12, "SPARE_12", "ZS_12"));  // W-CAUSE-UNUSED
   m.causes.push_back(discrete_cause(9, "SPARE_9", "ZS_9"));     // W-CAUSE-UNUSED
-  resort(m);
+  m.sort_by_id();
   auto ds = validate(m);
   auto again = validate(m);
   ASSERT_EQ(dump(ds), dump(again));

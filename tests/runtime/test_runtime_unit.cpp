@@ -76,11 +76,7 @@ model::Matrix matrix(std::vector<model::Cause> causes, std::vector<model::Effect
   m.causes = std::move(causes);
   m.effects = std::move(effects);
   m.intersections = std::move(cells);
-  std::sort(m.causes.begin(), m.causes.end(), [](auto& a, auto& b) { return a.id < b.id; });
-  std::sort(m.effects.begin(), m.effects.end(), [](auto& a, auto& b) { return a.id < b.id; });
-  std::sort(m.intersections.begin(), m.intersections.end(), [](auto& a, auto& b) {
-    return std::pair{a.cause, a.effect} < std::pair{b.cause, b.effect};
-  });
+  m.sort_by_id();
   return m;
 }
 

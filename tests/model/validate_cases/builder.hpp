@@ -63,14 +63,7 @@ class MatrixBuilder {
   // Sorted as the loader keeps them (find_cause etc. rely on it).
   Matrix build() const {
     Matrix m = m_;
-    std::stable_sort(m.causes.begin(), m.causes.end(),
-                     [](const Cause& a, const Cause& b) { return a.id < b.id; });
-    std::stable_sort(m.effects.begin(), m.effects.end(),
-                     [](const Effect& a, const Effect& b) { return a.id < b.id; });
-    std::stable_sort(m.intersections.begin(), m.intersections.end(),
-                     [](const Intersection& a, const Intersection& b) {
-                       return std::pair{a.cause, a.effect} < std::pair{b.cause, b.effect};
-                     });
+    m.sort_by_id();
     return m;
   }
 
