@@ -9,6 +9,7 @@
 #include <string>
 
 #include "model/graph.hpp"
+#include "model/scenario.hpp"
 #include "runtime/cause_block.hpp"
 #include "runtime/effect_block.hpp"
 #include "runtime/signals.hpp"
@@ -539,36 +540,9 @@ Runtime& Runtime::operator=(Runtime&&) noexcept = default;
 const model::Matrix& Runtime::matrix() const { return impl_->matrix; }
 const model::InputTable& Runtime::inputs() const { return impl_->inputs; }
 
-// S.1: every input at its non-tripped value, good quality.
-model::CycleInput Runtime::default_input() const {
-  model::CycleInput in;
-  in.tags.resize(impl_->inputs.size());
-  const auto& tags = impl_->inputs.tags();
-  for (std::size_t idx = 0; idx < tags.size(); ++idx) {
-    in.tags[idx] = model::TagValue{0.0f, false};
-    const auto& roles = tags[idx].roles;
-    if (std::find(roles.begin(), roles.end(), model::TagRole::CauseInput) == roles.end()) continue;
-    const std::string key = model::tag_key(tags[idx].name);
-    bool decided = false;
-    for (const model::Cause& c : impl_->matrix.causes) {
-      if (decided || c.function == model::CauseFunction::Comment) continue;
-      for (const model::CauseTag& t : c.tags) {
-        if (decided || model::tag_key(t.name) != key) continue;
-        decided = true;
-        if (c.input == model::InputKind::Analog && c.analog) {
-          const model::AnalogParams& a = *c.analog;
-          const double limit = a.limit, hysteresis = a.hysteresis;
-          in.tags[idx].value = static_cast<float>(a.limit_type == model::LimitType::High
-                                                      ? limit - hysteresis - 1.0
-                                                      : limit + hysteresis + 1.0);
-        } else {
-          in.tags[idx].value = t.ett ? 0.0f : 1.0f;
-        }
-      }
-    }
-  }
-  return in;
-}
+// S.1: the scenario format's defaults. They are a convention of the input
+// format, not scan-cycle semantics, so the runtime uses the model's one definition.
+model::CycleInput Runtime::default_input() const { return model::default_cycle_input(impl_->matrix); }
 
 void Runtime::step(const model::CycleInput& in) { impl_->step(in); }
 std::uint64_t Runtime::cycles_run() const { return impl_->cycle; }

@@ -223,22 +223,6 @@ TEST(ScenarioParse, CommentOnlyElementsHaveNoStatus) {
             "steps[0].expect.cause[5].active: cause 5 is comment-only and is not processed");
 }
 
-// The runtime offers its own defaults (Runtime::default_input); they must be
-// the scenario defaults, or a scenario would mean different things to
-// `cemv simulate` and to a generated test.
-TEST(ScenarioDefaults, AgreeWithTheRuntime) {
-  Matrix m = tank();
-  runtime::Runtime rt(m);
-  CycleInput mine = default_cycle_input(m);
-  CycleInput theirs = rt.default_input();
-  ASSERT_EQ(mine.tags.size(), theirs.tags.size());
-  InputTable t(m);
-  for (std::size_t i = 0; i < mine.tags.size(); ++i) {
-    EXPECT_EQ(mine.tags[i].value, theirs.tags[i].value) << t.tags()[i].name;
-    EXPECT_EQ(mine.tags[i].bad_quality, theirs.tags[i].bad_quality) << t.tags()[i].name;
-  }
-}
-
 }  // namespace
 }  // namespace cemv::testing
 
