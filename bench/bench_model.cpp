@@ -2,7 +2,7 @@
 // generated 128 x 128 x 1024 matrix in under 50 ms.
 #include <benchmark/benchmark.h>
 
-#include "model/format.hpp"
+#include "formats/matrix_json.hpp"
 #include "model/validate.hpp"
 #include "tests/support/random_matrix.hpp"
 
@@ -11,14 +11,14 @@ namespace {
 using namespace cemv;
 
 const std::string& big_text() {
-  static const std::string text = model::to_canonical_json(testsupport::big_matrix(1));
+  static const std::string text = formats::to_canonical_json(testsupport::big_matrix(1));
   return text;
 }
 
 void BM_LoadAndValidateBigMatrix(benchmark::State& state) {
   const std::string& text = big_text();
   for (auto _ : state) {
-    model::Matrix m = model::parse_matrix(text, "big.json");
+    model::Matrix m = formats::parse_matrix(text, "big.json");
     auto diagnostics = model::validate(m);
     benchmark::DoNotOptimize(diagnostics.data());
   }
@@ -30,14 +30,14 @@ BENCHMARK(BM_LoadAndValidateBigMatrix)->Unit(benchmark::kMillisecond);
 void BM_ParseBigMatrix(benchmark::State& state) {
   const std::string& text = big_text();
   for (auto _ : state) {
-    model::Matrix m = model::parse_matrix(text, "big.json");
+    model::Matrix m = formats::parse_matrix(text, "big.json");
     benchmark::DoNotOptimize(m.causes.data());
   }
 }
 BENCHMARK(BM_ParseBigMatrix)->Unit(benchmark::kMillisecond);
 
 void BM_ValidateBigMatrix(benchmark::State& state) {
-  model::Matrix m = model::parse_matrix(big_text(), "big.json");
+  model::Matrix m = formats::parse_matrix(big_text(), "big.json");
   for (auto _ : state) {
     auto diagnostics = model::validate(m);
     benchmark::DoNotOptimize(diagnostics.data());
@@ -48,7 +48,7 @@ BENCHMARK(BM_ValidateBigMatrix)->Unit(benchmark::kMillisecond);
 void BM_CanonicalJsonBigMatrix(benchmark::State& state) {
   model::Matrix m = testsupport::big_matrix(1);
   for (auto _ : state) {
-    std::string text = model::to_canonical_json(m);
+    std::string text = formats::to_canonical_json(m);
     benchmark::DoNotOptimize(text.data());
   }
 }

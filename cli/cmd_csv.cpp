@@ -4,8 +4,8 @@
 #include <memory>
 
 #include "cli/commands.hpp"
-#include "model/csv.hpp"
-#include "model/format.hpp"
+#include "formats/csv.hpp"
+#include "formats/matrix_json.hpp"
 
 namespace cemv::cli {
 
@@ -38,8 +38,8 @@ void add_csv_commands(CLI::App& app, Context& ctx) {
   exp->add_option("FILE", ex->file, "Matrix file (cemv-matrix/1)")->required();
   exp->add_option("-o,--output", ex->output, "Write the CSV here instead of stdout");
   exp->callback([ex, &ctx] {
-    const model::Matrix m = model::load_matrix(ex->file);
-    ctx.exit_code = write_output(ex->output, model::export_csv(m), "CSV file") ? 0 : 2;
+    const model::Matrix m = formats::load_matrix(ex->file);
+    ctx.exit_code = write_output(ex->output, formats::export_csv(m), "CSV file") ? 0 : 2;
   });
 
   struct ImportOptions {
@@ -63,17 +63,17 @@ void add_csv_commands(CLI::App& app, Context& ctx) {
   imp->add_option("--name", im->name,
                   "Grid: the matrix name (at most 16 characters, 6.1.2; default: from the file name)");
   imp->callback([im, &ctx] {
-    model::CsvImportOptions options;
-    options.layout = im->layout == "records" ? model::CsvLayoutKind::Records
-                     : im->layout == "grid"  ? model::CsvLayoutKind::Grid
-                                             : model::CsvLayoutKind::Auto;
+    formats::CsvImportOptions options;
+    options.layout = im->layout == "records" ? formats::CsvLayoutKind::Records
+                     : im->layout == "grid"  ? formats::CsvLayoutKind::Grid
+                                             : formats::CsvLayoutKind::Auto;
     options.matrix_name = im->name;
     if (!im->separator.empty()) options.separator = im->separator == "tab" ? '\t' : im->separator[0];
-    const std::string text = model::read_text_file(im->input);
-    const model::CsvImportResult result = model::import_csv(text, im->input, options);
+    const std::string text = formats::read_text_file(im->input);
+    const formats::CsvImportResult result = formats::import_csv(text, im->input, options);
     for (const auto& w : result.warnings) std::cerr << "warning: " << w.str() << "\n";
     ctx.exit_code =
-        write_output(im->output, model::to_canonical_json(result.matrix), "matrix") ? 0 : 2;
+        write_output(im->output, formats::to_canonical_json(result.matrix), "matrix") ? 0 : 2;
   });
 }
 

@@ -1,12 +1,12 @@
 // `cemv fmt` and `cemv signature`: the canonical form of a matrix and its
-// SHA-256 signature (docs/format.md). An invalid file throws model::LoadError,
+// SHA-256 signature (docs/format.md). An invalid file throws formats::LoadError,
 // which main() prints as `error: <where>: <what>` lines with exit status 2.
 #include <iostream>
 #include <memory>
 #include <string>
 
 #include "cli/commands.hpp"
-#include "model/format.hpp"
+#include "formats/matrix_json.hpp"
 
 namespace cemv::cli {
 
@@ -26,11 +26,11 @@ void add_model_commands(CLI::App& app, Context& ctx) {
   fmt_cmd->add_option("FILE", fmt->file, "Matrix file (cemv-matrix/1 JSON)")->required();
   fmt_cmd->add_option("-o,--output", fmt->out, "Write here instead of standard output (may be FILE itself)");
   fmt_cmd->callback([fmt, &ctx] {
-    model::Matrix m = model::load_matrix(fmt->file);
+    model::Matrix m = formats::load_matrix(fmt->file);
     if (fmt->out.empty()) {
-      std::cout << model::to_canonical_json(m) << std::flush;
+      std::cout << formats::to_canonical_json(m) << std::flush;
     } else {
-      model::save_matrix(m, fmt->out);
+      formats::save_matrix(m, fmt->out);
     }
     ctx.exit_code = 0;
   });
@@ -40,7 +40,7 @@ void add_model_commands(CLI::App& app, Context& ctx) {
       "signature", "Print the matrix signature: SHA-256 of the canonical form, lowercase hex");
   sig_cmd->add_option("FILE", *file, "Matrix file (cemv-matrix/1 JSON)")->required();
   sig_cmd->callback([file, &ctx] {
-    std::cout << model::signature(model::load_matrix(*file)) << "\n";
+    std::cout << formats::signature(formats::load_matrix(*file)) << "\n";
     ctx.exit_code = 0;
   });
 }

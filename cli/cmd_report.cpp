@@ -4,8 +4,8 @@
 #include <memory>
 
 #include "cli/commands.hpp"
-#include "model/format.hpp"
-#include "model/report.hpp"
+#include "formats/matrix_json.hpp"
+#include "reports/config_report.hpp"
 
 namespace cemv::cli {
 
@@ -24,9 +24,9 @@ void add_report_commands(CLI::App& app, Context& ctx) {
       ->check(CLI::IsMember({"md", "markdown", "html", "json"}));
   cmd->add_option("-o,--output", opt->output, "Write the report here instead of stdout");
   cmd->callback([opt, &ctx] {
-    const model::Matrix m = model::load_matrix(opt->file);
+    const model::Matrix m = formats::load_matrix(opt->file);
     const std::string text =
-        model::configuration_report(m, *model::report_format_from_string(opt->format));
+        reports::configuration_report(m, *reports::report_format_from_string(opt->format));
     if (opt->output.empty()) {
       std::cout << text;
       std::cout.flush();

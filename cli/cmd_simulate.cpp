@@ -12,9 +12,9 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
-#include "model/format.hpp"
-#include "model/io.hpp"
-#include "model/scenario.hpp"
+#include "formats/matrix_json.hpp"
+#include "model/vocabulary.hpp"
+#include "formats/scenario.hpp"
 #include "model/validate.hpp"
 #include "runtime/runtime.hpp"
 
@@ -110,7 +110,7 @@ void print_timing(std::ostream& out, const std::vector<Timeline>& lines, std::ui
 
 int run_simulate(const std::string& matrix_file, const std::string& scenario_file,
                  const std::string& trace_file) {
-  model::Matrix m = model::load_matrix(matrix_file);
+  model::Matrix m = formats::load_matrix(matrix_file);
   auto diags = model::validate(m);
   if (model::has_errors(diags)) {
     std::cerr << "error: " << matrix_file
@@ -121,8 +121,8 @@ int run_simulate(const std::string& matrix_file, const std::string& scenario_fil
                   << "\n";
     return 2;
   }
-  model::Scenario sc = model::load_scenario(scenario_file, m);
-  model::ExpandedScenario ex = model::expand_scenario(sc, m);
+  formats::Scenario sc = formats::load_scenario(scenario_file, m);
+  formats::ExpandedScenario ex = formats::expand_scenario(sc, m);
 
   runtime::Runtime rt(m);
   const model::InputTable& inputs = rt.inputs();
@@ -187,7 +187,7 @@ int run_simulate(const std::string& matrix_file, const std::string& scenario_fil
         ++checked;
         std::string actual;
         bool ok = false;
-        if (x.target.kind == model::ExpectTarget::Kind::OutputTag) {
+        if (x.target.kind == formats::ExpectTarget::Kind::OutputTag) {
           auto v = rt.output(x.target.output_tag);
           actual = v ? (*v ? "true" : "false") : "unknown";
           ok = v && static_cast<int>(*v) == x.expected;
@@ -198,7 +198,7 @@ int run_simulate(const std::string& matrix_file, const std::string& scenario_fil
           } else {
             int v = snap[it->second];
             if (x.type == model::FieldType::Bool) v = v != 0;
-            actual = model::expectation_value_text(x.type, v);
+            actual = formats::expectation_value_text(x.type, v);
             ok = v == x.expected;
           }
         }
@@ -206,7 +206,7 @@ int run_simulate(const std::string& matrix_file, const std::string& scenario_fil
           ++failed;
           std::cout << "FAIL steps[" << chk.step << "] (cycle " << cycle_no << ", t = "
                     << c * m.cycle_ms << " ms): " << x.key << " expected "
-                    << model::expectation_value_text(x.type, x.expected) << ", actual " << actual
+                    << formats::expectation_value_text(x.type, x.expected) << ", actual " << actual
                     << "\n";
         }
       }
@@ -215,7 +215,7 @@ int run_simulate(const std::string& matrix_file, const std::string& scenario_fil
   }
 
   print_timing(std::cout, timing, m.cycle_ms);
-  std::string sig = model::signature(m);
+  std::string sig = formats::signature(m);
   std::cout << "matrix " << m.name << " signature " << sig << "\n";
   std::cout << "scenario " << scenario_file << ": " << sc.steps.size() << " steps, "
             << ex.cycles.size() << " cycles, " << checked << " expectations, " << failed

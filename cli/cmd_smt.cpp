@@ -10,7 +10,7 @@
 #include "cli/commands.hpp"
 #include "encoder/encode.hpp"
 #include "encoder/export.hpp"
-#include "model/format.hpp"
+#include "formats/matrix_json.hpp"
 #include "model/validate.hpp"
 
 namespace cemv::cli {
@@ -51,7 +51,7 @@ bool parse_roots(const std::string& text, std::vector<model::Node>& out, std::st
 }
 
 void run(const SmtOptions& o, Context& ctx) {
-  model::Matrix m = model::load_matrix(o.file);
+  model::Matrix m = formats::load_matrix(o.file);
   auto ds = model::validate(m);
   if (model::has_errors(ds)) {
     std::cerr << "error: " << o.file << " has validation errors (run cemv validate)\n";

@@ -1,6 +1,6 @@
 // `cemv validate` (the validation report of 11.5) and `cemv graph` (the
 // dependency graph and evaluation order), docs/validation.md. An unreadable or
-// malformed file throws model::LoadError, which main() prints with exit 2.
+// malformed file throws formats::LoadError, which main() prints with exit 2.
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -11,8 +11,9 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
-#include "model/format.hpp"
+#include "formats/matrix_json.hpp"
 #include "model/graph.hpp"
+#include "reports/dot.hpp"
 #include "model/validate.hpp"
 
 namespace cemv::cli {
@@ -39,7 +40,7 @@ std::string text_report(const model::Matrix& m, const std::vector<model::Diagnos
         << d.element << "  [" << d.section << "]  " << d.message << "\n";
   }
   out << errors << " errors, " << warnings << " warnings\n";
-  out << "signature: " << model::signature(m) << "\n";
+  out << "signature: " << formats::signature(m) << "\n";
   return out.str();
 }
 
@@ -57,7 +58,7 @@ std::string json_report(const model::Matrix& m, const std::vector<model::Diagnos
   nlohmann::ordered_json j;
   j["format"] = "cemv-validation/1";
   j["matrix"] = m.name;
-  j["signature"] = model::signature(m);
+  j["signature"] = formats::signature(m);
   j["errors"] = errors;
   j["warnings"] = warnings;
   j["diagnostics"] = std::move(diagnostics);
@@ -98,7 +99,7 @@ void add_validate_commands(CLI::App& app, Context& ctx) {
   validate_cmd->add_option("--format", vopt->format, "Output format: text (default) or json")
       ->check(CLI::IsMember({"text", "json"}));
   validate_cmd->callback([vopt, &ctx] {
-    model::Matrix m = model::load_matrix(vopt->file);
+    model::Matrix m = formats::load_matrix(vopt->file);
     auto ds = model::validate(m);
     std::cout << (vopt->format == "json" ? json_report(m, ds) : text_report(m, ds)) << std::flush;
     ctx.exit_code = model::has_errors(ds) ? 1 : 0;
@@ -114,9 +115,9 @@ void add_validate_commands(CLI::App& app, Context& ctx) {
   graph_cmd->add_flag("--order", gopt->order,
                       "Print the evaluation order (one node per line) instead of DOT");
   graph_cmd->callback([gopt, &ctx] {
-    model::Matrix m = model::load_matrix(gopt->file);
+    model::Matrix m = formats::load_matrix(gopt->file);
     model::DependencyGraph g(m);
-    std::string text = gopt->order ? order_report(m, g) : g.to_dot(m);
+    std::string text = gopt->order ? order_report(m, g) : cemv::reports::to_dot(m, g);
     if (gopt->out.empty()) {
       std::cout << text << std::flush;
     } else {

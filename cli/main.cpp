@@ -3,7 +3,7 @@
 #include <iostream>
 
 #include "cli/commands.hpp"
-#include "model/format.hpp"
+#include "formats/matrix_json.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"cemv: verification and acceptance tests for safety cause & effect matrices"};
@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     int rc = app.exit(e);
     return rc == 0 ? 0 : 2;
-  } catch (const cemv::model::LoadError& e) {
+  } catch (const cemv::formats::LoadError& e) {
     for (const auto& issue : e.issues()) std::cerr << "error: " << issue.str() << "\n";
     return 2;
   } catch (const std::exception& e) {

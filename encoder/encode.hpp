@@ -12,7 +12,7 @@
 
 #include "encoder/transition_system.hpp"
 #include "model/graph.hpp"
-#include "model/io.hpp"
+#include "model/vocabulary.hpp"
 #include "model/matrix.hpp"
 
 namespace cemv::encoder {

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "encoder/encode.hpp"
-#include "model/io.hpp"
+#include "model/vocabulary.hpp"
 
 namespace cemv::encoder {
 

@@ -10,16 +10,9 @@
 #include <vector>
 
 #include "model/matrix.hpp"
+#include "model/node.hpp"
 
 namespace cemv::model {
-
-struct Node {
-  enum class Kind { Cause, Effect } kind = Kind::Cause;
-  int id = 0;
-  // Causes before effects, then by id: the tie-break of the evaluation order.
-  auto operator<=>(const Node&) const = default;
-};
-std::string to_string(const Node& n);  // "cause[3]" / "effect[2]"
 
 // One internal reference (6.1.3) read by a processed cause or effect: which
 // element reads it, in which field, and which element (and output tag) it names.
@@ -81,8 +74,6 @@ class DependencyGraph {
   std::vector<Node> feeders_of(const Node& n) const;
   std::vector<Node> reach_of(const Node& n) const;
   std::vector<Node> feeders_of(const std::vector<Node>& roots) const;
-
-  std::string to_dot(const Matrix& m) const;
 
  private:
   struct Impl;

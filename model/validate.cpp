@@ -20,7 +20,7 @@
 #include <tuple>
 
 #include "model/graph.hpp"
-#include "model/io.hpp"
+#include "model/vocabulary.hpp"
 
 namespace cemv::model {
 

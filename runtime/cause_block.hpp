@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <string>
 
-#include "model/io.hpp"
+#include "model/vocabulary.hpp"
 #include "model/matrix.hpp"
 #include "runtime/signals.hpp"
 

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "model/graph.hpp"
-#include "model/scenario.hpp"
+#include "model/vocabulary.hpp"
 #include "runtime/cause_block.hpp"
 #include "runtime/effect_block.hpp"
 #include "runtime/signals.hpp"

@@ -4,7 +4,8 @@
 
 #include "encoder/encode.hpp"
 #include "encoder/evaluate.hpp"
-#include "model/format.hpp"
+#include "formats/matrix_json.hpp"
+#include "model/text.hpp"
 #include "model/validate.hpp"
 #include "runtime/runtime.hpp"
 
@@ -150,7 +151,7 @@ std::string report(std::uint64_t seed, const model::Matrix& m0,
     << " (0-based): " << d.key << " runtime=" << d.runtime << " encoder=" << d.encoder << "\n"
     << "(original: cycle " << d0.cycle << ", " << d0.key << ")\n"
     << "minimized matrix:\n"
-    << model::to_canonical_json(m) << "inputs:\n"
+    << formats::to_canonical_json(m) << "inputs:\n"
     << input_text(m, in);
   return o.str();
 }

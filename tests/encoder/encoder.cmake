@@ -8,7 +8,7 @@ endif()
 
 if(TARGET cemv_encoder AND TARGET cemv_runtime AND TARGET cemv_testsupport)
   add_library(cemv_encoder_diff STATIC ${CMAKE_CURRENT_LIST_DIR}/diff_support.cpp)
-  target_link_libraries(cemv_encoder_diff PUBLIC cemv_encoder cemv_runtime cemv_testsupport)
+  target_link_libraries(cemv_encoder_diff PUBLIC cemv_encoder cemv_runtime cemv_formats cemv_testsupport)
 
   add_executable(test_encoder_differential ${CMAKE_CURRENT_LIST_DIR}/test_differential.cpp)
   target_compile_definitions(test_encoder_differential PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")

@@ -6,8 +6,8 @@
 
 #include "encoder/encode.hpp"
 #include "encoder/evaluate.hpp"
-#include "model/format.hpp"
-#include "model/scenario.hpp"
+#include "formats/matrix_json.hpp"
+#include "formats/scenario.hpp"
 #include "tests/encoder/diff_support.hpp"
 #include "tests/support/random_inputs.hpp"
 #include "tests/support/random_matrix.hpp"
@@ -121,7 +121,7 @@ TEST(Examples, RandomInputsAgree) {
   auto files = example_matrices();
   ASSERT_FALSE(files.empty());
   for (const auto& f : files) {
-    model::Matrix m = model::load_matrix(f);
+    model::Matrix m = formats::load_matrix(f);
     for (std::uint64_t seed = 1; seed <= 5; ++seed) {
       auto inputs = testsupport::random_inputs(m, seed, kCycles);
       auto d = encoder_test::compare(m, inputs);
@@ -149,14 +149,14 @@ TEST(Scenarios, EncoderMeetsExpectationsAndAgrees) {
   ASSERT_FALSE(cases.empty());
   int checked = 0;
   for (const auto& [mf, sf] : cases) {
-    model::Matrix m = model::load_matrix(mf);
-    model::Scenario sc;
+    model::Matrix m = formats::load_matrix(mf);
+    formats::Scenario sc;
     try {
-      sc = model::load_scenario(sf, m);
-    } catch (const model::LoadError&) {
+      sc = formats::load_scenario(sf, m);
+    } catch (const formats::LoadError&) {
       continue;  // negative scenario files (rejected input) are the runtime's tests
     }
-    auto ex = model::expand_scenario(sc, m);
+    auto ex = formats::expand_scenario(sc, m);
     z3::context ctx;
     auto enc = encoder::encode(ctx, m);
     encoder::Evaluator ev(*enc);

@@ -11,7 +11,7 @@
 #include "encoder/evaluate.hpp"
 #include "encoder/export.hpp"
 #include "encoder/unroller.hpp"
-#include "model/io.hpp"
+#include "model/vocabulary.hpp"
 #include "tests/support/random_inputs.hpp"
 #include "tests/support/random_matrix.hpp"
 

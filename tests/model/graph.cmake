@@ -1,7 +1,7 @@
 # Dependency graph (model/graph.cpp): evaluation order, cycles, cone of influence, DOT.
 add_executable(test_model_graph ${CMAKE_CURRENT_LIST_DIR}/test_graph.cpp)
 target_include_directories(test_model_graph PRIVATE ${CMAKE_CURRENT_LIST_DIR})
-target_link_libraries(test_model_graph PRIVATE cemv_model GTest::gtest_main)
+target_link_libraries(test_model_graph PRIVATE cemv_model cemv_reports GTest::gtest_main)
 gtest_discover_tests(test_model_graph DISCOVERY_MODE PRE_TEST)
 
 # `cemv graph`: DOT (red edge for the reference that closes a cycle) or the
@@ -24,6 +24,6 @@ cemv_cli_test(NAME cli_graph_malformed_exit_2 EXIT 2
 # Properties on seeded random matrices from tests/support.
 if(TARGET cemv_testsupport)
   add_executable(test_model_graph_random ${CMAKE_CURRENT_LIST_DIR}/test_graph_random.cpp)
-  target_link_libraries(test_model_graph_random PRIVATE cemv_testsupport cemv_model GTest::gtest_main)
+  target_link_libraries(test_model_graph_random PRIVATE cemv_testsupport cemv_model cemv_reports GTest::gtest_main)
   gtest_discover_tests(test_model_graph_random DISCOVERY_MODE PRE_TEST)
 endif()

@@ -8,14 +8,15 @@
 #include <set>
 #include <sstream>
 
-#include "model/format.hpp"
-#include "model/io.hpp"
+#include "formats/matrix_json.hpp"
+#include "model/vocabulary.hpp"
 #include "model/validate.hpp"
 #include "runtime/runtime.hpp"
 #include "tests/support/random_inputs.hpp"
 #include "tests/support/random_matrix.hpp"
 
 using namespace cemv::model;
+using namespace cemv::formats;
 using namespace cemv::testsupport;
 
 namespace {

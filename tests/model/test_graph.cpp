@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "model/graph.hpp"
+#include "reports/dot.hpp"
 #include "validate_cases/builder.hpp"
 
 namespace cemv::model {
@@ -366,18 +367,18 @@ TEST(Dot, GoldenOutput) {
       "  \"effect[2]\" -> \"cause[1]\" [label=\"Effect[2] as bypass_tag\\n(previous cycle)\", "
       "style=dashed, color=red, fontcolor=red];\n"
       "}\n";
-  EXPECT_EQ(g.to_dot(m), want);
+  EXPECT_EQ(cemv::reports::to_dot(m, g), want);
 }
 
 TEST(Dot, DeterministicAcrossBuilds) {
   Matrix m = testcases::clean_matrix();
-  std::string first = DependencyGraph(m).to_dot(m);
-  for (int i = 0; i < 5; ++i) EXPECT_EQ(DependencyGraph(m).to_dot(m), first);
+  std::string first = cemv::reports::to_dot(m, DependencyGraph(m));
+  for (int i = 0; i < 5; ++i) EXPECT_EQ(cemv::reports::to_dot(m, DependencyGraph(m)), first);
   // The graph of a moved-from object is still usable after move assignment.
   DependencyGraph a(m);
   DependencyGraph c(dot_matrix());
   c = std::move(a);
-  EXPECT_EQ(c.to_dot(m), first);
+  EXPECT_EQ(cemv::reports::to_dot(m, c), first);
 }
 
 TEST(Graph, EmptyMatrix) {
@@ -386,7 +387,7 @@ TEST(Graph, EmptyMatrix) {
   EXPECT_TRUE(g.evaluation_order().empty());
   EXPECT_TRUE(g.edges().empty());
   EXPECT_TRUE(g.cycles().empty());
-  EXPECT_EQ(g.to_dot(m),
+  EXPECT_EQ(cemv::reports::to_dot(m, g),
             "digraph \"matrix\" {\n"
             "  graph [rankdir=LR, labelloc=t, label=\"matrix: dependency graph (dashed: internal "
             "reference, red: reads the previous cycle)\"];\n"

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "model/graph.hpp"
+#include "reports/dot.hpp"
 #include "model/validate.hpp"
 #include "tests/support/random_matrix.hpp"
 
@@ -72,7 +73,7 @@ TEST(RandomMatrices, ValidWithConsistentOrder) {
     EXPECT_EQ(dump(validate(m)), dump(ds));
     DependencyGraph g(m);
     check_graph(m, g);
-    EXPECT_EQ(DependencyGraph(m).to_dot(m), g.to_dot(m));
+    EXPECT_EQ(cemv::reports::to_dot(m, DependencyGraph(m)), cemv::reports::to_dot(m, g));
   }
 }
 

@@ -4,7 +4,7 @@
 if(TARGET cemv_runtime)
   foreach(t scenario runtime_voting_tables runtime_cause_functions runtime_timers)
     add_executable(test_${t} ${CMAKE_CURRENT_LIST_DIR}/test_${t}.cpp)
-    target_link_libraries(test_${t} PRIVATE cemv_runtime cemv_model GTest::gtest_main)
+    target_link_libraries(test_${t} PRIVATE cemv_runtime cemv_formats GTest::gtest_main)
     target_include_directories(test_${t} PRIVATE ${CMAKE_CURRENT_LIST_DIR})
     gtest_discover_tests(test_${t} DISCOVERY_MODE PRE_TEST)
   endforeach()

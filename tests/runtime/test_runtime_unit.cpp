@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "model/io.hpp"
+#include "model/vocabulary.hpp"
 #include "model/matrix.hpp"
 #include "runtime/runtime.hpp"
 

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "model/io.hpp"
-#include "model/scenario.hpp"
+#include "model/vocabulary.hpp"
+#include "model/vocabulary.hpp"
 #include "runtime/runtime.hpp"
 #include "tests/support/random_inputs.hpp"
 #include "tests/support/random_matrix.hpp"

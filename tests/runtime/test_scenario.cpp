@@ -4,8 +4,8 @@
 // that the runtime's own defaults agree with the scenario defaults.
 #include <gtest/gtest.h>
 
-#include "model/format.hpp"
-#include "model/scenario.hpp"
+#include "formats/matrix_json.hpp"
+#include "formats/scenario.hpp"
 #include "test_sim.hpp"
 
 namespace cemv::testing {

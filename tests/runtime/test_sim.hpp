@@ -1,6 +1,6 @@
 // Test harness for the runtime tables and timer tests: builds small matrices in
 // code (no loader involved, so these tests check the runtime alone) and drives
-// the runtime cycle by cycle with scenario defaults (model/scenario.hpp).
+// the runtime cycle by cycle with scenario defaults (model/vocabulary.hpp).
 #pragma once
 
 #include <gtest/gtest.h>
@@ -10,14 +10,15 @@
 #include <string_view>
 #include <vector>
 
-#include "model/io.hpp"
+#include "model/vocabulary.hpp"
 #include "model/matrix.hpp"
-#include "model/scenario.hpp"
+#include "formats/scenario.hpp"
 #include "runtime/runtime.hpp"
 
 namespace cemv::testing {
 
 using namespace cemv::model;
+using namespace cemv::formats;
 
 // Analog parameters used throughout: high limit 90 / low limit 10, hysteresis 5
 // (so the relaxed thresholds of 6.3.1 are 85 and 15, the defaults 84 and 16).

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "model/io.hpp"
+#include "model/vocabulary.hpp"
 #include "model/matrix.hpp"
 
 namespace cemv::testsupport {

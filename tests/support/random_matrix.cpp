@@ -7,7 +7,7 @@
 #include <set>
 #include <string>
 
-#include "model/io.hpp"
+#include "model/vocabulary.hpp"
 
 namespace cemv::testsupport {
 

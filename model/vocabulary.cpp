@@ -1,4 +1,4 @@
-#include "model/io.hpp"
+#include "model/vocabulary.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -198,6 +198,36 @@ std::vector<Observable> observables(const Matrix& m) {
                      Node::Kind::Effect, e.id, "tag", k});
   }
   return out;
+}
+
+TagValue default_tag_value(const Matrix& m, const InputTag& tag) {
+  TagValue v;
+  if (std::find(tag.roles.begin(), tag.roles.end(), TagRole::CauseInput) == tag.roles.end())
+    return v;  // Boolean control and process tags: FALSE
+  std::string key = tag_key(tag.name);
+  for (const auto& c : m.causes) {
+    if (c.function == CauseFunction::Comment) continue;
+    for (const auto& t : c.tags) {
+      if (tag_key(t.name) != key) continue;
+      if (c.input == InputKind::Analog && c.analog) {
+        double limit = c.analog->limit, hyst = c.analog->hysteresis;
+        double x = c.analog->limit_type == LimitType::High ? limit - hyst - 1.0 : limit + hyst + 1.0;
+        v.value = static_cast<float>(x);
+      } else {
+        // 6.3.4: DTT trips on FALSE, so its healthy value is TRUE; ETT the opposite.
+        v.value = t.ett ? 0.0f : 1.0f;
+      }
+      return v;
+    }
+  }
+  return v;
+}
+
+CycleInput default_cycle_input(const Matrix& m) {
+  InputTable table(m);
+  CycleInput in;
+  for (const auto& t : table.tags()) in.tags.push_back(default_tag_value(m, t));
+  return in;
 }
 
 }  // namespace cemv::model

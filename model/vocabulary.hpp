@@ -11,8 +11,8 @@
 #include <string_view>
 #include <vector>
 
-#include "model/graph.hpp"
 #include "model/matrix.hpp"
+#include "model/node.hpp"
 
 namespace cemv::model {
 
@@ -114,6 +114,17 @@ struct CycleInput {
   std::vector<TagValue> tags;
   std::vector<Command> commands;
 };
+
+// ---- Default inputs ---------------------------------------------------------
+
+// The value of one input tag before any scenario sets it (docs/scenario.md, "Defaults"):
+// cause inputs at their non-tripped value (discrete DTT TRUE, ETT FALSE; analog
+// high limit - hysteresis - 1.0, low limit + hysteresis + 1.0, computed in double
+// and rounded once to float), every other Boolean tag FALSE, good quality. A tag
+// read by several causes takes the value of the first cause (by id) that reads it.
+TagValue default_tag_value(const Matrix& m, const InputTag& tag);
+// Every input at its default, no commands; indexed by InputTable(m).
+CycleInput default_cycle_input(const Matrix& m);
 
 // ---- Status fields (the scenario format's expect keys) ----------------------
 

@@ -1,4 +1,4 @@
-// The table of malformed cemv-matrix/1 files (tests/model/malformed/EXPECTED.tsv):
+// The table of malformed cemv-matrix/1 files (tests/formats/malformed/EXPECTED.tsv):
 // each file must be rejected with a LoadError, never a crash, and one of its
 // issue lines (as `cemv fmt` prints them: "error: <where>: <what>") must match
 // the expected regex. The same table drives the CLI tests in format.cmake.
@@ -11,9 +11,10 @@
 #include <string>
 #include <vector>
 
-#include "model/format.hpp"
+#include "formats/matrix_json.hpp"
 
 using namespace cemv::model;
+using namespace cemv::formats;
 namespace fs = std::filesystem;
 
 namespace {
@@ -26,7 +27,7 @@ struct Row {
 // Names the row in gtest's messages instead of dumping its bytes.
 void PrintTo(const Row& row, std::ostream* os) { *os << row.file; }
 
-const fs::path kDir = fs::path(CEMV_SOURCE_DIR) / "tests" / "model" / "malformed";
+const fs::path kDir = fs::path(CEMV_SOURCE_DIR) / "tests" / "formats" / "malformed";
 
 std::vector<Row> read_table() {
   std::vector<Row> rows;

@@ -10,7 +10,7 @@
 
 #include "model/matrix.hpp"
 
-namespace cemv::model {
+namespace cemv::reports {
 
 enum class ReportFormat { Markdown, Html, Json };
 
@@ -20,6 +20,6 @@ std::optional<ReportFormat> report_format_from_string(std::string_view name);
 // The whole report as text. Deterministic: no time stamps, no host data, every
 // list in id order; the HTML form is one self-contained file (inline CSS, no
 // scripts, no external resources); the JSON form has a fixed key order.
-std::string configuration_report(const Matrix& m, ReportFormat format);
+std::string configuration_report(const model::Matrix& m, ReportFormat format);
 
-}  // namespace cemv::model
+}  // namespace cemv::reports

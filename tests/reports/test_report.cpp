@@ -3,12 +3,15 @@
 
 #include <nlohmann/json.hpp>
 
-#include "model/format.hpp"
-#include "model/report.hpp"
+#include "formats/matrix_json.hpp"
+#include "reports/config_report.hpp"
 #include "model/validate.hpp"
-#include "test_csv_support.hpp"
+#include "tests/formats/test_csv_support.hpp"
 
-namespace cemv::model {
+namespace cemv::reports {
+
+using namespace cemv::model;
+using namespace cemv::formats;
 namespace {
 
 std::size_t count(const std::string& text, const std::string& what) {
@@ -148,4 +151,4 @@ TEST(Report, EmptyMatrixStillHasEverySection) {
 }
 
 }  // namespace
-}  // namespace cemv::model
+}  // namespace cemv::reports

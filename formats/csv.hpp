@@ -16,10 +16,10 @@
 #include <string_view>
 #include <vector>
 
-#include "model/format.hpp"
+#include "formats/diagnostics.hpp"
 #include "model/matrix.hpp"
 
-namespace cemv::model {
+namespace cemv::formats {
 
 inline constexpr const char* kCsvLayout = "cemv-csv/1";
 
@@ -53,7 +53,7 @@ std::string csv_quote(std::string_view field, char separator = ',');
 // ---- The record layout --------------------------------------------------------
 
 // The whole matrix as a `cemv-csv/1` file (CRLF line ends, deterministic).
-std::string export_csv(const Matrix& m);
+std::string export_csv(const model::Matrix& m);
 
 // ---- Import -------------------------------------------------------------------
 
@@ -68,7 +68,7 @@ struct CsvImportOptions {
 };
 
 struct CsvImportResult {
-  Matrix matrix;                    // already checked by parse_matrix
+  model::Matrix matrix;                    // already checked by parse_matrix
   std::vector<LoadIssue> warnings;  // in file order
   CsvLayoutKind layout = CsvLayoutKind::Records;
 };
@@ -86,4 +86,4 @@ CsvImportResult import_csv(std::string_view text, const std::string& source_name
 // nothing is left.
 std::string sanitize_identifier(std::string_view text, std::size_t max_length);
 
-}  // namespace cemv::model
+}  // namespace cemv::formats

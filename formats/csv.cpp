@@ -1,5 +1,5 @@
 // Spreadsheet import and export (6.6), docs/csv.md.
-#include "model/csv.hpp"
+#include "formats/csv.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -12,9 +12,14 @@
 #include <set>
 #include <utility>
 
-#include "model/io.hpp"
+#include "formats/matrix_json.hpp"
+#include "model/names.hpp"
+#include "model/text.hpp"
+#include "model/vocabulary.hpp"
 
-namespace cemv::model {
+namespace cemv::formats {
+
+using namespace cemv::model;
 
 namespace {
 
@@ -1398,4 +1403,4 @@ CsvImportResult import_csv(std::string_view text, const std::string& source_name
   return GridImporter(std::move(rows), source_name, options.matrix_name).run();
 }
 
-}  // namespace cemv::model
+}  // namespace cemv::formats

@@ -1,11 +1,11 @@
 # Spreadsheet import/export (6.6, docs/csv.md).
-add_executable(test_model_csv ${CMAKE_CURRENT_LIST_DIR}/test_csv.cpp ${CMAKE_CURRENT_LIST_DIR}/test_csv_grid.cpp)
-target_link_libraries(test_model_csv PRIVATE cemv_model GTest::gtest_main)
-target_compile_definitions(test_model_csv PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
-gtest_discover_tests(test_model_csv DISCOVERY_MODE PRE_TEST)
+add_executable(test_formats_csv ${CMAKE_CURRENT_LIST_DIR}/test_csv.cpp ${CMAKE_CURRENT_LIST_DIR}/test_csv_grid.cpp)
+target_link_libraries(test_formats_csv PRIVATE cemv_formats GTest::gtest_main)
+target_compile_definitions(test_formats_csv PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+gtest_discover_tests(test_formats_csv DISCOVERY_MODE PRE_TEST)
 
 # The command line: exit statuses and messages (cwd = repo root).
-set(CSV_CASES tests/model/csv_cases)
+set(CSV_CASES tests/formats/csv_cases)
 set(LSST ${CSV_CASES}/lsst/lsst-tma-interlock-table.csv)
 set(CSV_TMP ${CMAKE_CURRENT_BINARY_DIR}/csv_cli)
 file(MAKE_DIRECTORY ${CSV_TMP})
@@ -26,7 +26,7 @@ cemv_cli_test(NAME cli_import_csv_separator_option EXIT 0 MATCH "\"name\": \"E_2
 cemv_cli_test(NAME cli_import_csv_missing_file EXIT 2 MATCH "error: .*no_such_file.csv"
   COMMAND $<TARGET_FILE:cemv> import-csv ${CSV_CASES}/no_such_file.csv)
 cemv_cli_test(NAME cli_import_csv_unterminated_quote EXIT 2
-  MATCH "error: tests/model/csv_cases/bad_unterminated_quote.csv: line 3, column 3: quoted field never closed"
+  MATCH "error: tests/formats/csv_cases/bad_unterminated_quote.csv: line 3, column 3: quoted field never closed"
   COMMAND $<TARGET_FILE:cemv> import-csv ${CSV_CASES}/bad_unterminated_quote.csv)
 cemv_cli_test(NAME cli_import_csv_bad_values EXIT 2
   MATCH "line 6, column 4: type: 'Z' is not one of"

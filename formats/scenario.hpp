@@ -17,10 +17,11 @@
 #include <string_view>
 #include <vector>
 
-#include "model/io.hpp"
+#include "formats/diagnostics.hpp"
+#include "model/vocabulary.hpp"
 #include "model/matrix.hpp"
 
-namespace cemv::model {
+namespace cemv::formats {
 
 inline constexpr const char* kScenarioFormat = "cemv-scenario/1";
 
@@ -44,7 +45,7 @@ struct ExpectTarget {
   // Status: the observable (same key/kind/id/field/tag as model::observables());
   // OutputTag: the output tag's effect and position as an observable too
   // (field "tag"), plus the name as written in the matrix.
-  Observable observable;
+  model::Observable observable;
   std::string output_tag;
 };
 
@@ -52,16 +53,16 @@ struct Expectation {
   std::string key;          // as written in the scenario
   std::string where;        // JSON path, e.g. "steps[2].expect.cause[1].active"
   ExpectTarget target;
-  FieldType type = FieldType::Bool;
+  model::FieldType type = model::FieldType::Bool;
   int expected = 0;         // Bool 0/1, Int as is, Voting as the Voting enumerator
 };
 // "true", "3", "1oo2": how an expected or actual value of this type is written.
-std::string expectation_value_text(FieldType type, int value);
+std::string expectation_value_text(model::FieldType type, int value);
 
 struct ScenarioStep {
   std::string description;
   std::vector<InputSetting> inputs;
-  std::vector<Command> commands;
+  std::vector<model::Command> commands;
   std::uint64_t cycles = 1;
   std::vector<Expectation> expect;
 };
@@ -76,18 +77,9 @@ struct Scenario {
 // found, each with its JSON path) on syntax errors, unknown keys, unknown tags,
 // commands, causes, effects or expectation keys, wrong types and ms that are
 // not a multiple of cycle_ms.
-Scenario parse_scenario(std::string_view json_text, const Matrix& m,
+Scenario parse_scenario(std::string_view json_text, const model::Matrix& m,
                         const std::string& source_name = "");
-Scenario load_scenario(const std::filesystem::path& file, const Matrix& m);
-
-// The value of one input tag before any scenario sets it (issue 3 section 4):
-// cause inputs at their non-tripped value (discrete DTT TRUE, ETT FALSE; analog
-// high limit - hysteresis - 1.0, low limit + hysteresis + 1.0, computed in double
-// and rounded once to float), every other Boolean tag FALSE, good quality. A tag
-// read by several causes takes the value of the first cause (by id) that reads it.
-TagValue default_tag_value(const Matrix& m, const InputTag& tag);
-// Every input at its default, no commands; indexed by InputTable(m).
-CycleInput default_cycle_input(const Matrix& m);
+Scenario load_scenario(const std::filesystem::path& file, const model::Matrix& m);
 
 // A scenario unrolled into scan cycles.
 struct ExpandedScenario {
@@ -96,12 +88,12 @@ struct ExpandedScenario {
     std::size_t cycle = 0;     // 0-based index into `cycles`: check after this cycle
     const std::vector<Expectation>* expect = nullptr;  // points into the Scenario
   };
-  std::vector<CycleInput> cycles;
+  std::vector<model::CycleInput> cycles;
   std::vector<std::size_t> step_of_cycle;  // 0-based step index of each cycle
   std::vector<Check> checks;               // one per step, in cycle order
 };
 // Inputs persist from cycle to cycle until a step changes them; a step's
 // commands are issued in its first cycle only. `sc` must outlive the result.
-ExpandedScenario expand_scenario(const Scenario& sc, const Matrix& m);
+ExpandedScenario expand_scenario(const Scenario& sc, const model::Matrix& m);
 
-}  // namespace cemv::model
+}  // namespace cemv::formats

@@ -8,17 +8,19 @@
 #include <set>
 #include <tuple>
 
-#include "model/csv.hpp"
-#include "model/format.hpp"
+#include "formats/csv.hpp"
+#include "formats/matrix_json.hpp"
 #include "model/validate.hpp"
 
-namespace cemv::model {
+namespace cemv::formats {
+
+using namespace cemv::model;
 namespace {
 
 // A copy of ../shared/external (the published LSST TMA interlock table), so the
 // suite runs on a fresh clone; csv_cases/lsst/README.md says where it comes from.
 const std::filesystem::path kExternal =
-    std::filesystem::path(CEMV_SOURCE_DIR) / "tests" / "model" / "csv_cases" / "lsst";
+    std::filesystem::path(CEMV_SOURCE_DIR) / "tests" / "formats" / "csv_cases" / "lsst";
 
 CsvImportResult import_file(const std::filesystem::path& p) {
   return import_csv(read_text_file(p), p.filename().string());
@@ -323,4 +325,4 @@ TEST(CsvImportRobustness, MutatedInputsImportOrFailCleanly) {
 }
 
 }  // namespace
-}  // namespace cemv::model
+}  // namespace cemv::formats

@@ -3,7 +3,7 @@
 // The content is built once as a small document (headings, paragraphs, tables)
 // and rendered to Markdown or HTML, so both forms always say the same thing; the
 // JSON form carries the same sections as data plus the canonical matrix itself.
-#include "model/report.hpp"
+#include "reports/config_report.hpp"
 
 #include <map>
 #include <set>
@@ -11,11 +11,15 @@
 
 #include <nlohmann/json.hpp>
 
-#include "model/format.hpp"
-#include "model/io.hpp"
+#include "formats/matrix_json.hpp"
+#include "model/text.hpp"
+#include "model/vocabulary.hpp"
 #include "model/validate.hpp"
 
-namespace cemv::model {
+namespace cemv::reports {
+
+using namespace cemv::model;
+using namespace cemv::formats;
 
 namespace {
 
@@ -753,4 +757,4 @@ std::string configuration_report(const Matrix& m, ReportFormat format) {
   return format == ReportFormat::Html ? render_html(d) : render_markdown(d);
 }
 
-}  // namespace cemv::model
+}  // namespace cemv::reports

@@ -1,6 +1,6 @@
 #include <gtest/gtest.h>
 
-#include "model/io.hpp"
+#include "model/vocabulary.hpp"
 
 using namespace cemv::model;
 

@@ -7,11 +7,14 @@
 #include <regex>
 #include <sstream>
 
-#include "model/csv.hpp"
-#include "model/format.hpp"
+#include "formats/csv.hpp"
+#include "model/names.hpp"
+#include "formats/matrix_json.hpp"
 #include "test_csv_support.hpp"
 
-namespace cemv::model {
+namespace cemv::formats {
+
+using namespace cemv::model;
 namespace {
 
 std::string canonical(const Matrix& m) { return to_canonical_json(parse_matrix(to_canonical_json(m))); }
@@ -259,4 +262,4 @@ TEST(CsvImportErrors, EveryProblemIsReportedNotOnlyTheFirst) {
 }
 
 }  // namespace
-}  // namespace cemv::model
+}  // namespace cemv::formats

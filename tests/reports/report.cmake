@@ -1,7 +1,7 @@
 # The configuration report (11.4, docs/reports.md).
-add_executable(test_model_report ${CMAKE_CURRENT_LIST_DIR}/test_report.cpp)
-target_link_libraries(test_model_report PRIVATE cemv_model GTest::gtest_main)
-gtest_discover_tests(test_model_report DISCOVERY_MODE PRE_TEST)
+add_executable(test_reports_config_report ${CMAKE_CURRENT_LIST_DIR}/test_report.cpp)
+target_link_libraries(test_reports_config_report PRIVATE cemv_reports GTest::gtest_main)
+gtest_discover_tests(test_reports_config_report DISCOVERY_MODE PRE_TEST)
 
 set(REPORT_TMP ${CMAKE_CURRENT_BINARY_DIR}/report_cli)
 file(MAKE_DIRECTORY ${REPORT_TMP})
@@ -13,9 +13,9 @@ cemv_cli_test(NAME cli_report_json EXIT 0 MATCH "\"format\": \"cemv-report/1\""
   COMMAND $<TARGET_FILE:cemv> report examples/pipeline-hipps/matrix.json --format json)
 # Same bytes twice in every format (stdout and -o); the signature at the top and the bottom.
 cemv_cli_test(NAME cli_report_deterministic EXIT 0 MATCH "deterministic, signature [0-9a-f]{64}"
-  COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/csv_cases/cli_report_deterministic.sh $<TARGET_FILE:cemv>
+  COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/cli_report_deterministic.sh $<TARGET_FILE:cemv>
           examples/compressor/matrix.json ${REPORT_TMP})
 cemv_cli_test(NAME cli_report_bad_format EXIT 2 MATCH "format"
   COMMAND $<TARGET_FILE:cemv> report examples/tank-overfill/matrix.json --format pdf)
 cemv_cli_test(NAME cli_report_missing_file EXIT 2 MATCH "error:"
-  COMMAND $<TARGET_FILE:cemv> report tests/model/csv_cases/no_such_matrix.json)
+  COMMAND $<TARGET_FILE:cemv> report tests/formats/csv_cases/no_such_matrix.json)

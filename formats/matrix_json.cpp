@@ -1,7 +1,7 @@
 // cemv-matrix/1: the loader (structural checks only; plausibility is
 // validate.cpp), the canonical writer and the signature. docs/format.md is the
 // field-by-field description of what this file accepts.
-#include "model/format.hpp"
+#include "formats/matrix_json.hpp"
 
 #include <openssl/evp.h>
 
@@ -20,23 +20,13 @@
 #include <map>
 #include <nlohmann/json.hpp>
 
-#include "model/io.hpp"
+#include "model/names.hpp"
+#include "model/text.hpp"
+#include "model/vocabulary.hpp"
 
-namespace cemv::model {
+namespace cemv::formats {
 
-namespace {
-
-std::string summary_of(const std::vector<LoadIssue>& issues) {
-  if (issues.empty()) return "invalid input";
-  std::string s = issues.front().str();
-  if (issues.size() > 1) s += " (and " + std::to_string(issues.size() - 1) + " more)";
-  return s;
-}
-
-}  // namespace
-
-LoadError::LoadError(std::vector<LoadIssue> issues)
-    : std::runtime_error(summary_of(issues)), issues_(std::move(issues)) {}
+using namespace cemv::model;
 
 namespace {
 
@@ -49,45 +39,6 @@ constexpr std::size_t kMaxIssues = 100;
 
 // ---- Text helpers ------------------------------------------------------------
 
-// A user-supplied text as it can be shown in a message: quoted, bytes outside
-// printable ASCII escaped (a message must never carry control characters or
-// broken UTF-8 to the terminal), long texts shortened.
-std::string in_quotes(std::string_view s, std::size_t max_chars = 48) {
-  std::string out = "'";
-  std::size_t shown = 0;
-  for (unsigned char c : s) {
-    if (shown == max_chars) {
-      out += "...";
-      break;
-    }
-    if (c >= 0x20 && c < 0x7f) {
-      out += static_cast<char>(c);
-    } else {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\x%02X", c);
-      out += buf;
-    }
-    ++shown;
-  }
-  return out + "'";
-}
-
-// Same escaping for texts we did not write (nlohmann's messages quote input).
-std::string printable(std::string_view s) {
-  std::string q = in_quotes(s, 200);
-  return q.substr(1, q.size() - 2);
-}
-
-// 1-based line and column (in bytes) of a 0-based byte index.
-std::string line_column(std::string_view text, std::size_t index) {
-  index = std::min(index, text.size());
-  std::string_view before = text.substr(0, index);
-  std::size_t line = 1 + static_cast<std::size_t>(std::count(before.begin(), before.end(), '\n'));
-  std::size_t last_newline = before.rfind('\n');
-  std::size_t column = last_newline == std::string_view::npos ? index + 1 : index - last_newline;
-  return "line " + std::to_string(line) + ", column " + std::to_string(column);
-}
-
 std::string member_path(const std::string& parent, std::string_view key) {
   bool identifier = !key.empty() && key.size() <= 48 &&
                     (std::isalpha(static_cast<unsigned char>(key[0])) || key[0] == '_');
@@ -99,44 +50,6 @@ std::string member_path(const std::string& parent, std::string_view key) {
 
 std::string element_path(const std::string& parent, std::size_t index) {
   return parent + "[" + std::to_string(index) + "]";
-}
-
-std::size_t utf8_length(std::string_view s) {
-  return static_cast<std::size_t>(
-      std::count_if(s.begin(), s.end(), [](char c) { return (static_cast<unsigned char>(c) & 0xC0) != 0x80; }));
-}
-
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> row(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    std::size_t diagonal = row[0];
-    row[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      std::size_t up = row[j];
-      bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) ==
-                  std::tolower(static_cast<unsigned char>(b[j - 1]));
-      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (same ? 0 : 1)});
-      diagonal = up;
-    }
-  }
-  return row[b.size()];
-}
-
-// " (did you mean 'x'?)" when one candidate is a plausible typo of `word`.
-std::string suggestion(std::string_view word, const std::vector<std::string_view>& candidates) {
-  if (word.size() > 64) return "";
-  std::string_view best;
-  std::size_t best_distance = std::numeric_limits<std::size_t>::max();
-  for (auto c : candidates) {
-    std::size_t d = edit_distance(word, c);
-    // A truncated key ("cycle" for "cycle_ms") is a typo too.
-    if (word.size() >= 4 && word.size() < c.size() && edit_distance(word, c.substr(0, word.size())) == 0) d = 1;
-    if (d < best_distance) best_distance = d, best = c;
-  }
-  std::size_t allowed = best.size() <= 3 ? 1 : best.size() <= 8 ? 2 : 3;
-  if (best.empty() || best_distance > allowed) return "";
-  return " (did you mean '" + std::string(best) + "'?)";
 }
 
 // ---- Lexical pre-scan ----------------------------------------------------------
@@ -353,7 +266,7 @@ class Reader {
       if (field == fields.end()) {
         std::vector<std::string_view> known;
         for (const auto& f : fields) known.push_back(f.key);
-        error(member_path(path, key), "unknown key" + suggestion(key, known));
+        error(member_path(path, key), "unknown key" + did_you_mean(key, known));
         continue;
       }
       seen[static_cast<std::size_t>(field - fields.begin())] = true;
@@ -500,7 +413,7 @@ class Reader {
         return true;
       }
     }
-    error(path, in_quotes(s) + " is not one of " + list + suggestion(s, names.names()));
+    error(path, in_quotes(s) + " is not one of " + list + did_you_mean(s, names.names()));
     return false;
   }
 
@@ -1137,63 +1050,6 @@ std::string canonical_text(const Matrix& m) {
 
 }  // namespace
 
-// ---- Names (6.1.4, 3.4) -------------------------------------------------------------
-
-std::optional<std::string> tag_name_problem(std::string_view name) {
-  if (name.empty()) return "tag name is empty";
-  // Internal references are names of their own kind (6.1.3, 6.1.4).
-  if (parse_internal_ref(name)) return std::nullopt;
-  const std::string q = in_quotes(name);
-  if (name.size() > kMaxTagNameLength)
-    return q + " is longer than " + std::to_string(kMaxTagNameLength) + " characters";
-  for (char c : name) {
-    if (c == '"' || c == '%' || c == '~') return q + " contains '" + std::string(1, c) + "', which tag names must not use";
-    auto u = static_cast<unsigned char>(c);
-    if (u < 0x20 || u > 0x7a) {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "0x%02X", u);
-      return q + " contains the byte " + buf + ", outside the permitted characters 0x20-0x7A";
-    }
-  }
-  if (name.front() == ' ') return q + " starts with a blank";
-  if (name.back() == ' ') return q + " ends with a blank";
-  if (name.back() == '\'') return q + " ends with an inverted comma (')";
-  if (name.front() == '@') return q + " starts with '@', which marks an external address";
-  const bool prefix = name.front() == '#';
-  const bool suffix = name.back() == '#';
-  if (!prefix && !suffix) return std::nullopt;
-  // A chart connection: the extra rules of CFC chart inputs apply. With both
-  // marks the suffix is dropped at transfer (6.1.3), so the prefix rules apply.
-  std::string_view body = name.substr(prefix ? 1 : 0);
-  if (suffix && !body.empty()) body.remove_suffix(1);
-  if (body.empty()) return q + " has no name besides '#'";
-  auto letter = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; };
-  auto digit = [](char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0; };
-  if (prefix && !(letter(body.front()) || body.front() == '_'))
-    return q + " must start with a letter or '_' after the '#' prefix";
-  if (!prefix && !(letter(body.front()) || digit(body.front())))
-    return q + " must start with a letter or a digit before the '#' suffix";
-  for (char c : body)
-    if (!(letter(c) || digit(c) || c == '_' || c == ' '))
-      return q + " contains '" + std::string(1, c) +
-             "'; chart connection names ('#') allow only letters, digits, '_' and blanks";
-  if (body.find("__") != std::string_view::npos) return q + " repeats '_'";
-  if (body.back() == '_') return q + " ends with '_'";
-  if (body.back() == ' ') return q + " has a blank before the '#' suffix";
-  return std::nullopt;
-}
-
-std::optional<std::string> element_name_problem(std::string_view name) {
-  if (name.empty()) return "name is empty";
-  for (char c : name)
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_'))
-      return in_quotes(name) + " contains " + in_quotes(std::string_view(&c, 1)) +
-             "; names allow only letters, digits and '_' (6.3.4)";
-  if (name.size() > kMaxElementNameLength)
-    return in_quotes(name) + " is longer than " + std::to_string(kMaxElementNameLength) + " characters (6.3.4)";
-  return std::nullopt;
-}
-
 // ---- Public API ---------------------------------------------------------------------
 
 Matrix parse_matrix(std::string_view json_text, const std::string& source_name) {
@@ -1226,36 +1082,8 @@ Matrix parse_matrix(std::string_view json_text, const std::string& source_name) 
   return m;
 }
 
-std::string read_text_file(const std::filesystem::path& file) {
-  const std::string where = file.string();
-  std::error_code ec;
-  if (std::filesystem::is_directory(file, ec)) throw LoadError({{where, "is a directory, not a file"}});
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw LoadError({{where, std::string("cannot open: ") + std::strerror(errno)}});
-  auto size = std::filesystem::file_size(file, ec);
-  if (!ec && size > kMaxFileBytes)
-    throw LoadError({{where, "file is " + std::to_string(size) + " bytes, larger than the limit of " +
-                                 std::to_string(kMaxFileBytes) + " bytes"}});
-  // Read with a cap as well: pipes and devices have no size to check first.
-  std::string text;
-  char buffer[1 << 16];
-  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
-    text.append(buffer, static_cast<std::size_t>(in.gcount()));
-    if (text.size() > kMaxFileBytes)
-      throw LoadError({{where, "file is larger than the limit of " + std::to_string(kMaxFileBytes) + " bytes"}});
-  }
-  if (in.bad()) throw LoadError({{where, "read error"}});
-  return text;
-}
-
 Matrix load_matrix(const std::filesystem::path& file) {
   return parse_matrix(read_text_file(file), file.string());
-}
-
-std::string float_text(float v) {
-  char buf[64];
-  auto result = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, result.ptr);
 }
 
 std::string to_canonical_json(const Matrix& m) { return canonical_text(m); }
@@ -1284,4 +1112,4 @@ std::string signature(const Matrix& m) {
   return out;
 }
 
-}  // namespace cemv::model
+}  // namespace cemv::formats

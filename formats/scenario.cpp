@@ -1,7 +1,7 @@
 // cemv-scenario/1: parsing against a matrix, defaults, expansion into cycles.
 // The format is the contract of issue 3 section 4; docs/scenario.md describes it
 // field by field.
-#include "model/scenario.hpp"
+#include "formats/scenario.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -12,9 +12,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "model/format.hpp"
+#include "formats/matrix_json.hpp"
 
-namespace cemv::model {
+namespace cemv::formats {
+
+using namespace cemv::model;
 
 namespace {
 
@@ -22,7 +24,7 @@ using nlohmann::json;
 
 // ---- small helpers ---------------------------------------------------------
 
-std::size_t edit_distance(std::string_view a, std::string_view b) {
+std::size_t exact_edit_distance(std::string_view a, std::string_view b) {
   std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
   for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
   for (std::size_t i = 1; i <= a.size(); ++i) {
@@ -44,7 +46,7 @@ std::string did_you_mean(std::string_view word, const std::vector<std::string>& 
   const std::string* best = nullptr;
   std::size_t best_d = std::numeric_limits<std::size_t>::max();
   for (const auto& c : candidates) {
-    std::size_t d = edit_distance(key, tag_key(c));
+    std::size_t d = exact_edit_distance(key, tag_key(c));
     if (d < best_d) {
       best_d = d;
       best = &c;
@@ -72,20 +74,6 @@ std::string sq(std::string_view s) {
   out.append(s);
   out.push_back('\'');
   return out;
-}
-
-// Line and column (1-based) of a byte offset, for syntax errors.
-std::string line_column(std::string_view text, std::size_t offset) {
-  std::size_t line = 1, col = 1;
-  for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      col = 1;
-    } else {
-      ++col;
-    }
-  }
-  return "line " + std::to_string(line) + ", column " + std::to_string(col);
 }
 
 struct DepthExceeded {};
@@ -785,36 +773,6 @@ Scenario load_scenario(const std::filesystem::path& file, const Matrix& m) {
   return parse_scenario(ss.str(), m, file.string());
 }
 
-TagValue default_tag_value(const Matrix& m, const InputTag& tag) {
-  TagValue v;
-  if (std::find(tag.roles.begin(), tag.roles.end(), TagRole::CauseInput) == tag.roles.end())
-    return v;  // Boolean control and process tags: FALSE
-  std::string key = tag_key(tag.name);
-  for (const auto& c : m.causes) {
-    if (c.function == CauseFunction::Comment) continue;
-    for (const auto& t : c.tags) {
-      if (tag_key(t.name) != key) continue;
-      if (c.input == InputKind::Analog && c.analog) {
-        double limit = c.analog->limit, hyst = c.analog->hysteresis;
-        double x = c.analog->limit_type == LimitType::High ? limit - hyst - 1.0 : limit + hyst + 1.0;
-        v.value = static_cast<float>(x);
-      } else {
-        // 6.3.4: DTT trips on FALSE, so its healthy value is TRUE; ETT the opposite.
-        v.value = t.ett ? 0.0f : 1.0f;
-      }
-      return v;
-    }
-  }
-  return v;
-}
-
-CycleInput default_cycle_input(const Matrix& m) {
-  InputTable table(m);
-  CycleInput in;
-  for (const auto& t : table.tags()) in.tags.push_back(default_tag_value(m, t));
-  return in;
-}
-
 ExpandedScenario expand_scenario(const Scenario& sc, const Matrix& m) {
   ExpandedScenario out;
   CycleInput current = default_cycle_input(m);
@@ -841,4 +799,4 @@ ExpandedScenario expand_scenario(const Scenario& sc, const Matrix& m) {
   return out;
 }
 
-}  // namespace cemv::model
+}  // namespace cemv::formats

@@ -17,10 +17,13 @@
 
 #include <nlohmann/json.hpp>
 
-#include "model/format.hpp"
+#include "formats/matrix_json.hpp"
+#include "model/names.hpp"
+#include "model/text.hpp"
 #include "tests/support/random_matrix.hpp"
 
 using namespace cemv::model;
+using namespace cemv::formats;
 namespace fs = std::filesystem;
 
 namespace {

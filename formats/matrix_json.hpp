@@ -1,0 +1,31 @@
+// Reading and writing `cemv-matrix/1` (docs/format.md), the canonical form and
+// the matrix signature.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+#include "formats/diagnostics.hpp"
+#include "model/matrix.hpp"
+
+namespace cemv::formats {
+
+// Parses and checks the structure of a matrix: syntax, types, unknown keys,
+// ranges, limits of 3.4, tag-name syntax of 6.1.4. Cross-element plausibility
+// (11.5: duplicate ids or names, dangling references, ...) is validate()'s job,
+// not the loader's; elements come back sorted by id (stable).
+model::Matrix parse_matrix(std::string_view json_text, const std::string& source_name = "");
+model::Matrix load_matrix(const std::filesystem::path& file);
+
+// The canonical form: every field written (defaults included), keys sorted,
+// elements ordered by id, floats in their shortest round-trip single-precision
+// form, two-space indentation, trailing newline.
+std::string to_canonical_json(const model::Matrix& m);
+void save_matrix(const model::Matrix& m, const std::filesystem::path& file);
+
+// SHA-256 of the canonical form, lowercase hex. Ties every report to one exact
+// matrix version.
+std::string signature(const model::Matrix& m);
+
+}  // namespace cemv::formats

@@ -1,0 +1,3 @@
+add_executable(test_model_vocabulary ${CMAKE_CURRENT_LIST_DIR}/test_vocabulary.cpp)
+target_link_libraries(test_model_vocabulary PRIVATE cemv_model GTest::gtest_main)
+gtest_discover_tests(test_model_vocabulary DISCOVERY_MODE PRE_TEST)
