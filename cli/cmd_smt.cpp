@@ -11,7 +11,6 @@
 #include "encoder/encode.hpp"
 #include "encoder/export.hpp"
 #include "formats/matrix_json.hpp"
-#include "model/validate.hpp"
 
 namespace cemv::cli {
 
@@ -51,13 +50,7 @@ bool parse_roots(const std::string& text, std::vector<model::Node>& out, std::st
 }
 
 void run(const SmtOptions& o, Context& ctx) {
-  model::Matrix m = formats::load_matrix(o.file);
-  auto ds = model::validate(m);
-  if (model::has_errors(ds)) {
-    std::cerr << "error: " << o.file << " has validation errors (run cemv validate)\n";
-    ctx.exit_code = 2;
-    return;
-  }
+  model::Matrix m = formats::load_valid_matrix(o.file, "encoded");
   std::vector<model::Node> roots;
   std::string error;
   if (!parse_roots(o.roots, roots, error)) {

@@ -84,8 +84,10 @@ std::vector<model::Command> Encoding::canonical_commands(
 
 namespace {
 
-std::string cause_prefix(int id) { return "cause[" + std::to_string(id) + "]"; }
-std::string effect_prefix(int id) { return "effect[" + std::to_string(id) + "]"; }
+// Term names start with the element as observable keys spell it
+// (model::observable_key), so each observable is the term named by its key.
+std::string cause_prefix(int id) { return model::to_string(Node{Node::Kind::Cause, id}); }
+std::string effect_prefix(int id) { return model::to_string(Node{Node::Kind::Effect, id}); }
 
 // T.2: whole cycles of a duration, rounded up, 64-bit.
 int cycles_of(std::uint64_t ms, std::uint32_t cycle_ms) {

@@ -72,12 +72,6 @@ std::string column_ranges(const std::vector<int>& cols) {
   return out;
 }
 
-std::size_t utf8_length(std::string_view s) {
-  std::size_t n = 0;
-  for (char c : s) n += (static_cast<unsigned char>(c) & 0xC0) != 0x80;
-  return n;
-}
-
 // Cuts UTF-8 text to at most n characters (code points, as the loader counts).
 std::string truncate_utf8(std::string_view s, std::size_t n) {
   std::size_t chars = 0;

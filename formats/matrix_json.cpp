@@ -22,6 +22,7 @@
 
 #include "model/names.hpp"
 #include "model/text.hpp"
+#include "model/validate.hpp"
 #include "model/vocabulary.hpp"
 
 namespace cemv::formats {
@@ -1084,6 +1085,18 @@ Matrix parse_matrix(std::string_view json_text, const std::string& source_name) 
 
 Matrix load_matrix(const std::filesystem::path& file) {
   return parse_matrix(read_text_file(file), file.string());
+}
+
+Matrix load_valid_matrix(const std::filesystem::path& file, const std::string& use) {
+  Matrix m = load_matrix(file);
+  auto diagnostics = validate(m);
+  if (!has_errors(diagnostics)) return m;
+  const std::string where = file.string();
+  std::vector<LoadIssue> issues{{where, "the matrix has validation errors; it cannot be " + use}};
+  for (const auto& d : diagnostics)
+    if (d.severity == Severity::Error)
+      issues.push_back({where, d.rule + " " + d.element + " (" + d.section + "): " + d.message});
+  throw LoadError(std::move(issues));
 }
 
 std::string to_canonical_json(const Matrix& m) { return canonical_text(m); }

@@ -18,6 +18,13 @@ namespace cemv::formats {
 model::Matrix parse_matrix(std::string_view json_text, const std::string& source_name = "");
 model::Matrix load_matrix(const std::filesystem::path& file);
 
+// load_matrix, then validate (11.5): a matrix with validation errors cannot be
+// simulated or encoded, so it is refused with a LoadError (exit 2) whose
+// issues say so (`FILE: the matrix has validation errors; it cannot be USE`)
+// and then list every error (`FILE: RULE ELEMENT (SECTION): MESSAGE`).
+// Warnings do not refuse a matrix.
+model::Matrix load_valid_matrix(const std::filesystem::path& file, const std::string& use);
+
 // The canonical form: every field written (defaults included), keys sorted,
 // elements ordered by id, floats in their shortest round-trip single-precision
 // form, two-space indentation, trailing newline.

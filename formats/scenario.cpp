@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "formats/matrix_json.hpp"
+#include "model/text.hpp"
 
 namespace cemv::formats {
 
@@ -24,39 +25,6 @@ using nlohmann::json;
 
 // ---- small helpers ---------------------------------------------------------
 
-std::size_t exact_edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    cur[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j) {
-      std::size_t sub = prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
-      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, sub});
-    }
-    std::swap(prev, cur);
-  }
-  return prev[b.size()];
-}
-
-// " (did you mean 'X'?)" for the closest candidate, compared case-insensitively;
-// empty when nothing is close. Ties go to the first candidate, so the hint is
-// deterministic.
-std::string did_you_mean(std::string_view word, const std::vector<std::string>& candidates) {
-  std::string key = tag_key(word);
-  const std::string* best = nullptr;
-  std::size_t best_d = std::numeric_limits<std::size_t>::max();
-  for (const auto& c : candidates) {
-    std::size_t d = exact_edit_distance(key, tag_key(c));
-    if (d < best_d) {
-      best_d = d;
-      best = &c;
-    }
-  }
-  std::size_t limit = std::max<std::size_t>(2, key.size() / 3);
-  if (!best || best_d > limit) return "";
-  return " (did you mean '" + *best + "'?)";
-}
-
 std::string json_type_name(const json& j) {
   if (j.is_boolean()) return "a boolean";
   if (j.is_number_integer() || j.is_number_unsigned()) return "an integer";
@@ -65,15 +33,6 @@ std::string json_type_name(const json& j) {
   if (j.is_array()) return "an array";
   if (j.is_object()) return "an object";
   return "null";
-}
-
-std::string sq(std::string_view s) {
-  std::string out;
-  out.reserve(s.size() + 2);
-  out.push_back('\'');
-  out.append(s);
-  out.push_back('\'');
-  return out;
 }
 
 struct DepthExceeded {};
@@ -104,13 +63,18 @@ class Parser {
       error("", "a scenario is a JSON object, not " + json_type_name(root));
       finish();
     }
-    check_keys(root, "", {"format", "description", "initial", "steps"});
+    check_keys(root, "", {"format", "matrix", "description", "initial", "steps"});
     if (!root.contains("format")) {
       error("format", "missing; expected \"" + std::string(kScenarioFormat) + "\"");
     } else if (!root["format"].is_string() ||
                root["format"].get<std::string>() != kScenarioFormat) {
       error("format", "expected \"" + std::string(kScenarioFormat) + "\", got " +
                           root["format"].dump());
+    }
+    if (root.contains("matrix")) {
+      sc.matrix = string_field(root["matrix"], "matrix");
+      if (root["matrix"].is_string() && sc.matrix.empty())
+        error("matrix", "empty; the path of the cemv-matrix/1 file, relative to the scenario file");
     }
     if (root.contains("description")) sc.description = string_field(root["description"], "description");
     if (root.contains("initial")) sc.initial = parse_inputs(root["initial"], "initial");
@@ -224,14 +188,14 @@ class Parser {
                                  const std::string& where) {
     if (kind == TagKind::Bool) {
       if (!j.is_boolean()) {
-        error(where, "tag " + sq(tag) + " is Boolean: the value must be true or false, not " +
+        error(where, "tag " + in_quotes(tag) + " is Boolean: the value must be true or false, not " +
                          json_type_name(j));
         return std::nullopt;
       }
       return j.get<bool>() ? 1.0f : 0.0f;
     }
     if (!j.is_number()) {
-      error(where, "tag " + sq(tag) + " is analog: the value must be a number, not " +
+      error(where, "tag " + in_quotes(tag) + " is analog: the value must be a number, not " +
                        json_type_name(j));
       return std::nullopt;
     }
@@ -253,15 +217,15 @@ class Parser {
           return tag_key(o.name) == tag_key(name);
         });
         if (is_output)
-          error(path, sq(name) +
+          error(path, in_quotes(name) +
                           " is an output tag; outputs cannot be set as inputs (use the "
                           "simulate_tag command to force one)");
         else
-          error(path, "unknown tag " + sq(name) + hint);
+          error(path, "unknown tag " + in_quotes(name) + hint);
         continue;
       }
       if (std::any_of(out.begin(), out.end(), [&](const InputSetting& s) { return s.tag == *idx; })) {
-        error(where, "tag " + sq(table_.tags()[*idx].name) + " is set twice");
+        error(where, "tag " + in_quotes(table_.tags()[*idx].name) + " is set twice");
         continue;
       }
       const InputTag& tag = table_.tags()[*idx];
@@ -306,7 +270,7 @@ class Parser {
       for (const auto& x : m_.causes)
         if (tag_key(x.name) == key) c = &x;
       if (!c) {
-        error(where, "no cause named " + sq(j.get<std::string>()) +
+        error(where, "no cause named " + in_quotes(j.get<std::string>()) +
                          did_you_mean(j.get<std::string>(), cause_names_));
         return nullptr;
       }
@@ -336,7 +300,7 @@ class Parser {
       for (const auto& x : m_.effects)
         if (tag_key(x.name) == key) e = &x;
       if (!e) {
-        error(where, "no effect named " + sq(j.get<std::string>()) +
+        error(where, "no effect named " + in_quotes(j.get<std::string>()) +
                          did_you_mean(j.get<std::string>(), effect_names_));
         return nullptr;
       }
@@ -366,7 +330,7 @@ class Parser {
       std::vector<std::string> ops;
       for (int i = 0; i <= static_cast<int>(CommandOp::ClearAlarms); ++i)
         ops.push_back(to_string(static_cast<CommandOp>(i)));
-      error(join(path, "op"), "unknown command " + sq(name) + did_you_mean(name, ops));
+      error(join(path, "op"), "unknown command " + in_quotes(name) + did_you_mean(name, ops));
       return std::nullopt;
     }
     Command cmd;
@@ -374,7 +338,7 @@ class Parser {
     std::size_t before = issues_.size();
     auto need = [&](const char* key) -> const json* {
       if (!j.contains(key)) {
-        error(path, "command " + sq(name) + " needs \"" + key + "\"");
+        error(path, "command " + in_quotes(name) + " needs \"" + key + "\"");
         return nullptr;
       }
       return &j[key];
@@ -459,7 +423,7 @@ class Parser {
             } else {
               std::vector<std::string> all = input_names_;
               all.insert(all.end(), output_names_.begin(), output_names_.end());
-              error(join(path, "tag"), "unknown tag " + sq(tag) + did_you_mean(tag, all));
+              error(join(path, "tag"), "unknown tag " + in_quotes(tag) + did_you_mean(tag, all));
             }
           }
         }
@@ -480,7 +444,7 @@ class Parser {
           } else if (j["tag"].is_string()) {
             std::vector<std::string> all = input_names_;
             all.insert(all.end(), output_names_.begin(), output_names_.end());
-            error(join(path, "tag"), "unknown tag " + sq(tag) + did_you_mean(tag, all));
+            error(join(path, "tag"), "unknown tag " + in_quotes(tag) + did_you_mean(tag, all));
           }
         }
         break;
@@ -545,12 +509,12 @@ class Parser {
         if (f == fields.end()) {
           std::vector<std::string> names;
           for (const auto& fi : fields) names.push_back(fi.name);
-          error(x.where, "unknown cause field " + sq(field) + did_you_mean(field, names));
+          error(x.where, "unknown cause field " + in_quotes(field) + did_you_mean(field, names));
           return std::nullopt;
         }
         o.field = f->name;
         o.type = f->type;
-        o.key = "cause[" + std::to_string(c->id) + "]." + o.field;
+        o.key = observable_key({o.kind, o.id}, o.field);
       } else {
         const Effect* e = effect_ref(ref_json, x.where);
         if (!e) return std::nullopt;
@@ -571,7 +535,7 @@ class Parser {
           o.field = "tag";
           o.tag = k;
           o.type = FieldType::Bool;
-          o.key = "effect[" + std::to_string(e->id) + "].tag[" + std::to_string(k) + "]";
+          o.key = observable_key({o.kind, o.id}, o.field, k);
         } else {
           const auto& fields = effect_fields();
           auto f = std::find_if(fields.begin(), fields.end(),
@@ -580,12 +544,12 @@ class Parser {
             std::vector<std::string> names;
             for (const auto& fi : fields) names.push_back(fi.name);
             names.push_back("tag[1]");
-            error(x.where, "unknown effect field " + sq(field) + did_you_mean(field, names));
+            error(x.where, "unknown effect field " + in_quotes(field) + did_you_mean(field, names));
             return std::nullopt;
           }
           o.field = f->name;
           o.type = f->type;
-          o.key = "effect[" + std::to_string(e->id) + "]." + o.field;
+          o.key = observable_key({o.kind, o.id}, o.field);
         }
       }
       x.target.kind = ExpectTarget::Kind::Status;
@@ -597,10 +561,10 @@ class Parser {
       if (out == outputs_.end()) {
         std::string hint = did_you_mean(key, output_names_);
         if (table_.find(key))
-          error(x.where, sq(key) + " is an input tag; expectations name output tags, "
+          error(x.where, in_quotes(key) + " is an input tag; expectations name output tags, "
                                        "cause[..].FIELD or effect[..].FIELD");
         else
-          error(x.where, "unknown expectation key " + sq(key) +
+          error(x.where, "unknown expectation key " + in_quotes(key) +
                              ": not an output tag, nor cause[..].FIELD / effect[..].FIELD" + hint);
         return std::nullopt;
       }
@@ -612,7 +576,7 @@ class Parser {
       o.field = "tag";
       o.tag = out->k;
       o.type = FieldType::Bool;
-      o.key = "effect[" + std::to_string(out->effect) + "].tag[" + std::to_string(out->k) + "]";
+      o.key = observable_key({o.kind, o.id}, o.field, o.tag);
       x.type = FieldType::Bool;
     }
     switch (x.type) {
@@ -726,7 +690,11 @@ std::string expectation_value_text(FieldType type, int value) {
   return std::to_string(value);
 }
 
-Scenario parse_scenario(std::string_view json_text, const Matrix& m, const std::string& source_name) {
+namespace {
+
+// The JSON text of a scenario as a DOM, with the size and depth guards; syntax
+// errors as `FILE: line L, column C`.
+json parse_scenario_json(std::string_view json_text, const std::string& source_name) {
   std::string prefix = source_name.empty() ? "" : source_name + ": ";
   if (json_text.size() > kMaxFileBytes)
     throw LoadError({{source_name, "file larger than " + std::to_string(kMaxFileBytes) + " bytes"}});
@@ -749,6 +717,13 @@ Scenario parse_scenario(std::string_view json_text, const Matrix& m, const std::
     throw LoadError({{prefix + line_column(json_text, e.byte == 0 ? 0 : e.byte - 1),
                       "JSON syntax error: " + detail}});
   }
+  return root;
+}
+
+}  // namespace
+
+Scenario parse_scenario(std::string_view json_text, const Matrix& m, const std::string& source_name) {
+  json root = parse_scenario_json(json_text, source_name);
   Parser p(m);
   try {
     return p.parse(root);
@@ -761,16 +736,19 @@ Scenario parse_scenario(std::string_view json_text, const Matrix& m, const std::
 }
 
 Scenario load_scenario(const std::filesystem::path& file, const Matrix& m) {
-  std::error_code ec;
-  auto size = std::filesystem::file_size(file, ec);
-  if (ec) throw LoadError({{file.string(), "cannot read: " + ec.message()}});
-  if (size > kMaxFileBytes)
-    throw LoadError({{file.string(), "file larger than " + std::to_string(kMaxFileBytes) + " bytes"}});
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw LoadError({{file.string(), "cannot open"}});
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return parse_scenario(ss.str(), m, file.string());
+  return parse_scenario(read_text_file(file), m, file.string());
+}
+
+std::optional<std::filesystem::path> scenario_matrix_path(const std::filesystem::path& scenario_file) {
+  const std::string name = scenario_file.string();
+  json root = parse_scenario_json(read_text_file(scenario_file), name);
+  if (!root.is_object() || !root.contains("matrix")) return std::nullopt;
+  const json& j = root["matrix"];
+  if (!j.is_string() || j.get<std::string>().empty())
+    throw LoadError({{name + ": matrix",
+                      "must be a non-empty string, the path of the cemv-matrix/1 file relative to the "
+                      "scenario file"}});
+  return scenario_file.parent_path() / j.get<std::string>();
 }
 
 ExpandedScenario expand_scenario(const Scenario& sc, const Matrix& m) {
@@ -795,6 +773,31 @@ ExpandedScenario expand_scenario(const Scenario& sc, const Matrix& m) {
       out.step_of_cycle.push_back(i);
     }
     out.checks.push_back({i, out.cycles.size() - 1, &st.expect});
+  }
+  return out;
+}
+
+std::string ExpectationOutcome::failure_text(std::uint32_t cycle_ms) const {
+  const Expectation& x = *expectation;
+  return "FAIL steps[" + std::to_string(step) + "] (cycle " + std::to_string(cycle + 1) + ", t = " +
+         std::to_string(static_cast<std::uint64_t>(cycle) * cycle_ms) + " ms): " + x.key + " expected " +
+         expectation_value_text(x.type, x.expected) + ", actual " +
+         (actual ? expectation_value_text(x.type, *actual) : std::string("unknown"));
+}
+
+std::vector<ExpectationOutcome> ExpectationChecker::after_cycle(std::size_t cycle, const Actual& actual) {
+  std::vector<ExpectationOutcome> out;
+  while (next_check_ < ex_.checks.size() && ex_.checks[next_check_].cycle == cycle) {
+    const auto& check = ex_.checks[next_check_];
+    for (const auto& x : *check.expect) {
+      ExpectationOutcome o{check.step, cycle, &x, actual(x.target), false};
+      if (o.actual && x.type == FieldType::Bool) *o.actual = *o.actual != 0;
+      o.ok = o.actual && *o.actual == x.expected;
+      ++checked_;
+      if (!o.ok) ++failed_;
+      out.push_back(o);
+    }
+    ++next_check_;
   }
   return out;
 }

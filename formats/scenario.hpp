@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -68,6 +69,7 @@ struct ScenarioStep {
 };
 
 struct Scenario {
+  std::string matrix;  // the `matrix` key as written (a path relative to the file); may be empty
   std::string description;
   std::vector<InputSetting> initial;
   std::vector<ScenarioStep> steps;
@@ -80,6 +82,13 @@ struct Scenario {
 Scenario parse_scenario(std::string_view json_text, const model::Matrix& m,
                         const std::string& source_name = "");
 Scenario load_scenario(const std::filesystem::path& file, const model::Matrix& m);
+
+// The matrix file a scenario names with its `matrix` key, resolved against the
+// folder of the scenario file; nullopt when the scenario has no such key.
+// Reads only the top level: everything else needs the matrix to be resolved.
+// Throws LoadError when the file is unreadable or not JSON, or the key is not
+// a non-empty string.
+std::optional<std::filesystem::path> scenario_matrix_path(const std::filesystem::path& scenario_file);
 
 // A scenario unrolled into scan cycles.
 struct ExpandedScenario {
@@ -95,5 +104,38 @@ struct ExpandedScenario {
 // Inputs persist from cycle to cycle until a step changes them; a step's
 // commands are issued in its first cycle only. `sc` must outlive the result.
 ExpandedScenario expand_scenario(const Scenario& sc, const model::Matrix& m);
+
+// One expectation checked after its cycle.
+struct ExpectationOutcome {
+  std::size_t step = 0;    // 0-based step index
+  std::size_t cycle = 0;   // 0-based cycle index
+  const Expectation* expectation = nullptr;
+  std::optional<int> actual;  // nullopt: the implementation has no value ("unknown")
+  bool ok = false;
+  // "FAIL steps[1] (cycle 21, t = 2000 ms): cause[1].active expected true, actual false"
+  std::string failure_text(std::uint32_t cycle_ms) const;
+};
+
+// The one expectation-checking loop of every replay (the runtime's `cemv
+// simulate`, the encoder's scenario test): after each cycle, the expectations
+// due then are compared with the implementation's values. Bool values compare
+// as 0/1, whatever non-zero value the implementation gives.
+class ExpectationChecker {
+ public:
+  // The value an implementation gives an expectation's target after the
+  // current cycle; nullopt when it has none.
+  using Actual = std::function<std::optional<int>(const ExpectTarget&)>;
+  explicit ExpectationChecker(const ExpandedScenario& ex) : ex_(ex) {}
+  // Checks the expectations due after 0-based cycle `cycle` (cycles in order).
+  std::vector<ExpectationOutcome> after_cycle(std::size_t cycle, const Actual& actual);
+  std::size_t checked() const { return checked_; }
+  std::size_t failed() const { return failed_; }
+
+ private:
+  const ExpandedScenario& ex_;
+  std::size_t next_check_ = 0;
+  std::size_t checked_ = 0;
+  std::size_t failed_ = 0;
+};
 
 }  // namespace cemv::formats

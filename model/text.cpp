@@ -78,6 +78,10 @@ std::string did_you_mean(std::string_view word, const std::vector<std::string_vi
   return " (did you mean '" + std::string(best) + "'?)";
 }
 
+std::string did_you_mean(std::string_view word, const std::vector<std::string>& candidates) {
+  return did_you_mean(word, std::vector<std::string_view>(candidates.begin(), candidates.end()));
+}
+
 std::string float_text(float v) {
   char buf[64];
   auto result = std::to_chars(buf, buf + sizeof buf, v);

@@ -23,7 +23,11 @@ std::size_t utf8_length(std::string_view s);
 std::size_t edit_distance(std::string_view a, std::string_view b);
 // " (did you mean 'x'?)" when one candidate is a plausible typo of `word`
 // (or `word` a truncation of it), else "".
+// One rule for every file format and check: letters compare case-
+// insensitively; the distance allowed grows with the candidate's length (1 up
+// to 3 letters, 2 up to 8, else 3); ties go to the first candidate.
 std::string did_you_mean(std::string_view word, const std::vector<std::string_view>& candidates);
+std::string did_you_mean(std::string_view word, const std::vector<std::string>& candidates);
 
 // Shortest decimal text that reads back as the same float (e.g. 0.1f -> "0.1").
 std::string float_text(float v);

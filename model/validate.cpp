@@ -20,6 +20,7 @@
 #include <tuple>
 
 #include "model/graph.hpp"
+#include "model/text.hpp"
 #include "model/vocabulary.hpp"
 
 namespace cemv::model {
@@ -101,16 +102,6 @@ const RuleInfo& rule_info(std::string_view id) {
     throw std::logic_error("validate: unknown rule " + std::string(id));
   return *it;
 }
-
-// Shortest decimal text that reads back as the same float (as format.hpp's
-// float_text, without depending on the loader).
-std::string num(float v) {
-  char buf[64];
-  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
-  return ec == std::errc{} ? std::string(buf, end) : std::string("?");
-}
-
-std::string quoted(std::string_view s) { return "'" + std::string(s) + "'"; }
 
 // Where a finding is, and how it sorts: matrix, then causes, effects and
 // intersections by id.
@@ -227,12 +218,12 @@ class Validator {
     for (const auto& [number, name] : m_.sif_groups)
       if (number < 1 || number > kMaxSifGroups)
         add("E-SIF-GROUP-RANGE", at_matrix(),
-            "sif_groups defines group " + std::to_string(number) + " " + quoted(name) +
+            "sif_groups defines group " + std::to_string(number) + " " + in_quotes(name) +
                 " (groups are numbered 1-" + std::to_string(kMaxSifGroups) + ")");
     if (m_.group_deactivation && !m_.group_deactivation->enable_tag.empty() &&
         tag_key(m_.group_deactivation->enable_tag) == tag_key(m_.group_deactivation->set_tag))
       add("E-GDM-SAME-TAG", at_matrix(),
-          "group_deactivation uses " + quoted(m_.group_deactivation->set_tag) +
+          "group_deactivation uses " + in_quotes(m_.group_deactivation->set_tag) +
               " as enable_tag and set_tag: enabling and executing the deactivation would be one "
               "operation, which 6.1.7 forbids");
   }
@@ -250,12 +241,12 @@ class Validator {
         add(id_rule, at(el),
             std::string(kind) + " number " + std::to_string(el.id) + " is also used by " +
                 (it->second->name.empty() ? std::string("another ") + kind
-                                          : quoted(it->second->name)));
+                                          : in_quotes(it->second->name)));
       if (el.name.empty()) continue;
       auto [nit, nfresh] = by_name.emplace(tag_key(el.name), &el);
       if (!nfresh)
         add(name_rule, at(el),
-            "name " + quoted(el.name) + " is also the name of " + kind + "[" +
+            "name " + in_quotes(el.name) + " is also the name of " + kind + "[" +
                 std::to_string(nit->second->id) + "] (names are compared case-insensitively)");
     }
   }
@@ -327,7 +318,7 @@ class Validator {
       add("E-ANALOG-MISSING", w, "input is analog but the cause has no analog block (limit)");
     if (c.input == InputKind::Discrete && c.analog)
       add("W-ANALOG-UNUSED", w,
-          "input is discrete: the analog block (limit " + num(c.analog->limit) + ") is ignored");
+          "input is discrete: the analog block (limit " + float_text(c.analog->limit) + ") is ignored");
     if (c.input == InputKind::Analog && c.analog) analog(c, *c.analog);
 
     // Time function (6.3.6, 13.1.1).
@@ -355,13 +346,13 @@ class Validator {
           c.analog->limit > 0.0f)
         add("W-BAD-QUALITY-IGNORED", w,
             "bad_quality is ignore: on a channel fault the substitute value 0.0 stays below the "
-            "high limit " + num(c.analog->limit) + ", so a failed sensor never trips the cause");
+            "high limit " + float_text(c.analog->limit) + ", so a failed sensor never trips the cause");
       if (c.input == InputKind::Discrete)
         for (std::size_t i = 0; i < c.tags.size(); ++i)
           if (c.tags[i].ett && !parse_internal_ref(c.tags[i].name))
             add("W-BAD-QUALITY-IGNORED", w,
                 "bad_quality is ignore: input tag " + std::to_string(i + 1) + " " +
-                    quoted(c.tags[i].name) +
+                    in_quotes(c.tags[i].name) +
                     " is energize-to-trip, so the substitute value FALSE of a channel fault "
                     "never trips it");
     }
@@ -391,10 +382,10 @@ class Validator {
       };
       if (same(c.bypass_tag))
         add("W-CAUSE-SELF-BYPASS", w,
-            "bypass_tag " + quoted(*c.bypass_tag) + " is also input tag " + std::to_string(i + 1));
+            "bypass_tag " + in_quotes(*c.bypass_tag) + " is also input tag " + std::to_string(i + 1));
       if (same(c.inhibit_tag))
         add("W-CAUSE-SELF-BYPASS", w,
-            "inhibit_tag " + quoted(*c.inhibit_tag) + " is also input tag " +
+            "inhibit_tag " + in_quotes(*c.inhibit_tag) + " is also input tag " +
                 std::to_string(i + 1));
     }
   }
@@ -409,21 +400,21 @@ class Validator {
       return;
     }
     if (a.hysteresis < 0)
-      add("E-HYSTERESIS-NEGATIVE", w, "hysteresis " + num(a.hysteresis) + " is negative");
-    if (a.delta < 0) add("E-DELTA-NEGATIVE", w, "delta " + num(a.delta) + " is negative");
+      add("E-HYSTERESIS-NEGATIVE", w, "hysteresis " + float_text(a.hysteresis) + " is negative");
+    if (a.delta < 0) add("E-DELTA-NEGATIVE", w, "delta " + float_text(a.delta) + " is negative");
     if (a.delta > 0 && c.tags.size() < 2)
       add("W-DELTA-SINGLE-TAG", w,
-          "delta " + num(a.delta) + " on a cause with one input tag: there is nothing to compare");
+          "delta " + float_text(a.delta) + " on a cause with one input tag: there is nothing to compare");
     if (a.delta > 0 && c.tags.size() >= 2 && a.hysteresis >= a.delta)
       add("W-DELTA-HYSTERESIS", w,
-          "hysteresis " + num(a.hysteresis) + " >= delta " + num(a.delta) +
+          "hysteresis " + float_text(a.hysteresis) + " >= delta " + float_text(a.delta) +
               ": the discrepancy alarm clears only below delta - hysteresis <= 0, i.e. never");
     if (a.prewarning) {
       bool high = a.limit_type == LimitType::High;
       if (high ? *a.prewarning >= a.limit : *a.prewarning <= a.limit)
         add("W-PREWARNING-BEYOND-LIMIT", w,
-            "prewarning " + num(*a.prewarning) + (high ? " >= " : " <= ") + std::string(high ? "high" : "low") +
-                " limit " + num(a.limit) + ": the prewarning is disabled");
+            "prewarning " + float_text(*a.prewarning) + (high ? " >= " : " <= ") + std::string(high ? "high" : "low") +
+                " limit " + float_text(a.limit) + ": the prewarning is disabled");
     }
   }
 
@@ -471,7 +462,7 @@ class Validator {
           "write) clears it");
     if (!has_svr && e.reset_tag)
       add("W-RESET-TAG-UNUSED", w,
-          "reset_tag " + quoted(*e.reset_tag) +
+          "reset_tag " + in_quotes(*e.reset_tag) +
               " on an effect without S, V or R intersections: nothing to reset or override");
 
     rounding(w, "output_delay_ms", e.output_delay_ms);
@@ -489,7 +480,7 @@ class Validator {
                 " is configured but process_data.tag is not: there is no process value to pass");
       if (has_tag && !pd.pass_through && !pd.mask_tag)
         add("W-PROCESS-DATA-UNUSED", w,
-            "process_data.tag " + quoted(*pd.tag) +
+            "process_data.tag " + in_quotes(*pd.tag) +
                 " without pass_through or mask_tag has no effect on the outputs");
     }
   }
@@ -600,7 +591,7 @@ class Validator {
       for (std::size_t i = 0; i < e.tags.size(); ++i) {
         if (parse_internal_ref(e.tags[i].name))
           add("E-OUTPUT-TAG-REFERENCE", at(e),
-              "output tag " + std::to_string(i + 1) + " " + quoted(e.tags[i].name) +
+              "output tag " + std::to_string(i + 1) + " " + in_quotes(e.tags[i].name) +
                   " is an internal reference: references can only be read");
         use(e.tags[i].name, Use::Output, at(e), "output tag " + std::to_string(i + 1), e.id);
       }
@@ -630,39 +621,39 @@ class Validator {
         const TagUse* first = outputs.front();
         if (outputs[i]->owner == first->owner)
           add("E-OUTPUT-TAG-REPEATED", outputs[i]->where,
-              outputs[i]->what + " " + quoted(outputs[i]->name) + " repeats " + first->what);
+              outputs[i]->what + " " + in_quotes(outputs[i]->name) + " repeats " + first->what);
         else
           add("E-OUTPUT-TAG-SHARED", outputs[i]->where,
-              outputs[i]->what + " " + quoted(outputs[i]->name) + " is also written by " +
+              outputs[i]->what + " " + in_quotes(outputs[i]->name) + " is also written by " +
                   describe(*first));
       }
       if (!outputs.empty() && !readers.empty()) {
         std::string list_text;
         for (const auto* r : readers) list_text += (list_text.empty() ? "" : ", ") + describe(*r);
         add("E-TAG-IN-AND-OUT", outputs.front()->where,
-            outputs.front()->what + " " + quoted(name) + " is also read by " + list_text +
+            outputs.front()->what + " " + in_quotes(name) + " is also read by " + list_text +
                 " (use an internal reference Effect[x] or Effect[x][y] to read an effect)");
       }
       for (std::size_t i = 1; i < inputs.size(); ++i) {
         const TagUse* prev = inputs[i - 1];
         if (inputs[i]->owner == prev->owner)
           add("W-INPUT-TAG-REPEATED", inputs[i]->where,
-              inputs[i]->what + " " + quoted(inputs[i]->name) + " repeats " + prev->what +
+              inputs[i]->what + " " + in_quotes(inputs[i]->name) + " repeats " + prev->what +
                   ": the voting counts one sensor twice");
         else
           add("W-INPUT-TAG-SHARED", inputs[i]->where,
-              inputs[i]->what + " " + quoted(inputs[i]->name) + " is also read by " +
+              inputs[i]->what + " " + in_quotes(inputs[i]->name) + " is also read by " +
                   describe(*inputs.front()));
       }
       if (!analog.empty() && !boolean.empty())
         add("E-TAG-KIND-CONFLICT", analog.front()->where,
-            analog.front()->what + " " + quoted(name) + " is analog (REAL) but " +
+            analog.front()->what + " " + in_quotes(name) + " is analog (REAL) but " +
                 describe(*boolean.front()) + " reads it as a Boolean");
       if (!matrix_controls.empty() && !others.empty()) {
         std::string list_text;
         for (const auto* o : others) list_text += (list_text.empty() ? "" : ", ") + describe(*o);
         add("E-CONTROL-TAG-COLLISION", at_matrix(),
-            matrix_controls.front()->what + " " + quoted(name) + " is also used by " + list_text);
+            matrix_controls.front()->what + " " + in_quotes(name) + " is also used by " + list_text);
       }
     }
   }
@@ -673,7 +664,7 @@ class Validator {
   // comment-only element is legal but constant.
   void check_reference(const Where& where, const std::string& field, const std::string& tag,
                        const Node& source, int source_tag) {
-    std::string prefix = field + " " + quoted(tag) + ": ";
+    std::string prefix = field + " " + in_quotes(tag) + ": ";
     if (source.kind == Node::Kind::Cause) {
       const Cause* c = cause_by_id(source.id);
       if (!c) {
@@ -711,7 +702,7 @@ class Validator {
         const Cause* c = cause_by_id(r.reader.id);
         if (c && c->input == InputKind::Analog)
           add("E-REF-ANALOG", where,
-              r.field + " " + quoted(r.tag) +
+              r.field + " " + in_quotes(r.tag) +
                   " is an internal reference (Boolean) but the cause's input is analog");
       }
     }

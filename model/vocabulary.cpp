@@ -180,22 +180,27 @@ const std::vector<FieldInfo>& effect_fields() {
   return fields;
 }
 
+std::string observable_key(const Node& n, std::string_view field, int tag) {
+  std::string key = to_string(n) + "." + std::string(field);
+  if (tag > 0) key += "[" + std::to_string(tag) + "]";
+  return key;
+}
+
 std::vector<Observable> observables(const Matrix& m) {
   std::vector<Observable> out;
   for (const auto& c : m.causes) {
     if (c.function == CauseFunction::Comment) continue;
+    const Node n{Node::Kind::Cause, c.id};
     for (const auto& f : cause_fields())
-      out.push_back({"cause[" + std::to_string(c.id) + "]." + f.name, f.type, Node::Kind::Cause,
-                     c.id, f.name, 0});
+      out.push_back({observable_key(n, f.name), f.type, n.kind, c.id, f.name, 0});
   }
   for (const auto& e : m.effects) {
     if (e.function == EffectFunction::Comment) continue;
-    std::string prefix = "effect[" + std::to_string(e.id) + "]";
+    const Node n{Node::Kind::Effect, e.id};
     for (const auto& f : effect_fields())
-      out.push_back({prefix + "." + f.name, f.type, Node::Kind::Effect, e.id, f.name, 0});
+      out.push_back({observable_key(n, f.name), f.type, n.kind, e.id, f.name, 0});
     for (int k = 1; k <= static_cast<int>(e.tags.size()); ++k)
-      out.push_back({prefix + ".tag[" + std::to_string(k) + "]", FieldType::Bool,
-                     Node::Kind::Effect, e.id, "tag", k});
+      out.push_back({observable_key(n, "tag", k), FieldType::Bool, n.kind, e.id, "tag", k});
   }
   return out;
 }

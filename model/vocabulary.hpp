@@ -155,4 +155,8 @@ struct Observable {
 };
 std::vector<Observable> observables(const Matrix& m);
 
+// The one spelling of an observable's key: "cause[3].active" (a status field of
+// element `n`), "effect[2].tag[1]" (field "tag", output k = tag >= 1).
+std::string observable_key(const Node& n, std::string_view field, int tag = 0);
+
 }  // namespace cemv::model

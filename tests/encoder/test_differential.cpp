@@ -3,6 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
 
 #include "encoder/encode.hpp"
 #include "encoder/evaluate.hpp"
@@ -130,54 +135,110 @@ TEST(Examples, RandomInputsAgree) {
   }
 }
 
-// Every scenario next to an example or under tests/scenarios: the encoder meets
-// each expectation, and agrees with the runtime on every cycle.
-TEST(Scenarios, EncoderMeetsExpectationsAndAgrees) {
-  std::vector<std::pair<fs::path, fs::path>> cases;  // matrix, scenario
+// Every scenario of the project: next to each example (scenario-*.json) and
+// under tests/scenarios (rejects/ included). Each names its matrix with its
+// "matrix" key (docs/scenario.md), so no test keeps a mapping of its own.
+std::vector<fs::path> every_scenario() {
+  std::vector<fs::path> out;
   for (const auto& f : example_matrices())
     for (const auto& s : fs::directory_iterator(f.parent_path()))
       if (s.path().filename().string().starts_with("scenario") && s.path().extension() == ".json")
-        cases.emplace_back(f, s.path());
-  fs::path extra = fs::path(CEMV_SOURCE_DIR) / "tests" / "scenarios";
-  if (fs::exists(extra))
-    for (const auto& s : fs::recursive_directory_iterator(extra)) {
-      if (s.path().extension() != ".json" || s.path().filename() == "matrix.json") continue;
-      fs::path mx = s.path().parent_path() / "matrix.json";
-      if (fs::exists(mx)) cases.emplace_back(mx, s.path());
-    }
-  std::sort(cases.begin(), cases.end());
-  ASSERT_FALSE(cases.empty());
-  int checked = 0;
-  for (const auto& [mf, sf] : cases) {
-    model::Matrix m = formats::load_matrix(mf);
+        out.push_back(s.path());
+  const fs::path root = fs::path(CEMV_SOURCE_DIR) / "tests" / "scenarios";
+  for (const fs::path& dir : {root, root / "rejects"})
+    for (const auto& s : fs::directory_iterator(dir))
+      if (s.path().extension() == ".json") out.push_back(s.path());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// The scenario files that must not load, each with a part of the reason
+// (tests/scenarios/scenarios.cmake checks the whole message of each).
+const std::map<std::string, std::string> kRejectionCases = {
+    {"rejects/ms_not_multiple.json", "250 is not a multiple of cycle_ms"},
+    {"rejects/syntax_error.json", "JSON syntax error"},
+    {"rejects/trivial.json", "the matrix has validation errors"},
+    {"rejects/typo_tag.json", "unknown tag 'INHI13'"},
+    {"rejects/unknown_command.json", "unknown command 'reset_cause'"},
+    {"rejects/unknown_expect_cause.json", "no cause named 'ON_DELAI'"},
+    {"rejects/unknown_expect_field.json", "unknown cause field 'actived'"},
+    {"rejects/unknown_expect_key.json", "unknown expectation key 'O99'"},
+    {"rejects/unknown_step_key.json", "expekt: unknown key"},
+};
+// Scenarios that load but expect something wrong on purpose: the encoder must
+// fail exactly the expectations the runtime fails (scenario_failing_expectation_exit_1).
+const std::map<std::string, std::vector<std::string>> kFailingCases = {
+    {"rejects/failing_expectation.json",
+     {"FAIL steps[1] (cycle 21, t = 2000 ms): cause[1].active expected true, actual false"}},
+};
+
+// The name a scenario has in the two lists above.
+std::string case_name(const fs::path& scenario) {
+  return scenario.parent_path().filename() == "rejects" ? "rejects/" + scenario.filename().string()
+                                                        : scenario.filename().string();
+}
+
+std::string issues_text(const formats::LoadError& e) {
+  std::string text;
+  for (const auto& i : e.issues()) text += i.str() + "\n";
+  return text;
+}
+
+// Every scenario reaches the encoder (docs/encoding.md): the encoder meets each
+// expectation, and agrees with the runtime on every cycle. A file that does not
+// load fails the test unless it is a listed rejection case.
+TEST(Scenarios, EncoderMeetsExpectationsAndAgrees) {
+  const auto scenarios = every_scenario();
+  ASSERT_FALSE(scenarios.empty());
+  std::set<std::string> rejected;
+  std::size_t checked = 0, encoded = 0;
+  for (const auto& sf : scenarios) {
+    const std::string name = case_name(sf);
+    model::Matrix m;
     formats::Scenario sc;
     try {
+      auto mf = formats::scenario_matrix_path(sf);
+      ASSERT_TRUE(mf.has_value()) << sf << " names no matrix (its \"matrix\" key)";
+      m = formats::load_valid_matrix(*mf, "encoded");
       sc = formats::load_scenario(sf, m);
-    } catch (const formats::LoadError&) {
-      continue;  // negative scenario files (rejected input) are the runtime's tests
+    } catch (const formats::LoadError& e) {
+      auto listed = kRejectionCases.find(name);
+      if (listed == kRejectionCases.end()) {
+        ADD_FAILURE() << sf << " does not load and is not a rejection case:\n" << issues_text(e);
+      } else {
+        EXPECT_NE(issues_text(e).find(listed->second), std::string::npos)
+            << sf << " is rejected for another reason than \"" << listed->second << "\":\n" << issues_text(e);
+        rejected.insert(name);
+      }
+      continue;
     }
+    EXPECT_EQ(kRejectionCases.count(name), 0u) << sf << " is a rejection case but loads";
     auto ex = formats::expand_scenario(sc, m);
     z3::context ctx;
     auto enc = encoder::encode(ctx, m);
     encoder::Evaluator ev(*enc);
-    std::size_t next_check = 0;
+    formats::ExpectationChecker checker(ex);
+    auto value = [&](const formats::ExpectTarget& t) -> std::optional<int> { return ev.value(t.observable.key); };
+    std::vector<std::string> failures;
     for (std::size_t k = 0; k < ex.cycles.size(); ++k) {
       model::CycleInput in = ex.cycles[k];
       in.commands = enc->canonical_commands(in.commands);
       ev.step(in);
-      while (next_check < ex.checks.size() && ex.checks[next_check].cycle == k) {
-        for (const auto& e : *ex.checks[next_check].expect) {
-          int actual = ev.value(e.target.observable.key);
-          EXPECT_EQ(actual, e.expected) << sf << " " << e.where << " (" << e.key << ") cycle " << k;
-          ++checked;
-        }
-        ++next_check;
-      }
+      for (const auto& o : checker.after_cycle(k, value))
+        if (!o.ok) failures.push_back(o.failure_text(m.cycle_ms));
     }
+    auto failing = kFailingCases.find(name);
+    EXPECT_EQ(failures, failing == kFailingCases.end() ? std::vector<std::string>{} : failing->second)
+        << sf << " (" << name << ")";
+    checked += checker.checked();
+    ++encoded;
     auto d = encoder_test::compare(m, ex.cycles);
     EXPECT_FALSE(d.has_value()) << sf << "\n" << encoder_test::report(0, m, ex.cycles, *d);
   }
-  EXPECT_GT(checked, 0);
+  for (const auto& [name, reason] : kRejectionCases)
+    EXPECT_EQ(rejected.count(name), 1u) << name << " was expected to be rejected (" << reason << ")";
+  EXPECT_EQ(encoded + rejected.size(), scenarios.size());
+  EXPECT_GT(checked, 0u);
 }
 
 }  // namespace

@@ -183,7 +183,7 @@ TEST(Cone, SliceOfOneEffectIsSmallerAndAgrees) {
                  std::find(slice->nodes.begin(), slice->nodes.end(), n) == slice->nodes.end());
   // Observables of the target agree between slice and full encoding.
   encoder::Evaluator a(*full), b(*slice);
-  std::string key = "effect[" + std::to_string(target) + "].active";
+  std::string key = model::observable_key({model::Node::Kind::Effect, target}, "active");
   for (auto in : testsupport::random_inputs(m, 77, 200)) {
     in.commands = full->canonical_commands(in.commands);
     a.step(in);

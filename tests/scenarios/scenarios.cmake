@@ -1,75 +1,20 @@
-# Scenario files run through `cemv simulate` (issue 3 section 5): every bullet of
-# manual chapter 13 as a scenario named after its section and bullet, on the small
-# matrices in matrices/, plus the rejections of bad scenarios (exit 2, message
+# Scenario files run through `cemv simulate`: every bullet of manual chapter 13
+# as a scenario named after its section and bullet, and the rules of
+# docs/semantics.md beyond chapter 13 (semantics_<paragraph>_*), on the small
+# matrices in matrices/; plus the rejections of bad scenarios (exit 2, message
 # naming the bad item), a failing expectation (exit 1) and the trace option.
 # A scenario of the cemv-scenario/1 format is a list of steps; docs/scenario.md.
 set(CEMV_SCEN ${CMAKE_CURRENT_LIST_DIR})
 
-# scenario file (without .json) -> matrix in matrices/ (without .json)
-set(cemv_chapter13_scenarios  # and the other rules of issue 3 section 3, issue3_*
-  13_1_1_on_delay_bullets1_2_4_delayed_activation:ch13_causes
-  13_1_1_on_delay_bullets3_5_canceled:ch13_causes
-  13_1_1_off_delay_bullets1_2_4_active_for_the_delay:ch13_causes
-  13_1_1_off_delay_bullets3_5_canceled:ch13_causes
-  13_1_1_off_delay_bullet4_acknowledgement_has_no_effect:ch13_causes
-  13_1_1_timed_bullets1_2_time_for_timed_cause:ch13_causes
-  13_1_1_timed_bullet3_regardless_of_input:ch13_causes
-  13_1_2_inhibit_intro_inactive_while_TRUE:ch13_causes
-  13_1_2_inhibit_bullet2_independent_of_time_functions:ch13_causes
-  13_1_2_inhibit_bullet3_does_not_acknowledge:ch13_causes
-  13_1_3_bypass_intro_bullet1_inactive_while_TRUE:ch13_causes
-  13_1_3_bypass_bullet2_independent_of_time_functions:ch13_causes
-  13_1_3_bypass_bullet3_does_not_acknowledge:ch13_causes
-  13_1_3_bypass_bullet4_timed_soft_bypass:ch13_causes
-  13_1_4_auto_ack_para1_inactive_when_condition_gone:ch13_causes
-  13_1_4_auto_ack_para2_manual_acknowledgement:ch13_causes
-  13_1_4_auto_ack_para3_no_effect_with_off_delay_or_timed:ch13_causes
-  13_2_1_N_intro_reset_override_has_no_effect:ch13_effects
-  13_2_1_S_bullet1_reset_required:ch13_effects
-  13_2_1_S_bullet2_rising_edge_required:ch13_effects
-  13_2_1_V_items1_2_3_override_time_and_timeout_alarm:ch13_effects
-  13_2_1_V_bullet1_rising_edge_starts_and_stops:ch13_effects
-  13_2_1_V_bullet3_cause_inactive_stops_override:ch13_effects
-  13_2_1_V_override_failed_cause:ch13_effects
-  13_2_1_V_operator_override:ch13_effects
-  13_2_1_S_operator_reset:ch13_effects
-  13_2_1_R_items1_2_3_override_and_reset:ch13_effects
-  13_2_1_R_item4_no_reset_while_override_running:ch13_effects
-  13_2_2_N_items1_2_output_delay:ch13_effects
-  13_2_2_S_bullets_reset_after_output_delay:ch13_effects
-  13_2_2_V_items4_5_6_output_delay_and_override:ch13_effects
-  13_2_2_V_bullets_override_tag_no_effect:ch13_effects
-  13_2_2_R_item7_and_stored_during_delay:ch13_effects
-  13_2_3_N_bullets_bypass:ch13_effects
-  13_2_3_S_bullets_bypass:ch13_effects
-  13_2_3_V_bullets_bypass_and_override:ch13_effects
-  13_2_3_R_bullets_bypass_override_reset:ch13_effects
-  13_2_4_N_item2_bypass_interrupts_output_delay:ch13_effects
-  13_2_4_S_bullets_bypass_with_output_delay:ch13_effects
-  13_2_4_V_bullets_bypass_with_output_delay:ch13_effects
-  13_2_4_R_bullets_bypass_with_output_delay:ch13_effects
-  13_2_5_table_row1_no_effect:ch13_process_data
-  13_2_5_table_row2_mask_items1_2:ch13_process_data
-  13_2_5_table_row3_pass_through_item1:ch13_process_data
-  13_2_5_table_row4_pass_through_and_mask_items1_2:ch13_process_data
-  13_2_5_pass_through_with_output_delay:ch13_process_data
-  # issue 3 section 3 rules beyond chapter 13
-  issue3_first_out:issue3_rules
-  issue3_prewarning_and_delta_alarm:issue3_rules
-  issue3_xoon_assignment:issue3_rules
-  issue3_internal_references:issue3_rules
-  issue3_simulation:issue3_rules
-  issue3_mutually_locked_maintenance:issue3_rules
-  issue3_group_deactivation:issue3_rules
-  issue3_secure_write:issue3_secure_write
-)
-foreach(entry ${cemv_chapter13_scenarios})
-  string(REPLACE ":" ";" parts ${entry})
-  list(GET parts 0 scenario)
-  list(GET parts 1 matrix)
+# Every scenario here names its matrix (its "matrix" key, a path relative to
+# the file, docs/scenario.md), so `cemv simulate SCENARIO` finds it; the
+# encoder's scenario test (tests/encoder/test_differential.cpp) reads the same key.
+file(GLOB cemv_semantics_scenarios CONFIGURE_DEPENDS ${CEMV_SCEN}/*.json)
+list(SORT cemv_semantics_scenarios)
+foreach(_scenario ${cemv_semantics_scenarios})
+  get_filename_component(scenario ${_scenario} NAME_WE)
   cemv_cli_test(NAME scenario_${scenario} EXIT 0 MATCH "PASS"
-                COMMAND $<TARGET_FILE:cemv> simulate ${CEMV_SCEN}/matrices/${matrix}.json
-                        ${CEMV_SCEN}/${scenario}.json)
+                COMMAND $<TARGET_FILE:cemv> simulate ${_scenario})
 endforeach()
 
 set(cemv_rej_matrix ${CEMV_SCEN}/matrices/ch13_causes.json)
@@ -101,9 +46,9 @@ cemv_cli_test(NAME scenario_reject_missing_file EXIT 2 MATCH "no_such_scenario.j
   COMMAND $<TARGET_FILE:cemv> simulate ${cemv_rej_matrix} ${CEMV_SCEN}/rejects/no_such_scenario.json)
 cemv_cli_test(NAME scenario_reject_matrix_with_validation_errors EXIT 2
   MATCH "E-INTERSECTION-X intersection cause\\[1\\]/effect\\[1\\]"
-  COMMAND $<TARGET_FILE:cemv> simulate ${CEMV_SCEN}/rejects/matrix_with_x.json ${CEMV_SCEN}/rejects/trivial.json)
+  COMMAND $<TARGET_FILE:cemv> simulate ${CEMV_SCEN}/matrices/matrix_with_x.json ${CEMV_SCEN}/rejects/trivial.json)
 cemv_cli_test(NAME scenario_reject_matrix_unknown_key EXIT 2 MATCH "bypas_tag"
-  COMMAND $<TARGET_FILE:cemv> simulate ${CEMV_SCEN}/rejects/matrix_unknown_key.json ${CEMV_SCEN}/rejects/trivial.json)
+  COMMAND $<TARGET_FILE:cemv> simulate ${CEMV_SCEN}/matrices/matrix_unknown_key.json ${CEMV_SCEN}/rejects/trivial.json)
 cemv_cli_test(NAME scenario_failing_expectation_exit_1 EXIT 1
   MATCH "FAIL steps\\[1\\] \\(cycle 21, t = 2000 ms\\): cause\\[1\\]\\.active expected true, actual false"
   COMMAND $<TARGET_FILE:cemv> simulate ${cemv_rej_matrix} ${CEMV_SCEN}/rejects/failing_expectation.json)
@@ -116,3 +61,22 @@ cemv_cli_test(NAME scenario_trace EXIT 0 MATCH "^ \"format\": \"cemv-trace/1\",$
 # Deterministic output: two runs, trace included, are byte-identical.
 cemv_cli_test(NAME scenario_output_deterministic EXIT 0 MATCH "^identical$"
   COMMAND bash -c "c=$<TARGET_FILE:cemv> && m=${CEMV_SCEN}/matrices/ch13_effects.json && s=${CEMV_SCEN}/13_2_2_V_items4_5_6_output_delay_and_override.json && t=${PROJECT_BINARY_DIR}/scenario_det && $c simulate $m $s --trace $t.1.json > $t.1.txt && $c simulate $m $s --trace $t.2.json > $t.2.txt && cmp $t.1.txt $t.2.txt && cmp $t.1.json $t.2.json && echo identical")
+
+# The scenario's "matrix" key (docs/scenario.md): with one argument `cemv
+# simulate` loads the matrix the key names, relative to the scenario file...
+cemv_cli_test(NAME scenario_matrix_key_one_argument EXIT 0
+  MATCH "^matrix CH13_CAUSES signature [0-9a-f]{64}$"
+  COMMAND $<TARGET_FILE:cemv> simulate ${CEMV_SCEN}/13_1_1_on_delay_bullets1_2_4_delayed_activation.json)
+# ... and refuses it like a matrix given on the command line,
+cemv_cli_test(NAME scenario_matrix_key_refused_matrix EXIT 2
+  MATCH "matrix_with_x.json: E-INTERSECTION-X intersection cause\\[1\\]/effect\\[1\\]"
+  COMMAND $<TARGET_FILE:cemv> simulate ${CEMV_SCEN}/rejects/trivial.json)
+# without the key it says what to do, and a key that is not a path is bad input.
+cemv_cli_test(NAME scenario_matrix_key_missing EXIT 2
+  MATCH "error: .*no_key.json: the scenario names no matrix: give MATRIX SCENARIO"
+  COMMAND bash -c "f=${PROJECT_BINARY_DIR}/no_key.json && echo '{\"format\": \"cemv-scenario/1\", \"steps\": [{}]}' > $f && $0 simulate $f"
+          $<TARGET_FILE:cemv>)
+cemv_cli_test(NAME scenario_matrix_key_not_a_string EXIT 2
+  MATCH "error: .*bad_key.json: matrix: must be a non-empty string"
+  COMMAND bash -c "f=${PROJECT_BINARY_DIR}/bad_key.json && echo '{\"format\": \"cemv-scenario/1\", \"matrix\": 3, \"steps\": [{}]}' > $f && $0 simulate $f"
+          $<TARGET_FILE:cemv>)
