@@ -1,4 +1,4 @@
-// Issue 4, section 4: building the transition system of the generated
+// Target (bench/README.md): building the transition system of the generated
 // 128 x 128 x 1024 matrix that uses every option (target under 2 s), and the
 // cone-of-influence slice for one effect (target under 50 ms).
 //

@@ -1,4 +1,4 @@
-// Issue 2, "Done when": load (parse the canonical text) and validate the
+// Target (bench/README.md): load (parse the canonical text) and validate the
 // generated 128 x 128 x 1024 matrix in under 50 ms.
 #include <benchmark/benchmark.h>
 

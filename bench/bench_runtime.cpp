@@ -1,4 +1,4 @@
-// Issue 3, section 6: one scan cycle (Runtime::step) of the generated
+// Target (bench/README.md): one scan cycle (Runtime::step) of the generated
 // 128 x 128 x 1024 matrix that uses every option: target under 20 us per
 // cycle, and no heap allocation inside step (counted by replacing the global
 // operator new of this binary).

@@ -1,5 +1,6 @@
 // cemv: formal verification and test generation for cause & effect matrices.
 #include <exception>
+#include <string>
 #include <iostream>
 
 #include "cli/commands.hpp"
@@ -8,7 +9,7 @@
 int main(int argc, char** argv) {
   CLI::App app{"cemv: verification and acceptance tests for safety cause & effect matrices"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", "cemv 0.1.0");
+  app.set_version_flag("--version", std::string("cemv ") + CEMV_VERSION);
   cemv::cli::Context ctx;
   cemv::cli::add_model_commands(app, ctx);
   cemv::cli::add_validate_commands(app, ctx);

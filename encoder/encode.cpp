@@ -1009,6 +1009,7 @@ std::unique_ptr<Encoding> encode(z3::context& ctx, const model::Matrix& m,
   auto enc = std::make_unique<Encoding>(ctx);
   Builder b(ctx, m, *enc);
   b.build(roots);
+  enc->ts.check_complete();
   return enc;
 }
 

@@ -30,11 +30,29 @@ TransitionSystem::StateVar& TransitionSystem::state_of(const z3::expr& var) {
 }
 
 void TransitionSystem::set_init(const z3::expr& statevar, const z3::expr& value) {
-  state_of(statevar).init = value;
+  StateVar& s = state_of(statevar);
+  s.init = value;
+  s.has_init = true;
 }
 
 void TransitionSystem::assign_next(const z3::expr& statevar, const z3::expr& next) {
-  state_of(statevar).next = next;
+  StateVar& s = state_of(statevar);
+  s.next = next;
+  s.has_next = true;
+}
+
+void TransitionSystem::check_complete() const {
+  std::string no_init, no_next;
+  for (const auto& s : states_) {
+    if (!s.has_init) no_init += (no_init.empty() ? "" : ", ") + s.name;
+    if (!s.has_next) no_next += (no_next.empty() ? "" : ", ") + s.name;
+  }
+  if (no_init.empty() && no_next.empty()) return;
+  std::string what = "incomplete transition system:";
+  if (!no_init.empty()) what += " state variables without an initial value: " + no_init + ";";
+  if (!no_next.empty()) what += " state variables without a next-state function: " + no_next + ";";
+  what.pop_back();
+  throw std::logic_error(what);
 }
 
 void TransitionSystem::add_constraint(const std::string& name, const z3::expr& c) {

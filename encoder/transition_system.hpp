@@ -26,6 +26,8 @@ class TransitionSystem {
     z3::expr next_var;   // the primed copy, "name.next", used by trans_formula()
     z3::expr init;
     z3::expr next;
+    bool has_init = false;  // set_init was called
+    bool has_next = false;  // assign_next was called
   };
   struct InputVar {
     std::string name;
@@ -41,7 +43,9 @@ class TransitionSystem {
   z3::context& ctx() const { return *ctx_; }
 
   // A state variable; its initial value and next-state function must be set
-  // (set_init / assign_next) before the system is used.
+  // (set_init / assign_next) before the system is used: check_complete() says
+  // which are not (a variable without them would silently keep a free
+  // initial value or stay constant, as Pono's TransitionSystem also reports).
   z3::expr make_statevar(const std::string& name, const z3::sort& sort);
   z3::expr make_inputvar(const std::string& name, const z3::sort& sort);
   void set_init(const z3::expr& statevar, const z3::expr& value);
@@ -53,6 +57,11 @@ class TransitionSystem {
   // An invariant over the state variables, claimed to hold in every reachable
   // state (e.g. counter ranges); the checker proves it before using it.
   void add_lemma(const std::string& name, const z3::expr& lemma);
+
+  // Throws std::logic_error naming every state variable that has no initial
+  // value or no next-state function. encode() calls it on what it built;
+  // whoever adds state variables afterwards (a property monitor) calls it again.
+  void check_complete() const;
 
   const std::vector<StateVar>& statevars() const { return states_; }
   const std::vector<InputVar>& inputvars() const { return inputs_; }

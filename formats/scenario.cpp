@@ -1,6 +1,5 @@
 // cemv-scenario/1: parsing against a matrix, defaults, expansion into cycles.
-// The format is the contract of issue 3 section 4; docs/scenario.md describes it
-// field by field.
+// The format is a contract; docs/scenario.md describes it field by field.
 #include "formats/scenario.hpp"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Scenarios `cemv-scenario/1` (docs/scenario.md, issue 3 section 4): a sequence
+// Scenarios `cemv-scenario/1` (docs/scenario.md): a sequence
 // of steps (input values, operator commands, a number of scan cycles, expected
 // status) checked against one matrix. Parsing resolves every name against the
 // matrix, so a typo in a tag, a command or an expectation key is a LoadError

@@ -281,8 +281,8 @@ class Validator {
 
   // ---- timers ----------------------------------------------------------------
 
-  // Durations in seconds are converted to ms (issue 3: "seconds are converted
-  // to ms") and then count whole cycles like every other timer.
+  // Durations in seconds are converted to ms (docs/semantics.md T.2: durations "given in
+  // seconds ... are first converted to ms") and then count whole cycles like every other timer.
   void rounding(const Where& where, const std::string& field, std::uint64_t ms,
                 bool seconds = false) {
     if (m_.cycle_ms == 0 || ms == 0 || ms % m_.cycle_ms == 0) return;

@@ -252,18 +252,8 @@ std::vector<FieldRow> effect_fields_of(const Effect& e) {
   return r;
 }
 
-Document build(const Matrix& m, const std::string& sig, const std::vector<Diagnostic>& diags) {
-  Document d;
-  d.title = "Configuration report: " + m.name;
-  const Statistics s = statistics(m);
-  std::size_t errors = 0, warnings = 0;
-  for (const auto& x : diags) (x.severity == Severity::Error ? errors : warnings)++;
-
-  d.h(1, d.title);
-  d.p({plain("Matrix signature (SHA-256 of the canonical form): "), code(sig)});
-  d.p("Configuration report of manual section 11.4, written by cemv from the canonical form of "
-      "the matrix. It carries no time stamp: the same matrix always gives the same report.");
-
+// 1 Properties: the matrix-level fields (11.4).
+void add_properties(Document& d, const Matrix& m) {
   d.h(2, "1 Properties", "properties");
   d.table(field_table({
       {"format", plain(kMatrixFormat), ""},
@@ -277,7 +267,10 @@ Document build(const Matrix& m, const std::string& sig, const std::vector<Diagno
       {"group_deactivation.set_tag",
        m.group_deactivation ? code(m.group_deactivation->set_tag) : plain("not configured"), "6.1.7"},
   }));
+}
 
+// 2 Size and usage: the limits of 3.4 and what the matrix uses.
+void add_size_and_usage(Document& d, const Matrix& m, const Statistics& s) {
   d.h(2, "2 Size and usage", "size");
   {
     Table t;
@@ -332,7 +325,12 @@ Document build(const Matrix& m, const std::string& sig, const std::vector<Diagno
     row("SIF groups defined", m.sif_groups.size());
     d.table(t);
   }
+}
 
+// 3 Validation summary: the findings of 11.5.
+void add_validation_summary(Document& d, const std::vector<Diagnostic>& diags) {
+  std::size_t errors = 0, warnings = 0;
+  for (const auto& x : diags) (x.severity == Severity::Error ? errors : warnings)++;
   d.h(2, "3 Validation summary", "validation");
   d.p("Plausibility check of 11.5 (cemv validate): " + std::to_string(errors) + " error(s), " +
       std::to_string(warnings) + " warning(s).");
@@ -344,7 +342,10 @@ Document build(const Matrix& m, const std::string& sig, const std::vector<Diagno
                         plain(x.element), plain(x.section), plain(x.message)});
     d.table(t);
   }
+}
 
+// 4 SIF groups and their causes and effects.
+void add_sif_groups(Document& d, const Matrix& m, const Statistics& s) {
   d.h(2, "4 SIF groups", "sif");
   {
     std::set<int> groups(s.sif_used);
@@ -370,7 +371,10 @@ Document build(const Matrix& m, const std::string& sig, const std::vector<Diagno
       d.table(t);
     }
   }
+}
 
+// 5 First-out groups (6.3.4) and their causes.
+void add_first_out_groups(Document& d, const Matrix& m, const Statistics& s) {
   d.h(2, "5 First-out groups", "first-out");
   if (s.first_out_groups.empty()) {
     d.p("No cause belongs to a first-out group.");
@@ -385,7 +389,10 @@ Document build(const Matrix& m, const std::string& sig, const std::vector<Diagno
     }
     d.table(t);
   }
+}
 
+// 6 Causes: every field, the input tags, the intersections.
+void add_causes(Document& d, const Matrix& m) {
   d.h(2, "6 Causes", "causes");
   if (m.causes.empty()) d.p("No causes.");
   for (const auto& c : m.causes) {
@@ -406,7 +413,10 @@ Document build(const Matrix& m, const std::string& sig, const std::vector<Diagno
     }
     d.p("Intersections: " + (xs.empty() ? std::string("none") : xs) + ".");
   }
+}
 
+// 7 Effects: every field, the output tags, the intersections.
+void add_effects(Document& d, const Matrix& m) {
   d.h(2, "7 Effects", "effects");
   if (m.effects.empty()) d.p("No effects.");
   for (const auto& e : m.effects) {
@@ -426,7 +436,10 @@ Document build(const Matrix& m, const std::string& sig, const std::vector<Diagno
     }
     d.p("Intersections: " + (xs.empty() ? std::string("none") : xs) + ".");
   }
+}
 
+// 8 Intersections: the grid (6.5.2), then the list with notes.
+void add_intersections(Document& d, const Matrix& m) {
   d.h(2, "8 Intersections", "intersections");
   if (m.intersections.empty() || m.effects.empty() || m.causes.empty()) {
     d.p("No intersections.");
@@ -470,7 +483,10 @@ Document build(const Matrix& m, const std::string& sig, const std::vector<Diagno
     }
     d.table(list);
   }
+}
 
+// 9 User notes.
+void add_user_notes(Document& d, const Matrix& m) {
   // 11.4 "List of user notes": every note in one place, so none is overlooked.
   d.h(2, "9 User notes", "notes");
   {
@@ -488,10 +504,36 @@ Document build(const Matrix& m, const std::string& sig, const std::vector<Diagno
     if (t.rows.empty()) d.p("No notes.");
     else d.table(t);
   }
+}
 
+// The closing line: the signature again, at the end.
+void add_closing_signature(Document& d, const Matrix& m, const std::string& sig) {
   d.h(2, "Signature", "signature");
   d.p({plain("End of the configuration report of "), code(m.name), plain(". Matrix signature: "),
        code(sig)});
+}
+
+// The configuration report of 11.4, section by section.
+Document build(const Matrix& m, const std::string& sig, const std::vector<Diagnostic>& diags) {
+  Document d;
+  d.title = "Configuration report: " + m.name;
+  const Statistics s = statistics(m);
+
+  d.h(1, d.title);
+  d.p({plain("Matrix signature (SHA-256 of the canonical form): "), code(sig)});
+  d.p("Configuration report of manual section 11.4, written by cemv from the canonical form of "
+      "the matrix. It carries no time stamp: the same matrix always gives the same report.");
+
+  add_properties(d, m);
+  add_size_and_usage(d, m, s);
+  add_validation_summary(d, diags);
+  add_sif_groups(d, m, s);
+  add_first_out_groups(d, m, s);
+  add_causes(d, m);
+  add_effects(d, m);
+  add_intersections(d, m);
+  add_user_notes(d, m);
+  add_closing_signature(d, m, sig);
   return d;
 }
 

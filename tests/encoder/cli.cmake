@@ -1,4 +1,4 @@
-# `cemv export-smt` through the CLI (issue 4 section 3), with a second solver.
+# `cemv export-smt` through the CLI (docs/encoding.md, "Export"), with a second solver.
 set(_hipps ${PROJECT_SOURCE_DIR}/examples/pipeline-hipps/matrix.json)
 cemv_cli_test(NAME cli_export_smt_cvc5_reach_sat EXIT 0 MATCH "^sat"
   COMMAND bash -c "$<TARGET_FILE:cemv> export-smt ${_hipps} --roots effect:1 --depth 3 --reach 'effect[1].active' -o ${CMAKE_CURRENT_BINARY_DIR}/hipps_reach.smt2 && cvc5 --lang smt2 ${CMAKE_CURRENT_BINARY_DIR}/hipps_reach.smt2")
@@ -17,6 +17,6 @@ cemv_cli_test(NAME cli_export_smt_bad_format_exit_2 EXIT 2 MATCH "format"
 cemv_cli_test(NAME cli_export_smt_missing_file_exit_2 EXIT 2 MATCH "no_such_matrix.json"
   COMMAND $<TARGET_FILE:cemv> export-smt no_such_matrix.json)
 
-# Independence (issue 4): nothing under encoder/ includes the runtime.
+# Independence (docs/architecture.md, "Two independent implementations"): nothing under encoder/ includes the runtime.
 cemv_cli_test(NAME encoder_does_not_include_runtime EXIT 1
   COMMAND grep -rnE "#include *[<\"](\\.\\./)*runtime/" ${PROJECT_SOURCE_DIR}/encoder)

@@ -1,4 +1,4 @@
-# Encoder tests (issue 4): unit tests, the differential test against the
+# Encoder tests (docs/encoding.md): unit tests, the differential test against the
 # runtime (sharded so ctest runs the shards in parallel), and the --long runner.
 if(TARGET cemv_encoder AND TARGET cemv_testsupport)
   add_executable(test_encoder ${CMAKE_CURRENT_LIST_DIR}/test_encoder.cpp)

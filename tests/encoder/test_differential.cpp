@@ -1,4 +1,4 @@
-// The differential test (issue 4 section 2): the runtime and the encoder must
+// The differential test (docs/encoding.md): the runtime and the encoder must
 // agree on every observable in every cycle.
 #include <gtest/gtest.h>
 

@@ -3,6 +3,9 @@
 // SMT-LIB export through a second solver (cvc5).
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+#include <string>
+
 #include <cstdio>
 #include <fstream>
 #include <memory>
@@ -49,6 +52,44 @@ model::CycleInput frame(const model::Matrix& m, std::vector<float> values) {
 }
 
 // C.4 fixed example: 2oo3 high, limit 90, hysteresis 5.
+// A state variable without an initial value or a next-state function is an
+// error the system reports by name, not a variable silently kept free or constant.
+TEST(TransitionSystem, ReportsStateVariablesWithoutInitOrNext) {
+  z3::context ctx;
+  encoder::TransitionSystem ts(ctx);
+  z3::expr a = ts.make_statevar("a", ctx.bool_sort());
+  z3::expr b = ts.make_statevar("b", ctx.int_sort());
+  z3::expr c = ts.make_statevar("c", ctx.bool_sort());
+  ts.set_init(a, ctx.bool_val(false));
+  ts.assign_next(a, !a);
+  ts.assign_next(b, b + 1);
+  ts.set_init(c, ctx.bool_val(true));
+  try {
+    ts.check_complete();
+    ADD_FAILURE() << "an incomplete system passes";
+  } catch (const std::logic_error& e) {
+    EXPECT_EQ(std::string(e.what()),
+              "incomplete transition system: state variables without an initial value: b; "
+              "state variables without a next-state function: c");
+  }
+  ts.set_init(b, ctx.int_val(0));
+  ts.assign_next(c, c);
+  EXPECT_NO_THROW(ts.check_complete());
+}
+
+// Every state variable the encoder makes has both (encode() checks it too).
+TEST(TransitionSystem, EncodingsAreComplete) {
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    model::Matrix m = testsupport::random_matrix(seed);
+    z3::context ctx;
+    auto enc = encoder::encode(ctx, m);
+    for (const auto& s : enc->ts.statevars()) {
+      EXPECT_TRUE(s.has_init) << s.name;
+      EXPECT_TRUE(s.has_next) << s.name;
+    }
+  }
+}
+
 TEST(Semantics, HysteresisExampleOfC4) {
   auto m = one_cause(model::CauseFunction::TwoOoThree, 3, true);
   z3::context ctx;

@@ -28,9 +28,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The example of issue 2, section 2, verbatim (intersection 2 names a cause
+// An example matrix, verbatim (intersection 2 names a cause
 // that does not exist: that is validate()'s business, not the loader's).
-const char* kIssueExample = R"({
+const char* kFormatExample = R"({
   "format": "cemv-matrix/1",
   "name": "TANK_100",
   "title": "Tank 100 overfill protection",
@@ -179,8 +179,8 @@ fs::path fresh_temp_dir(const std::string& name) {
 
 // ---- Loading ---------------------------------------------------------------------
 
-TEST(Load, ReadsEveryFieldOfTheIssueExample) {
-  Matrix m = parse_matrix(kIssueExample);
+TEST(Load, ReadsEveryFieldOfTheFormatExample) {
+  Matrix m = parse_matrix(kFormatExample);
   EXPECT_EQ(m.name, "TANK_100");
   EXPECT_EQ(m.title, "Tank 100 overfill protection");
   EXPECT_EQ(m.cycle_ms, 100u);
@@ -521,8 +521,8 @@ TEST(Canonical, EscapesTextAndRepairsBrokenUtf8FromCode) {
   EXPECT_EQ(nlohmann::json::parse(text)["title"], "a\"b\\c\nd\x01 \xC3\xA9 \xEF\xBF\xBD end");
 }
 
-TEST(Canonical, RoundTripsTheIssueExampleAndTheMinimalFile) {
-  expect_canonical_round_trip(parse_matrix(kIssueExample));
+TEST(Canonical, RoundTripsTheFormatExampleAndTheMinimalFile) {
+  expect_canonical_round_trip(parse_matrix(kFormatExample));
   expect_canonical_round_trip(parse_matrix(kMinimal));
 }
 
@@ -569,7 +569,7 @@ TEST(Canonical, DoesNotDependOnKeyOrderElementOrderOrSpacing) {
 }
 
 TEST(Canonical, WritesRealsInTheirShortestSingleForm) {
-  Matrix m = parse_matrix(kIssueExample);
+  Matrix m = parse_matrix(kFormatExample);
   m.causes[0].analog->limit = 0.1f;
   m.causes[0].analog->hysteresis = -0.0f;
   m.causes[0].analog->delta = 1e20f;
@@ -584,7 +584,7 @@ TEST(Canonical, WritesRealsInTheirShortestSingleForm) {
 
 TEST(Canonical, SaveWritesExactlyTheCanonicalText) {
   fs::path dir = fresh_temp_dir("save");
-  Matrix m = parse_matrix(kIssueExample);
+  Matrix m = parse_matrix(kFormatExample);
   save_matrix(m, dir / "out.json");
   std::ifstream in(dir / "out.json", std::ios::binary);
   std::stringstream ss;
@@ -603,7 +603,7 @@ TEST(Signature, IsTheSha256OfTheCanonicalText) {
 }
 
 TEST(Signature, ChangesWithAnyFieldAndOnlyThen) {
-  Matrix m = parse_matrix(kIssueExample);
+  Matrix m = parse_matrix(kFormatExample);
   const std::string base = signature(m);
   EXPECT_EQ(base.size(), 64u);
   EXPECT_EQ(base.find_first_not_of("0123456789abcdef"), std::string::npos);

@@ -1,4 +1,4 @@
-// The random matrix and scenario generators (issue 4, 2) that the differential
+// The random matrix and scenario generators (tests/support/README.md) that the differential
 // test and the benchmarks rely on: valid, reproducible, and between them using
 // every option of cemv-matrix/1.
 #include <gtest/gtest.h>

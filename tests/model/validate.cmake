@@ -42,7 +42,7 @@ cemv_cli_test(NAME cli_validate_missing_file_exit_2 EXIT 2
   COMMAND $<TARGET_FILE:cemv> validate ${VC}/does-not-exist.json)
 cemv_cli_test(NAME cli_validate_bad_format_option_exit_2 EXIT 2
   COMMAND $<TARGET_FILE:cemv> validate --format xml ${VC}/cycle.json)
-# Every bundled example validates without errors (issue 2, section 7).
+# Every bundled example validates without errors (docs/validation.md).
 foreach(example tank-overfill burner-management pipeline-hipps compressor)
   if(EXISTS ${PROJECT_SOURCE_DIR}/examples/${example}/matrix.json)
     cemv_cli_test(NAME cli_validate_example_${example} EXIT 0
@@ -51,7 +51,7 @@ foreach(example tank-overfill burner-management pipeline-hipps compressor)
   endif()
 endforeach()
 
-# Issue 2 "Done when": the imported LSST grid loads, and validation lists the
+# The imported LSST grid (docs/csv.md) loads, and validation lists the
 # missing maximum override times of its effects with R intersections.
 set(LSST_GRID ${PROJECT_SOURCE_DIR}/../shared/external/lsst-tma-interlock-table.csv)
 if(EXISTS ${LSST_GRID})

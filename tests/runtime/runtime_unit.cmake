@@ -1,4 +1,4 @@
-# Unit tests of the reference runtime (docs/semantics.md, issue 3 section 3).
+# Unit tests of the reference runtime (docs/semantics.md).
 add_executable(test_runtime_unit
   ${CMAKE_CURRENT_LIST_DIR}/test_runtime_unit.cpp         # the fixed decisions, one by one
   ${CMAKE_CURRENT_LIST_DIR}/test_runtime_unit_random.cpp  # invariants on random matrices

@@ -1,5 +1,5 @@
 # Tests of the scenario format and of the runtime against the manual's tables
-# (6.1.6, 6.3.1, appendix B) and timer boundaries (issue 3 section 5). They need
+# (6.1.6, 6.3.1, appendix B) and timer boundaries (docs/semantics.md T.2). They need
 # the reference runtime; until runtime/ builds a library they are not defined.
 if(TARGET cemv_runtime)
   foreach(t scenario runtime_voting_tables runtime_cause_functions runtime_timers)

@@ -1,8 +1,8 @@
 // Every row of the 6.3.1 tables "Mutual dependencies of the Cause parameters":
 // discrete (1-3 tags, each function type; the manual assumes DTT and we check
 // ETT as its mirror, footnote "*") and analog (high and low, each function type,
-// with the hysteresis sentences). Hysteresis acts at cause level (issue 3 section
-// 3): while the cause's logic result was TRUE in the previous cycle every tag is
+// with the hysteresis sentences). Hysteresis acts at cause level (docs/semantics.md
+// C.4): while the cause's logic result was TRUE in the previous cycle every tag is
 // judged against the relaxed threshold and the same voting decides.
 #include <gtest/gtest.h>
 
@@ -93,7 +93,7 @@ class AnalogRow : public ::testing::TestWithParam<FunctionRow> {};
 // become inactive again until ... (enough) input tags have undershot the limit
 // minus hysteresis (exceeded the limit plus hysteresis)". For "AND, 2 tags, High"
 // the manual says "until the two input tag have undershot"; that contradicts the
-// Low row and the 3-tag AND rows ("one of"): erratum decided in issue 3, the
+// Low row and the 3-tag AND rows ("one of"): erratum decided in docs/semantics.md C.4, the
 // cause goes inactive when one of the two undershoots.
 TEST_P(AnalogRow, TripsAtTheLimitAndHoldsUntilTheRelaxedThresholdIsLeft) {
   const FunctionRow& r = GetParam();
@@ -139,8 +139,8 @@ TEST_P(AnalogRow, TripsAtTheLimitAndHoldsUntilTheRelaxedThresholdIsLeft) {
 INSTANTIATE_TEST_SUITE_P(Table631, AnalogRow, ::testing::ValuesIn(kRows),
                          [](const auto& info) { return std::string(info.param.name); });
 
-// The worked example of issue 3 section 3: 2oo3 high, limit 90, hysteresis 5.
-TEST(Hysteresis, IssueExample2oo3) {
+// The worked example of docs/semantics.md C.4: 2oo3 high, limit 90, hysteresis 5.
+TEST(Hysteresis, WorkedExample2oo3) {
   Sim sim(make_matrix({make_cause(1, CauseFunction::TwoOoThree, 3, Kind::AnalogHigh)},
                       {make_effect(1)}, {link(1, 1)}));
   auto set3 = [&](float a, float b, float c) {

@@ -1,5 +1,5 @@
 // Timer boundaries of every time function, at the exact cycle of expiry and one
-// cycle before (issue 3 section 3 "Timing"): a timer started in cycle k has
+// cycle before (docs/semantics.md T.2): a timer started in cycle k has
 // elapsed n*cycle_ms in cycle k+n and expires in the first cycle where elapsed
 // >= duration. All timers here are 2000 ms (prealarms 1000 ms) at 100 ms cycles,
 // so they expire in cycle k+20 (prealarms k+10). Cycles are counted from 1.

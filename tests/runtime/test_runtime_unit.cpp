@@ -1,5 +1,5 @@
-// Unit tests of the reference runtime against the fixed decisions of issue 3
-// section 3, through the public API only. Paragraph numbers refer to
+// Unit tests of the reference runtime against the fixed decisions of
+// docs/semantics.md (the paragraphs marked "fixed"), through the public API only. Paragraph numbers refer to
 // docs/semantics.md. Matrices are built in C++ so that each test shows exactly
 // the options it exercises.
 #include <gtest/gtest.h>
@@ -275,7 +275,7 @@ TEST(Timers, TimedCauseRunsForItsDurationWhateverTheInput) {
 
 // ---- C.4 voting and hysteresis ---------------------------------------------------
 
-TEST(Hysteresis, TwoOutOfThreeHighExampleOfTheIssue) {
+TEST(Hysteresis, TwoOutOfThreeHighExampleOfC4) {
   Plant p(matrix({analog_cause(1, {"A", "B", "C"}, CauseFunction::TwoOoThree, 90.0f, 5.0f)}));
   p.set("A", 95);
   p.set("B", 95);

@@ -1,7 +1,7 @@
 // Every row of the degraded-voting tables: manual 6.1.6 ("Degraded Voting using
 // the function type 2oo3 as an example") and appendix B ("Resulting cause logic
 // for Degraded Voting", B.1-B.5, tables 1-3 each), plus the single-tag "normal"
-// function derived from the rule of issue 3 section 3 (not printed in the manual).
+// function derived from the rule of docs/semantics.md C.4 (not printed in the manual).
 //
 // Each printed cell stands for several concrete tag states, all of which must
 // give the printed result:
@@ -52,7 +52,7 @@ constexpr bool I = false;  // Inactive
 const char* kB5Erratum =
     "B.5 table 2 prints Active for a non-tripped tag voting in 3oo3/2oo2; tables 1 and 3 print "
     "Inactive for the same tag states and AND requires every voting tag: erratum decided in "
-    "issue 3 section 3, the cause is inactive";
+    "docs/semantics.md C.4, the cause is inactive";
 
 std::vector<Row> rows() {
   std::vector<Row> r = {
@@ -207,7 +207,7 @@ std::vector<Row> rows() {
       {"B5_T3", 8, AND, IGN, {"T", "T", "B"}, "2oo2", A},
       {"B5_T3", 9, AND, IGN, {"T", "B", "B"}, "1oo1", A},
       {"B5_T3", 10, AND, IGN, {"B", "B", "B"}, "bypass", I},
-      // ---- single tag "normal": the issue 3 rule applied to one tag ----
+      // ---- single tag "normal": the C.4 rule applied to one tag ----
       {"Normal_Trip", 1, NORMAL, TRIP, {"N"}, "1oo1", I},
       {"Normal_Trip", 2, NORMAL, TRIP, {"TQ"}, "1oo1", A},
       {"Normal_Trip", 3, NORMAL, TRIP, {"B"}, "bypass", I},

@@ -1,4 +1,4 @@
-// cemv-scenario/1 (issue 3 section 4): parsing against a matrix, defaults and
+// cemv-scenario/1 (docs/scenario.md): parsing against a matrix, defaults and
 // the expansion into cycles. The matrix is built in code so these tests need
 // neither the matrix loader nor the runtime, except the last one, which checks
 // that the runtime's own defaults agree with the scenario defaults.
@@ -41,7 +41,7 @@ std::string first_issue(const std::string& text, const Matrix& m = tank()) {
   return "(accepted)";
 }
 
-TEST(ScenarioDefaults, NonTrippedValuesOfIssue3) {
+TEST(ScenarioDefaults, NonTrippedValuesOfS1) {
   Matrix m = tank();
   InputTable t(m);
   CycleInput in = default_cycle_input(m);
@@ -57,7 +57,7 @@ TEST(ScenarioDefaults, NonTrippedValuesOfIssue3) {
   EXPECT_TRUE(in.commands.empty());
 }
 
-TEST(ScenarioParse, TheExampleOfIssue3) {
+TEST(ScenarioParse, TheExampleOfTheFormat) {
   Matrix m = tank();
   const char* text = R"({
     "format": "cemv-scenario/1",

@@ -136,7 +136,7 @@ inline Command command(CommandOp op, int cause = 0, int effect = 0, int tag = 0,
 }
 
 // Drives one runtime: inputs persist between cycles, commands apply to the next
-// cycle only (the scenario convention of issue 3 section 4).
+// cycle only (the scenario convention of docs/scenario.md).
 class Sim {
  public:
   explicit Sim(Matrix m) : m_(std::move(m)), rt_(m_), in_(default_cycle_input(m_)) {

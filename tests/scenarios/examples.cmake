@@ -2,7 +2,7 @@
 # pass `cemv validate` with no error and no warning (an intended warning would
 # have to be explained in the example's README and matched here), and every
 # scenario next to it must pass `cemv simulate` on the reference runtime
-# (issue 3 "Done when": every example has at least one passing scenario).
+# (every example has at least one passing scenario).
 # New examples and scenarios are picked up by the glob without editing this file.
 set(_cemv_examples_dir ${CMAKE_CURRENT_LIST_DIR}/../../examples)
 file(GLOB _cemv_example_matrices CONFIGURE_DEPENDS ${_cemv_examples_dir}/*/matrix.json)

@@ -22,7 +22,7 @@ enum class Behaviour {
 struct TagPlan {
   TagKind kind = TagKind::Bool;
   Behaviour behaviour = Behaviour::Hold;
-  float normal = 0.0f;              // non-tripped default (scenario defaults of issue 3)
+  float normal = 0.0f;              // non-tripped default (docs/semantics.md S.1)
   float active_bias = 0.2f;         // Hold: probability of TRUE
   std::vector<float> candidates;    // analog: thresholds and their neighbours
   float lo = 0.0f, hi = 0.0f;       // analog: range of random values
@@ -41,7 +41,7 @@ void add_with_neighbours(std::vector<float>& out, float v) {
   out.push_back(std::nextafter(v, std::numeric_limits<float>::infinity()));
 }
 
-// The value a scenario starts an analog input at (issue 3, section 4), computed
+// The value a scenario starts an analog input at (docs/semantics.md S.1), computed
 // as the scenario format and the runtime do: in double, rounded to float once.
 float non_tripped(const AnalogParams& a) {
   const double limit = a.limit, hysteresis = a.hysteresis;

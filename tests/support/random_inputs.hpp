@@ -12,7 +12,7 @@
 namespace cemv::testsupport {
 
 // `cycles` frames, each indexed by model::InputTable(m). The first frame holds
-// every tag at its non-tripped default (the scenario defaults of issue 3), then
+// every tag at its non-tripped default (docs/semantics.md S.1), then
 // values change after random holds of several cycles:
 //  - analog tags take values at and around the thresholds of the causes that
 //    read them (limit, limit -/+ hysteresis, prewarning, the neighbouring

@@ -77,7 +77,7 @@ struct MatrixOptions {
 model::Matrix random_matrix(std::uint64_t seed, const MatrixOptions& opt = {});
 
 // 128 causes x 128 effects x 1024 intersections that use every option (every
-// entry of feature_names() occurs), for the benchmarks of issues 2, 3 and 4.
+// entry of feature_names() occurs), for the benchmarks (bench/README.md).
 model::Matrix big_matrix(std::uint64_t seed = 1);
 
 // The options a matrix uses, by name, with how often: the test checks that
