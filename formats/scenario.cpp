@@ -314,11 +314,69 @@ class Parser {
     return e;
   }
 
+  // docs/scenario.md "Commands (10.7)": one command, its arguments checked
+  // against the matrix. Each argument kind has its own reader below.
   std::optional<Command> parse_command(const json& j, const std::string& path) {
     if (!j.is_object()) {
       error(path, "a command is an object, not " + json_type_name(j));
       return std::nullopt;
     }
+    auto op = parse_op(j, path);
+    if (!op) return std::nullopt;
+    const std::string name = j["op"].get<std::string>();
+    Command cmd;
+    cmd.op = *op;
+    std::size_t before = issues_.size();
+    CommandArgs args{*this, j, path, name, cmd};
+    switch (*op) {
+      case CommandOp::AckCause:
+        check_keys(j, path, {"op", "cause"});
+        args.cause();
+        break;
+      case CommandOp::ResetEffect:
+      case CommandOp::OverrideEffect:
+      case CommandOp::StopOverride:
+        check_keys(j, path, {"op", "effect"});
+        args.effect();
+        break;
+      case CommandOp::SoftBypassCause:
+        check_keys(j, path, {"op", "cause", "on"});
+        args.cause();
+        args.on();
+        break;
+      case CommandOp::SoftBypassTag:
+        check_keys(j, path, {"op", "cause", "tag", "on"});
+        args.tag_index(args.cause());
+        args.on();
+        break;
+      case CommandOp::SoftBypassEffect:
+        check_keys(j, path, {"op", "effect", "on"});
+        args.effect();
+        args.on();
+        break;
+      case CommandOp::SimulateTag:
+        check_keys(j, path, {"op", "tag", "value"});
+        args.simulated_tag_and_value();
+        break;
+      case CommandOp::StopSimulation:
+        check_keys(j, path, {"op", "tag"});
+        args.stopped_tag();
+        break;
+      case CommandOp::ClearFirstOut:
+        check_keys(j, path, {"op", "group"});
+        args.group();
+        break;
+      case CommandOp::ClearAlarms:
+        check_keys(j, path, {"op", "cause", "effect"});
+        args.cause_or_effect();
+        break;
+    }
+    if (issues_.size() != before) return std::nullopt;
+    return cmd;
+  }
+
+  // The "op" of a command: a known command name.
+  std::optional<CommandOp> parse_op(const json& j, const std::string& path) {
     if (!j.contains("op") || !j["op"].is_string()) {
       error(join(path, "op"), "missing or not a string; a command names its \"op\"");
       return std::nullopt;
@@ -330,288 +388,282 @@ class Parser {
       for (int i = 0; i <= static_cast<int>(CommandOp::ClearAlarms); ++i)
         ops.push_back(to_string(static_cast<CommandOp>(i)));
       error(join(path, "op"), "unknown command " + in_quotes(name) + did_you_mean(name, ops));
-      return std::nullopt;
     }
-    Command cmd;
-    cmd.op = *op;
-    std::size_t before = issues_.size();
-    auto need = [&](const char* key) -> const json* {
+    return op;
+  }
+
+  // A simulatable tag by name (O.8): an input tag of the matrix, else one of its
+  // output tags; nullopt (and an error naming the closest tags) otherwise.
+  struct SimulatedTag {
+    std::string name;
+    TagKind kind = TagKind::Bool;
+  };
+  std::optional<SimulatedTag> simulatable_tag(const std::string& tag, const std::string& where) {
+    if (auto idx = table_.find(tag)) return SimulatedTag{table_.tags()[*idx].name, table_.tags()[*idx].kind};
+    auto out = std::find_if(outputs_.begin(), outputs_.end(),
+                            [&](const OutputRef& o) { return tag_key(o.name) == tag_key(tag); });
+    if (out != outputs_.end()) return SimulatedTag{out->name, TagKind::Bool};
+    std::vector<std::string> all = input_names_;
+    all.insert(all.end(), output_names_.begin(), output_names_.end());
+    error(where, "unknown tag " + in_quotes(tag) + did_you_mean(tag, all));
+    return std::nullopt;
+  }
+
+  // The arguments of one command, each read into `cmd` with its own checks.
+  struct CommandArgs {
+    Parser& p;
+    const json& j;
+    const std::string& path;
+    const std::string& name;
+    Command& cmd;
+
+    const json* need(const char* key) {
       if (!j.contains(key)) {
-        error(path, "command " + in_quotes(name) + " needs \"" + key + "\"");
+        p.error(path, "command " + in_quotes(name) + " needs \"" + key + "\"");
         return nullptr;
       }
       return &j[key];
-    };
-    auto cause = [&]() -> const Cause* {
+    }
+    const Cause* cause() {
       const json* v = need("cause");
       if (!v) return nullptr;
-      const Cause* c = cause_ref(*v, join(path, "cause"));
+      const Cause* c = p.cause_ref(*v, join(path, "cause"));
       if (c) cmd.cause = c->id;
       return c;
-    };
-    auto effect = [&]() {
+    }
+    void effect() {
       const json* v = need("effect");
       if (!v) return;
-      if (const Effect* e = effect_ref(*v, join(path, "effect"))) cmd.effect = e->id;
-    };
-    auto on = [&]() {
+      if (const Effect* e = p.effect_ref(*v, join(path, "effect"))) cmd.effect = e->id;
+    }
+    void on() {
       const json* v = need("on");
       if (!v) return;
-      if (auto b = bool_field(*v, join(path, "on"))) cmd.on = *b;
-    };
-    switch (*op) {
-      case CommandOp::AckCause:
-        check_keys(j, path, {"op", "cause"});
-        cause();
-        break;
-      case CommandOp::ResetEffect:
-      case CommandOp::OverrideEffect:
-      case CommandOp::StopOverride:
-        check_keys(j, path, {"op", "effect"});
-        effect();
-        break;
-      case CommandOp::SoftBypassCause:
-        check_keys(j, path, {"op", "cause", "on"});
-        cause();
-        on();
-        break;
-      case CommandOp::SoftBypassTag: {
-        check_keys(j, path, {"op", "cause", "tag", "on"});
-        const Cause* c = cause();
-        if (const json* t = need("tag")) {
-          auto k = int_field(*t, join(path, "tag"));
-          if (k && c) {
-            if (*k < 1 || *k > static_cast<std::int64_t>(c->tags.size()))
-              error(join(path, "tag"), "cause " + std::to_string(c->id) + " has " +
-                                           std::to_string(c->tags.size()) +
-                                           " input tag(s); the tag index is 1-" +
-                                           std::to_string(c->tags.size()));
-            else
-              cmd.tag = static_cast<int>(*k);
-          }
-        }
-        on();
-        break;
-      }
-      case CommandOp::SoftBypassEffect:
-        check_keys(j, path, {"op", "effect", "on"});
-        effect();
-        on();
-        break;
-      case CommandOp::SimulateTag: {
-        check_keys(j, path, {"op", "tag", "value"});
-        const json* t = need("tag");
-        const json* v = need("value");
-        if (t) {
-          std::string tag = string_field(*t, join(path, "tag"));
-          if (!tag.empty()) {
-            auto idx = table_.find(tag);
-            auto out = std::find_if(outputs_.begin(), outputs_.end(), [&](const OutputRef& o) {
-              return tag_key(o.name) == tag_key(tag);
-            });
-            if (idx) {
-              const InputTag& it = table_.tags()[*idx];
-              cmd.tag_name = it.name;
-              if (v)
-                if (auto x = tag_value(*v, it.kind, it.name, join(path, "value"))) cmd.value = *x;
-            } else if (out != outputs_.end()) {
-              cmd.tag_name = out->name;
-              if (v)
-                if (auto x = tag_value(*v, TagKind::Bool, out->name, join(path, "value")))
-                  cmd.value = *x;
-            } else {
-              std::vector<std::string> all = input_names_;
-              all.insert(all.end(), output_names_.begin(), output_names_.end());
-              error(join(path, "tag"), "unknown tag " + in_quotes(tag) + did_you_mean(tag, all));
-            }
-          }
-        }
-        break;
-      }
-      case CommandOp::StopSimulation: {
-        check_keys(j, path, {"op", "tag"});
-        if (j.contains("tag")) {
-          std::string tag = string_field(j["tag"], join(path, "tag"));
-          auto idx = table_.find(tag);
-          auto out = std::find_if(outputs_.begin(), outputs_.end(), [&](const OutputRef& o) {
-            return tag_key(o.name) == tag_key(tag);
-          });
-          if (idx) {
-            cmd.tag_name = table_.tags()[*idx].name;
-          } else if (out != outputs_.end()) {
-            cmd.tag_name = out->name;
-          } else if (j["tag"].is_string()) {
-            std::vector<std::string> all = input_names_;
-            all.insert(all.end(), output_names_.begin(), output_names_.end());
-            error(join(path, "tag"), "unknown tag " + in_quotes(tag) + did_you_mean(tag, all));
-          }
-        }
-        break;
-      }
-      case CommandOp::ClearFirstOut:
-        check_keys(j, path, {"op", "group"});
-        if (const json* g = need("group")) {
-          auto v = int_field(*g, join(path, "group"));
-          if (v && (*v < 1 || *v > kMaxFirstOutGroup))
-            error(join(path, "group"), "first-out groups are 1-" + std::to_string(kMaxFirstOutGroup));
-          else if (v)
-            cmd.group = static_cast<int>(*v);
-        }
-        break;
-      case CommandOp::ClearAlarms:
-        check_keys(j, path, {"op", "cause", "effect"});
-        if (j.contains("cause") == j.contains("effect")) {
-          error(path, "command 'clear_alarms' needs exactly one of \"cause\" and \"effect\"");
-        } else if (j.contains("cause")) {
-          if (const Cause* c = cause_ref(j["cause"], join(path, "cause"))) cmd.cause = c->id;
-        } else {
-          if (const Effect* e = effect_ref(j["effect"], join(path, "effect"))) cmd.effect = e->id;
-        }
-        break;
+      if (auto b = p.bool_field(*v, join(path, "on"))) cmd.on = *b;
     }
-    if (issues_.size() != before) return std::nullopt;
-    return cmd;
-  }
+    // soft_bypass_tag (O.6): the position of an input tag of cause `c`, 1-3.
+    void tag_index(const Cause* c) {
+      const json* t = need("tag");
+      if (!t) return;
+      auto k = p.int_field(*t, join(path, "tag"));
+      if (!k || !c) return;
+      if (*k < 1 || *k > static_cast<std::int64_t>(c->tags.size()))
+        p.error(join(path, "tag"), "cause " + std::to_string(c->id) + " has " + std::to_string(c->tags.size()) +
+                                       " input tag(s); the tag index is 1-" + std::to_string(c->tags.size()));
+      else
+        cmd.tag = static_cast<int>(*k);
+    }
+    // simulate_tag (O.8): the tag, and a value of its kind.
+    void simulated_tag_and_value() {
+      const json* t = need("tag");
+      const json* v = need("value");
+      if (!t) return;
+      std::string tag = p.string_field(*t, join(path, "tag"));
+      if (tag.empty()) return;
+      auto sim = p.simulatable_tag(tag, join(path, "tag"));
+      if (!sim) return;
+      cmd.tag_name = sim->name;
+      if (v)
+        if (auto x = p.tag_value(*v, sim->kind, sim->name, join(path, "value"))) cmd.value = *x;
+    }
+    // stop_simulation (O.8): one tag, or (without "tag") every simulation.
+    void stopped_tag() {
+      if (!j.contains("tag")) return;
+      std::string tag = p.string_field(j["tag"], join(path, "tag"));
+      if (!j["tag"].is_string()) return;
+      if (auto sim = p.simulatable_tag(tag, join(path, "tag"))) cmd.tag_name = sim->name;
+    }
+    // clear_first_out (O.9): a first-out group.
+    void group() {
+      const json* g = need("group");
+      if (!g) return;
+      auto v = p.int_field(*g, join(path, "group"));
+      if (v && (*v < 1 || *v > kMaxFirstOutGroup))
+        p.error(join(path, "group"), "first-out groups are 1-" + std::to_string(kMaxFirstOutGroup));
+      else if (v)
+        cmd.group = static_cast<int>(*v);
+    }
+    // clear_alarms (O.10): exactly one of a cause and an effect.
+    void cause_or_effect() {
+      if (j.contains("cause") == j.contains("effect")) {
+        p.error(path, "command 'clear_alarms' needs exactly one of \"cause\" and \"effect\"");
+      } else if (j.contains("cause")) {
+        if (const Cause* c = p.cause_ref(j["cause"], join(path, "cause"))) cmd.cause = c->id;
+      } else {
+        if (const Effect* e = p.effect_ref(j["effect"], join(path, "effect"))) cmd.effect = e->id;
+      }
+    }
+  };
+
 
   // "cause[ID or NAME].FIELD", "effect[..].FIELD", "effect[..].tag[k]" or an
   // output tag name.
+  // docs/scenario.md "Expectations": KEY -> VALUE, where the key names a status
+  // field (cause[..].FIELD, effect[..].FIELD, effect[..].tag[k]) or an output tag.
   std::optional<Expectation> parse_expectation(const std::string& key, const json& v,
                                                const std::string& path) {
     Expectation x;
     x.key = key;
     x.where = join(path, key);
-    bool is_cause = key.starts_with("cause[");
-    bool is_effect = key.starts_with("effect[");
-    if (is_cause || is_effect) {
-      std::size_t open = key.find('[');
-      std::size_t close = key.find(']', open);
-      if (close == std::string::npos || close + 1 >= key.size() || key[close + 1] != '.') {
-        error(x.where, "malformed key; expected " + std::string(is_cause ? "cause" : "effect") +
-                           "[ID or NAME].FIELD");
-        return std::nullopt;
-      }
-      std::string ref = key.substr(open + 1, close - open - 1);
-      std::string field = key.substr(close + 2);
-      bool numeric = !ref.empty() && ref.size() <= 9 &&
-                     std::all_of(ref.begin(), ref.end(), [](char c) { return c >= '0' && c <= '9'; });
-      json ref_json = numeric ? json(std::stoi(ref)) : json(ref);
-      Observable& o = x.target.observable;
-      o.id = 0;
-      if (is_cause) {
-        const Cause* c = cause_ref(ref_json, x.where);
-        if (!c) return std::nullopt;
-        o.kind = Node::Kind::Cause;
-        o.id = c->id;
-        const auto& fields = cause_fields();
-        auto f = std::find_if(fields.begin(), fields.end(),
-                              [&](const FieldInfo& fi) { return field == fi.name; });
-        if (f == fields.end()) {
-          std::vector<std::string> names;
-          for (const auto& fi : fields) names.push_back(fi.name);
-          error(x.where, "unknown cause field " + in_quotes(field) + did_you_mean(field, names));
-          return std::nullopt;
-        }
-        o.field = f->name;
-        o.type = f->type;
-        o.key = observable_key({o.kind, o.id}, o.field);
-      } else {
-        const Effect* e = effect_ref(ref_json, x.where);
-        if (!e) return std::nullopt;
-        o.kind = Node::Kind::Effect;
-        o.id = e->id;
-        if (field.starts_with("tag[") && field.ends_with("]")) {
-          std::string digits = field.substr(4, field.size() - 5);
-          bool ok = !digits.empty() && digits.size() <= 2 &&
-                    std::all_of(digits.begin(), digits.end(),
-                                [](char c) { return c >= '0' && c <= '9'; });
-          int k = ok ? std::stoi(digits) : 0;
-          if (k < 1 || k > static_cast<int>(e->tags.size())) {
-            error(x.where, "effect " + std::to_string(e->id) + " has " +
-                               std::to_string(e->tags.size()) + " output tag(s); tag[k] takes k = 1-" +
-                               std::to_string(e->tags.size()));
-            return std::nullopt;
-          }
-          o.field = "tag";
-          o.tag = k;
-          o.type = FieldType::Bool;
-          o.key = observable_key({o.kind, o.id}, o.field, k);
-        } else {
-          const auto& fields = effect_fields();
-          auto f = std::find_if(fields.begin(), fields.end(),
-                                [&](const FieldInfo& fi) { return field == fi.name; });
-          if (f == fields.end()) {
-            std::vector<std::string> names;
-            for (const auto& fi : fields) names.push_back(fi.name);
-            names.push_back("tag[1]");
-            error(x.where, "unknown effect field " + in_quotes(field) + did_you_mean(field, names));
-            return std::nullopt;
-          }
-          o.field = f->name;
-          o.type = f->type;
-          o.key = observable_key({o.kind, o.id}, o.field);
-        }
-      }
-      x.target.kind = ExpectTarget::Kind::Status;
-      x.type = o.type;
-    } else {
-      auto out = std::find_if(outputs_.begin(), outputs_.end(), [&](const OutputRef& o) {
-        return tag_key(o.name) == tag_key(key);
-      });
-      if (out == outputs_.end()) {
-        std::string hint = did_you_mean(key, output_names_);
-        if (table_.find(key))
-          error(x.where, in_quotes(key) + " is an input tag; expectations name output tags, "
-                                       "cause[..].FIELD or effect[..].FIELD");
-        else
-          error(x.where, "unknown expectation key " + in_quotes(key) +
-                             ": not an output tag, nor cause[..].FIELD / effect[..].FIELD" + hint);
-        return std::nullopt;
-      }
-      x.target.kind = ExpectTarget::Kind::OutputTag;
-      x.target.output_tag = out->name;
-      Observable& o = x.target.observable;
-      o.kind = Node::Kind::Effect;
-      o.id = out->effect;
-      o.field = "tag";
-      o.tag = out->k;
-      o.type = FieldType::Bool;
-      o.key = observable_key({o.kind, o.id}, o.field, o.tag);
-      x.type = FieldType::Bool;
+    const bool status = key.starts_with("cause[") || key.starts_with("effect[");
+    auto target = status ? status_target(key, x.where) : output_target(key, x.where);
+    if (!target) return std::nullopt;
+    x.target = *target;
+    x.type = target->observable.type;
+    auto expected = expected_value(x.type, v, x.where);
+    if (!expected) return std::nullopt;
+    x.expected = *expected;
+    return x;
+  }
+
+  // cause[ID or NAME].FIELD or effect[ID or NAME].FIELD.
+  std::optional<ExpectTarget> status_target(const std::string& key, const std::string& where) {
+    const bool is_cause = key.starts_with("cause[");
+    std::size_t open = key.find('[');
+    std::size_t close = key.find(']', open);
+    if (close == std::string::npos || close + 1 >= key.size() || key[close + 1] != '.') {
+      error(where, "malformed key; expected " + std::string(is_cause ? "cause" : "effect") +
+                       "[ID or NAME].FIELD");
+      return std::nullopt;
     }
-    switch (x.type) {
+    std::string ref = key.substr(open + 1, close - open - 1);
+    std::string field = key.substr(close + 2);
+    bool numeric = !ref.empty() && ref.size() <= 9 &&
+                   std::all_of(ref.begin(), ref.end(), [](char c) { return c >= '0' && c <= '9'; });
+    json ref_json = numeric ? json(std::stoi(ref)) : json(ref);
+    std::optional<Observable> o;
+    if (is_cause) {
+      const Cause* c = cause_ref(ref_json, where);
+      if (!c) return std::nullopt;
+      o = cause_field(*c, field, where);
+    } else {
+      const Effect* e = effect_ref(ref_json, where);
+      if (!e) return std::nullopt;
+      o = effect_field(*e, field, where);
+    }
+    if (!o) return std::nullopt;
+    ExpectTarget t;
+    t.kind = ExpectTarget::Kind::Status;
+    t.observable = *o;
+    return t;
+  }
+
+  // A status field of a cause (C.9).
+  std::optional<Observable> cause_field(const Cause& c, const std::string& field, const std::string& where) {
+    const auto& fields = cause_fields();
+    auto f = std::find_if(fields.begin(), fields.end(), [&](const FieldInfo& fi) { return field == fi.name; });
+    if (f == fields.end()) {
+      std::vector<std::string> names;
+      for (const auto& fi : fields) names.push_back(fi.name);
+      error(where, "unknown cause field " + in_quotes(field) + did_you_mean(field, names));
+      return std::nullopt;
+    }
+    Observable o;
+    o.kind = Node::Kind::Cause;
+    o.id = c.id;
+    o.field = f->name;
+    o.type = f->type;
+    o.key = observable_key({o.kind, o.id}, o.field);
+    return o;
+  }
+
+  // A status field of an effect (E.11), or tag[k], the value of its output k (E.9).
+  std::optional<Observable> effect_field(const Effect& e, const std::string& field, const std::string& where) {
+    Observable o;
+    o.kind = Node::Kind::Effect;
+    o.id = e.id;
+    if (field.starts_with("tag[") && field.ends_with("]")) {
+      std::string digits = field.substr(4, field.size() - 5);
+      bool ok = !digits.empty() && digits.size() <= 2 &&
+                std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+      int k = ok ? std::stoi(digits) : 0;
+      if (k < 1 || k > static_cast<int>(e.tags.size())) {
+        error(where, "effect " + std::to_string(e.id) + " has " + std::to_string(e.tags.size()) +
+                         " output tag(s); tag[k] takes k = 1-" + std::to_string(e.tags.size()));
+        return std::nullopt;
+      }
+      o.field = "tag";
+      o.tag = k;
+      o.type = FieldType::Bool;
+      o.key = observable_key({o.kind, o.id}, o.field, k);
+      return o;
+    }
+    const auto& fields = effect_fields();
+    auto f = std::find_if(fields.begin(), fields.end(), [&](const FieldInfo& fi) { return field == fi.name; });
+    if (f == fields.end()) {
+      std::vector<std::string> names;
+      for (const auto& fi : fields) names.push_back(fi.name);
+      names.push_back("tag[1]");
+      error(where, "unknown effect field " + in_quotes(field) + did_you_mean(field, names));
+      return std::nullopt;
+    }
+    o.field = f->name;
+    o.type = f->type;
+    o.key = observable_key({o.kind, o.id}, o.field);
+    return o;
+  }
+
+  // An output tag by name: the value the matrix writes to it (E.9).
+  std::optional<ExpectTarget> output_target(const std::string& key, const std::string& where) {
+    auto out = std::find_if(outputs_.begin(), outputs_.end(),
+                            [&](const OutputRef& o) { return tag_key(o.name) == tag_key(key); });
+    if (out == outputs_.end()) {
+      std::string hint = did_you_mean(key, output_names_);
+      if (table_.find(key))
+        error(where, in_quotes(key) + " is an input tag; expectations name output tags, "
+                                      "cause[..].FIELD or effect[..].FIELD");
+      else
+        error(where, "unknown expectation key " + in_quotes(key) +
+                         ": not an output tag, nor cause[..].FIELD / effect[..].FIELD" + hint);
+      return std::nullopt;
+    }
+    ExpectTarget t;
+    t.kind = ExpectTarget::Kind::OutputTag;
+    t.output_tag = out->name;
+    Observable& o = t.observable;
+    o.kind = Node::Kind::Effect;
+    o.id = out->effect;
+    o.field = "tag";
+    o.tag = out->k;
+    o.type = FieldType::Bool;
+    o.key = observable_key({o.kind, o.id}, o.field, o.tag);
+    return t;
+  }
+
+  // The expected value, written as the field's type is (docs/scenario.md).
+  std::optional<int> expected_value(FieldType type, const json& v, const std::string& where) {
+    switch (type) {
       case FieldType::Bool:
         if (!v.is_boolean()) {
-          error(x.where, "expects true or false, not " + json_type_name(v));
+          error(where, "expects true or false, not " + json_type_name(v));
           return std::nullopt;
         }
-        x.expected = v.get<bool>() ? 1 : 0;
-        break;
+        return v.get<bool>() ? 1 : 0;
       case FieldType::Int: {
         if (!v.is_number_integer() && !v.is_number_unsigned()) {
-          error(x.where, "expects an integer, not " + json_type_name(v));
+          error(where, "expects an integer, not " + json_type_name(v));
           return std::nullopt;
         }
         auto n = v.get<std::int64_t>();
         if (n < 0 || n > 1000) {
-          error(x.where, "expects a count, not " + v.dump());
+          error(where, "expects a count, not " + v.dump());
           return std::nullopt;
         }
-        x.expected = static_cast<int>(n);
-        break;
+        return static_cast<int>(n);
       }
       case FieldType::Voting: {
         auto s = v.is_string() ? voting_from_string(v.get<std::string>()) : std::nullopt;
         if (!s) {
-          error(x.where, "expects a voting: \"1oo1\", \"1oo2\", \"2oo2\", \"1oo3\", \"2oo3\", "
-                         "\"3oo3\" or \"bypass\", not " + v.dump());
+          error(where, "expects a voting: \"1oo1\", \"1oo2\", \"2oo2\", \"1oo3\", \"2oo3\", "
+                       "\"3oo3\" or \"bypass\", not " + v.dump());
           return std::nullopt;
         }
-        x.expected = static_cast<int>(*s);
-        break;
+        return static_cast<int>(*s);
       }
     }
-    return x;
+    return std::nullopt;
   }
+
 
   ScenarioStep parse_step(const json& j, const std::string& path) {
     ScenarioStep st;
