@@ -1,0 +1,7 @@
+# The property language: parser (names, errors), concrete evaluator, standard
+# property set, and the examples' requirement files (docs/properties.md).
+add_executable(test_properties_parser ${CMAKE_CURRENT_LIST_DIR}/test_parser.cpp
+                                      ${CMAKE_CURRENT_LIST_DIR}/test_parser_errors.cpp)
+target_link_libraries(test_properties_parser PRIVATE cemv_properties GTest::gtest_main)
+target_compile_definitions(test_properties_parser PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+gtest_discover_tests(test_properties_parser DISCOVERY_MODE PRE_TEST)
