@@ -5,3 +5,8 @@ add_executable(test_properties_parser ${CMAKE_CURRENT_LIST_DIR}/test_parser.cpp
 target_link_libraries(test_properties_parser PRIVATE cemv_properties GTest::gtest_main)
 target_compile_definitions(test_properties_parser PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 gtest_discover_tests(test_properties_parser DISCOVERY_MODE PRE_TEST)
+
+add_executable(test_properties_evaluator ${CMAKE_CURRENT_LIST_DIR}/test_evaluator.cpp)
+target_link_libraries(test_properties_evaluator PRIVATE cemv_properties cemv_runtime GTest::gtest_main)
+target_compile_definitions(test_properties_evaluator PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+gtest_discover_tests(test_properties_evaluator DISCOVERY_MODE PRE_TEST)
