@@ -1,0 +1,118 @@
+// The standard property set: stable names, the XooN / output-delay / feedback
+// forms, and (the real check) every standard invariant holds on runtime traces
+// of random inputs on random matrices with every option, and on the examples.
+#include <gtest/gtest.h>
+
+#include "model/format.hpp"
+#include "model/validate.hpp"
+#include "properties/standard.hpp"
+#include "tests/support/random_inputs.hpp"
+#include "tests/support/random_matrix.hpp"
+#include "trace_support.hpp"
+
+namespace cemv::properties {
+namespace {
+
+model::Matrix example(const std::string& name) {
+  return model::load_matrix(std::string(CEMV_SOURCE_DIR) + "/examples/" + name + "/matrix.json");
+}
+
+std::vector<std::string> names(const PropertyFile& f) {
+  std::vector<std::string> out;
+  for (const auto& p : f.properties) out.push_back(p.name);
+  return out;
+}
+
+TEST(StandardProperties, TankNamesAndForms) {
+  auto m = example("tank-overfill");
+  PropertyFile f = standard_properties(m);
+  std::vector<std::string> expected = {
+      "std.intersection.c1.e1", "std.intersection.c1.e2", "std.intersection.c2.e1", "std.intersection.c2.e2",
+      "std.intersection.c3.e1", "std.intersection.c3.e2", "std.intersection.c3.e3", "std.intersection.c4.e3",
+      "std.reachable.e1",       "std.reachable.e2",       "std.reachable.e3",       "std.resettable.e1",
+      "std.failsafe.c1",        "std.failsafe.c2",        "std.failsafe.c3",        "std.failsafe.c4"};  // c3: default "trip"
+  EXPECT_EQ(names(f), expected);
+  EXPECT_EQ(f.properties[0].kind, PropertyKind::Invariant);
+  EXPECT_EQ(f.properties[0].loc.line, 0);
+  EXPECT_EQ(f.properties[0].description, "cause 1 active, effect 1 not bypassed: effect 1 active");
+  std::string text = standard_properties_text(m);
+  EXPECT_NE(text.find("property std.intersection.c1.e1 \"cause 1 active, effect 1 not bypassed: effect 1 active\" {\n"
+                      "  always cause[1].active and not effect[1].bypassed implies effect[1].active\n}\n"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("  assume not issued(simulate_tag, tag = \"LT_100A\")\n"), std::string::npos);
+  EXPECT_NE(text.find("  always bad(\"LT_100A\") and bad(\"LT_100B\") and bad(\"LT_100C\") and cause[1].voting != "
+                      "bypass implies cause[1].trip_requested\n"),
+            std::string::npos);
+  EXPECT_NE(text.find("reachable prev(effect[1].latched) and not effect[1].latched"), std::string::npos);
+}
+
+TEST(StandardProperties, XooNOverrideAndOutputDelayForms) {
+  // The pipeline example has XooN assignments, V/R intersections with overrides
+  // and output delays (its README); find each form at least once.
+  std::string all;
+  for (const char* name : {"pipeline-hipps", "burner-management", "compressor", "tank-overfill"}) {
+    auto m = example(name);
+    all += standard_properties_text(m);
+    EXPECT_NO_THROW(standard_properties(m)) << name;
+  }
+  EXPECT_NE(all.find(") >= 2 and not effect["), std::string::npos) << "no XooN form";
+  EXPECT_NE(all.find(".override_active implies"), std::string::npos) << "no V/R form";
+  EXPECT_NE(all.find("property std.output_delay.e"), std::string::npos) << "no output delay";
+}
+
+// Counts, per kind of standard property, how often each held / was witnessed.
+struct Tally {
+  int invariants = 0, antecedents_met = 0, reachable = 0, witnessed = 0;
+};
+
+void check_trace(const model::Matrix& m, const PropertyFile& f, const Trace& t, const std::string& what, Tally& tally) {
+  Evaluator ev(m);
+  for (const auto& r : ev.evaluate(f, t)) {
+    if (r.kind == PropertyKind::Reachable) {
+      ++tally.reachable;
+      tally.witnessed += r.holds;
+      continue;
+    }
+    ++tally.invariants;
+    tally.antecedents_met += r.antecedent_met;
+    EXPECT_TRUE(r.holds) << what << ": " << r.name << " violated in cycle " << *r.cycle;
+  }
+}
+
+TEST(StandardProperties, InvariantsHoldOnRandomRuntimeTraces) {
+  Tally tally;
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    model::Matrix m = testsupport::random_matrix(seed);
+    PropertyFile f = standard_properties(m);
+    Trace t = testing::run_inputs(m, testsupport::random_inputs(m, seed * 7919, 400));
+    check_trace(m, f, t, "seed " + std::to_string(seed), tally);
+    if (HasFailure()) {
+      ADD_FAILURE() << standard_properties_text(m);
+      break;
+    }
+  }
+  // The traces must exercise the properties, or holding them says little.
+  EXPECT_GT(tally.invariants, 200);
+  EXPECT_GT(tally.antecedents_met, tally.invariants / 3);
+  EXPECT_GT(tally.witnessed, tally.reachable / 3);
+}
+
+TEST(StandardProperties, InvariantsHoldOnTheExamplesScenariosAndRandomInputs) {
+  Tally tally;
+  for (const char* name : {"tank-overfill", "pipeline-hipps", "burner-management", "compressor"}) {
+    auto m = example(name);
+    PropertyFile f = standard_properties(m);
+    for (const auto& entry : std::filesystem::directory_iterator(std::string(CEMV_SOURCE_DIR) + "/examples/" + name)) {
+      if (entry.path().filename().string().rfind("scenario-", 0) != 0) continue;
+      check_trace(m, f, testing::run_scenario(m, entry.path()), entry.path().string(), tally);
+    }
+    for (std::uint64_t seed = 1; seed <= 5; ++seed)
+      check_trace(m, f, testing::run_inputs(m, testsupport::random_inputs(m, seed, 2000)),
+                  std::string(name) + " random seed " + std::to_string(seed), tally);
+  }
+  EXPECT_GT(tally.antecedents_met, tally.invariants / 3);
+}
+
+}  // namespace
+}  // namespace cemv::properties
