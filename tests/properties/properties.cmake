@@ -15,3 +15,11 @@ add_executable(test_properties_standard ${CMAKE_CURRENT_LIST_DIR}/test_standard.
 target_link_libraries(test_properties_standard PRIVATE cemv_properties cemv_runtime cemv_testsupport GTest::gtest_main)
 target_compile_definitions(test_properties_standard PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 gtest_discover_tests(test_properties_standard DISCOVERY_MODE PRE_TEST)
+
+# The examples' requirement files: they parse, every property states its
+# expected verdict, and the runtime agrees with those verdicts on every trace
+# we can produce (scenarios, random inputs, the seeded defects' witnesses).
+add_executable(test_properties_requirements ${CMAKE_CURRENT_LIST_DIR}/test_requirements.cpp)
+target_link_libraries(test_properties_requirements PRIVATE cemv_properties cemv_runtime cemv_testsupport GTest::gtest_main)
+target_compile_definitions(test_properties_requirements PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+gtest_discover_tests(test_properties_requirements DISCOVERY_MODE PRE_TEST)
