@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "model/io.hpp"
+#include "model/vocabulary.hpp"
 #include "model/matrix.hpp"
 #include "properties/ast.hpp"
 

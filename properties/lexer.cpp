@@ -3,7 +3,7 @@
 #include <cctype>
 #include <cstdio>
 
-#include "model/format.hpp"
+#include "formats/diagnostics.hpp"
 
 namespace cemv::properties {
 
@@ -67,7 +67,7 @@ class Lexer {
   bool at(char c) const { return pos_ < text_.size() && text_[pos_] == c; }
 
   [[noreturn]] void fail(SourceLoc loc, const std::string& what) const {
-    throw model::LoadError({{place(file_, loc), what}});
+    throw formats::LoadError({{place(file_, loc), what}});
   }
 
   void skip_blanks_and_comments(std::vector<ExpectComment>& expects) {

@@ -4,21 +4,11 @@
 #include <charconv>
 #include <limits>
 
+#include "model/text.hpp"
+
 namespace cemv::properties {
 
 namespace {
-
-std::size_t edit_distance(std::string_view a, std::string_view b) {
-  std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
-  for (std::size_t j = 0; j <= b.size(); ++j) prev[j] = j;
-  for (std::size_t i = 1; i <= a.size(); ++i) {
-    cur[0] = i;
-    for (std::size_t j = 1; j <= b.size(); ++j)
-      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
-    std::swap(prev, cur);
-  }
-  return prev[b.size()];
-}
 
 bool processed(const model::Cause& c) { return c.function != model::CauseFunction::Comment; }
 bool processed(const model::Effect& e) { return e.function != model::EffectFunction::Comment; }
@@ -48,33 +38,11 @@ std::variant<int, std::string> find_element(const Elements& elements, const char
 
 }  // namespace
 
-std::string in_quotes(std::string_view text) {
-  std::string out = "'";
-  for (unsigned char c : text.substr(0, 48)) {
-    if (c >= 0x20 && c < 0x7f) {
-      out += static_cast<char>(c);
-    } else {
-      static const char* hex = "0123456789ABCDEF";
-      out += "\\x";
-      out += hex[c >> 4];
-      out += hex[c & 15];
-    }
-  }
-  return out + (text.size() > 48 ? "...'" : "'");
-}
+std::string in_quotes(std::string_view text) { return model::in_quotes(text); }
 
-// The same closeness rule as the scenario format's hints (model/scenario.cpp).
 std::string did_you_mean(std::string_view word, const std::vector<std::string>& candidates) {
-  std::string key = model::tag_key(word);
-  const std::string* best = nullptr;
-  std::size_t best_d = std::numeric_limits<std::size_t>::max();
-  for (const auto& c : candidates) {
-    std::size_t d = edit_distance(key, model::tag_key(c));
-    if (d < best_d) best_d = d, best = &c;
-  }
-  std::size_t limit = std::max<std::size_t>(2, key.size() / 3);
-  if (!best || best_d > limit) return "";
-  return " (did you mean '" + *best + "'?)";
+  std::vector<std::string_view> views(candidates.begin(), candidates.end());
+  return model::did_you_mean(word, views);
 }
 
 MatrixNames::MatrixNames(const model::Matrix& m) : m_(m), inputs_(m), observables_(model::observables(m)) {

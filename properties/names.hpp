@@ -11,7 +11,7 @@
 #include <variant>
 #include <vector>
 
-#include "model/io.hpp"
+#include "model/vocabulary.hpp"
 #include "model/matrix.hpp"
 #include "properties/ast.hpp"
 
@@ -71,10 +71,8 @@ class MatrixNames {
   std::vector<model::Observable> observables_;  // sorted by key
 };
 
-// " (did you mean 'X'?)" for the closest candidate (case-insensitive), or "".
+// The project's hint and quoting (model/text.hpp), for candidates held as strings.
 std::string did_you_mean(std::string_view word, const std::vector<std::string>& candidates);
-
-// 'text', for messages.
 std::string in_quotes(std::string_view text);
 
 }  // namespace cemv::properties

@@ -5,7 +5,7 @@
 #include <cstring>
 #include <map>
 
-#include "model/format.hpp"
+#include "formats/diagnostics.hpp"
 #include "properties/parser_impl.hpp"
 
 namespace cemv::properties {
@@ -71,7 +71,7 @@ void Parser::fail_expected(const std::string& expected) const {
 }
 
 void Parser::fail_at(SourceLoc loc, const std::string& what) const {
-  throw model::LoadError({{place(file_, loc), what}});
+  throw formats::LoadError({{place(file_, loc), what}});
 }
 
 // ---- file -----------------------------------------------------------------------
@@ -226,13 +226,13 @@ int Parser::duration() {
 }
 
 PropertyFile parse_properties(std::string_view text, const model::Matrix& m, const std::string& file_name) {
-  if (text.size() > model::kMaxFileBytes)
-    throw model::LoadError({{file_name, "file larger than " + std::to_string(model::kMaxFileBytes) + " bytes"}});
+  if (text.size() > formats::kMaxFileBytes)
+    throw formats::LoadError({{file_name, "file larger than " + std::to_string(formats::kMaxFileBytes) + " bytes"}});
   return Parser(text, m, file_name).parse_file();
 }
 
 PropertyFile load_properties(const std::filesystem::path& file, const model::Matrix& m) {
-  return parse_properties(model::read_text_file(file), m, file.string());
+  return parse_properties(formats::read_text_file(file), m, file.string());
 }
 
 }  // namespace cemv::properties

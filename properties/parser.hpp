@@ -12,7 +12,7 @@
 
 namespace cemv::properties {
 
-// Parses and resolves a property file. Throws model::LoadError with one issue
+// Parses and resolves a property file. Throws formats::LoadError with one issue
 // whose place is "FILE:LINE:COL" and whose message says what was expected and
 // what was found (e.g. "expected ')', found 'and'"), or which name is unknown
 // (with a did-you-mean hint).

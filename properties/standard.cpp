@@ -8,7 +8,7 @@
 #include <algorithm>
 
 #include "model/graph.hpp"
-#include "model/io.hpp"
+#include "model/vocabulary.hpp"
 #include "properties/parser.hpp"
 
 namespace cemv::properties {

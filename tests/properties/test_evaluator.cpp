@@ -3,7 +3,7 @@
 // whole properties on runtime traces of the examples.
 #include <gtest/gtest.h>
 
-#include "model/format.hpp"
+#include "formats/matrix_json.hpp"
 #include "properties/parser.hpp"
 #include "trace_support.hpp"
 
@@ -11,7 +11,7 @@ namespace cemv::properties {
 namespace {
 
 const model::Matrix& tank() {
-  static const model::Matrix m = model::load_matrix(CEMV_SOURCE_DIR "/examples/tank-overfill/matrix.json");
+  static const model::Matrix m = formats::load_matrix(CEMV_SOURCE_DIR "/examples/tank-overfill/matrix.json");
   return m;
 }
 

@@ -2,7 +2,7 @@
 // AST node docs/properties.md says it does.
 #include <gtest/gtest.h>
 
-#include "model/format.hpp"
+#include "formats/matrix_json.hpp"
 #include "properties/parser.hpp"
 
 namespace cemv::properties {
@@ -10,7 +10,7 @@ namespace {
 
 using Kind = Expr::Kind;
 
-model::Matrix tank() { return model::load_matrix(CEMV_SOURCE_DIR "/examples/tank-overfill/matrix.json"); }
+model::Matrix tank() { return formats::load_matrix(CEMV_SOURCE_DIR "/examples/tank-overfill/matrix.json"); }
 
 Expr body_of(const std::string& expr, const model::Matrix& m) {
   PropertyFile f = parse_properties("property p { always " + expr + " }", m, "t.props");

@@ -1,17 +1,18 @@
 // Malformed property files: the exact message, with FILE:LINE:COL.
 #include <gtest/gtest.h>
 
-#include "model/format.hpp"
+#include "formats/diagnostics.hpp"
+#include "formats/matrix_json.hpp"
 #include "properties/parser.hpp"
 
 namespace cemv::properties {
 namespace {
 
 std::string error_of(const std::string& text) {
-  static const model::Matrix m = model::load_matrix(CEMV_SOURCE_DIR "/examples/tank-overfill/matrix.json");
+  static const model::Matrix m = formats::load_matrix(CEMV_SOURCE_DIR "/examples/tank-overfill/matrix.json");
   try {
     parse_properties(text, m, "req.props");
-  } catch (const model::LoadError& e) {
+  } catch (const formats::LoadError& e) {
     if (e.issues().size() != 1) return "more than one issue";
     return e.issues()[0].where + ": error: " + e.issues()[0].what;
   }

@@ -12,7 +12,7 @@
 #include <map>
 #include <set>
 
-#include "model/format.hpp"
+#include "formats/matrix_json.hpp"
 #include "properties/parser.hpp"
 #include "tests/support/random_inputs.hpp"
 #include "trace_support.hpp"
@@ -31,7 +31,7 @@ struct Example {
 
 Example load(const std::string& name) {
   Example e;
-  e.m = model::load_matrix(dir(name) + "/matrix.json");
+  e.m = formats::load_matrix(dir(name) + "/matrix.json");
   e.f = load_properties(dir(name) + "/requirements.props", e.m);
   return e;
 }

@@ -3,7 +3,7 @@
 // of random inputs on random matrices with every option, and on the examples.
 #include <gtest/gtest.h>
 
-#include "model/format.hpp"
+#include "formats/matrix_json.hpp"
 #include "model/validate.hpp"
 #include "properties/standard.hpp"
 #include "tests/support/random_inputs.hpp"
@@ -14,7 +14,7 @@ namespace cemv::properties {
 namespace {
 
 model::Matrix example(const std::string& name) {
-  return model::load_matrix(std::string(CEMV_SOURCE_DIR) + "/examples/" + name + "/matrix.json");
+  return formats::load_matrix(std::string(CEMV_SOURCE_DIR) + "/examples/" + name + "/matrix.json");
 }
 
 std::vector<std::string> names(const PropertyFile& f) {

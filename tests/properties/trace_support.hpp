@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "model/scenario.hpp"
+#include "formats/scenario.hpp"
 #include "properties/evaluator.hpp"
 #include "runtime/runtime.hpp"
 
@@ -26,8 +26,8 @@ inline Trace run_inputs(const model::Matrix& m, const std::vector<model::CycleIn
 }
 
 inline Trace run_scenario(const model::Matrix& m, const std::filesystem::path& file) {
-  model::Scenario sc = model::load_scenario(file, m);
-  return run_inputs(m, model::expand_scenario(sc, m).cycles);
+  formats::Scenario sc = formats::load_scenario(file, m);
+  return run_inputs(m, formats::expand_scenario(sc, m).cycles);
 }
 
 }  // namespace cemv::properties::testing
