@@ -40,7 +40,10 @@ class Lexer {
       if (ident_start(c)) {
         t.kind = Token::Kind::Identifier;
         while (pos_ < text_.size() && ident_char(text_[pos_])) t.text += advance();
-      } else if (std::isdigit(static_cast<unsigned char>(c))) {
+      } else if (std::isdigit(static_cast<unsigned char>(c)) ||
+                 (c == '-' && pos_ + 1 < text_.size() && std::isdigit(static_cast<unsigned char>(text_[pos_ + 1])))) {
+        // The language has no subtraction, so '-' before a digit is a sign.
+        if (c == '-') t.text += advance();
         number(t);
       } else if (c == '"') {
         string(t);
@@ -62,8 +65,6 @@ class Lexer {
     }
     return c;
   }
-  // A continuation byte of a UTF-8 character does not advance the column, but
-  // its lead byte already did: undo the off-by-one for multi-byte characters.
   bool at(char c) const { return pos_ < text_.size() && text_[pos_] == c; }
 
   [[noreturn]] void fail(SourceLoc loc, const std::string& what) const {

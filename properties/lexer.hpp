@@ -12,7 +12,7 @@ namespace cemv::properties {
 struct Token {
   enum class Kind {
     Identifier,  // letters, digits, '_' (not starting with a digit)
-    Number,      // 12, 90.0, 1.5e3
+    Number,      // 12, 90.0, 1.5e3, -40.5 (no subtraction exists, so '-' before a digit is a sign)
     Word,        // a number glued to letters: 2oo3, 500ms
     String,      // "..." (escapes \" and \\), text holds the content
     Symbol,      // ( ) [ ] { } , . : = == != < <= > >= -> <->

@@ -200,7 +200,7 @@ int Parser::duration() {
   std::size_t dot = number.find('.');
   std::string whole = number.substr(0, dot);
   std::string fraction = dot == std::string::npos ? "" : number.substr(dot + 1);
-  if (number.find_first_of("eE") != std::string::npos || whole.size() > 12)
+  if (number.find_first_of("eE-") != std::string::npos || whole.size() > 12)
     fail_at(loc, "expected a duration (e.g. 500 ms, 2 s, 3 cycles), found " + in_quotes(number + " " + unit));
   std::size_t scale = unit == "s" ? 3 : 0;
   while (!fraction.empty() && fraction.back() == '0') fraction.pop_back();

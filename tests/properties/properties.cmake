@@ -11,7 +11,8 @@ target_link_libraries(test_properties_evaluator PRIVATE cemv_properties cemv_run
 target_compile_definitions(test_properties_evaluator PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 gtest_discover_tests(test_properties_evaluator DISCOVERY_MODE PRE_TEST)
 
-add_executable(test_properties_standard ${CMAKE_CURRENT_LIST_DIR}/test_standard.cpp)
+add_executable(test_properties_standard ${CMAKE_CURRENT_LIST_DIR}/test_standard.cpp
+                                        ${CMAKE_CURRENT_LIST_DIR}/test_print.cpp)
 target_link_libraries(test_properties_standard PRIVATE cemv_properties cemv_runtime cemv_testsupport GTest::gtest_main)
 target_compile_definitions(test_properties_standard PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 gtest_discover_tests(test_properties_standard DISCOVERY_MODE PRE_TEST)

@@ -106,3 +106,16 @@ TEST(PropertiesParserErrors, UnicodeColumnsCountCharacters) {
 
 }  // namespace
 }  // namespace cemv::properties
+
+namespace cemv::properties {
+namespace {
+
+TEST(PropertiesParserErrors, SignsAreForNumbersOnly) {
+  EXPECT_EQ(error_of("property p { always held(cause[1].active, -5 ms) }"),
+            "req.props:1:43: error: expected a duration (e.g. 500 ms, 2 s, 3 cycles), found '-5 ms'");
+  EXPECT_EQ(error_of("property p { always cause[1].active - true }"), "req.props:1:37: error: unexpected character '-'");
+  EXPECT_EQ(error_of("property p { always cause[-1].active }"), "req.props:1:27: error: no cause with id -1");
+}
+
+}  // namespace
+}  // namespace cemv::properties
