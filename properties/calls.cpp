@@ -174,11 +174,15 @@ Expr Parser::aggregate(const Token& name) {
 }
 
 // Parses the body once per element, with the variable bound to it.
+// Nested aggregates multiply: a guard keeps a hostile file from expanding forever.
 std::vector<Expr> Parser::expand(const std::vector<Element>& set, const std::string& var) {
+  constexpr std::size_t kMaxExpansions = 100'000;
   std::vector<Expr> out;
   std::size_t body = pos_;
   for (const auto& e : set) {
     pos_ = body;
+    if (++expanded_ > kMaxExpansions)
+      fail_at(peek().loc, "aggregates expand to more than " + std::to_string(kMaxExpansions) + " terms");
     scope_.emplace_back(var, e);
     out.push_back(bool_expression());
     scope_.pop_back();

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "formats/diagnostics.hpp"
+#include "model/text.hpp"
 
 namespace cemv::properties {
 
@@ -168,8 +169,8 @@ std::string describe(const Token& t) {
   switch (t.kind) {
     case Token::Kind::End: return "end of file";
     case Token::Kind::Number: return "number " + t.text;
-    case Token::Kind::String: return "string \"" + t.text.substr(0, 40) + (t.text.size() > 40 ? "...\"" : "\"");
-    default: return "'" + t.text.substr(0, 40) + (t.text.size() > 40 ? "...'" : "'");
+    case Token::Kind::String: return "string " + model::in_quotes(t.text, 40);
+    default: return model::in_quotes(t.text, 40);
   }
 }
 

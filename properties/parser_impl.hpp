@@ -70,6 +70,7 @@ class Parser {
   std::size_t pos_ = 0;
   std::vector<std::pair<std::string, Element>> scope_;  // aggregate variables, innermost last
   std::vector<std::string>* notes_ = nullptr;          // where duration notes go
+  std::size_t expanded_ = 0;                           // aggregate bodies parsed so far
 };
 
 }  // namespace cemv::properties

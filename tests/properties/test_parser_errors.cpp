@@ -119,3 +119,49 @@ TEST(PropertiesParserErrors, SignsAreForNumbersOnly) {
 
 }  // namespace
 }  // namespace cemv::properties
+
+namespace cemv::properties {
+namespace {
+
+TEST(PropertiesParserErrors, NestedAggregatesAreBounded) {
+  std::string text = "property p { always ";
+  for (int i = 0; i < 12; ++i) text += "any(c" + std::to_string(i) + " in causes: ";
+  text += "true" + std::string(12, ')') + " }";
+  EXPECT_EQ(error_of(text), "req.props:1:239: error: aggregates expand to more than 100000 terms");
+}
+
+// Mangled requirement files: every outcome is a parsed file or one LoadError
+// with a FILE:LINE:COL place, never another exception or a crash.
+TEST(PropertiesParserErrors, MangledFilesFailCleanly) {
+  const model::Matrix m = formats::load_matrix(CEMV_SOURCE_DIR "/examples/tank-overfill/matrix.json");
+  std::string original = formats::read_text_file(CEMV_SOURCE_DIR "/examples/tank-overfill/requirements.props");
+  std::uint64_t state = 12345;
+  auto next = [&] {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    return static_cast<std::size_t>(state >> 33);
+  };
+  const std::string alphabet = "(){}[],.:=<>!-#\"\\ \nabz019_\x01\xC3";
+  int errors = 0;
+  for (int i = 0; i < 1500; ++i) {
+    std::string text = original;
+    for (int edits = 1 + static_cast<int>(next() % 4); edits > 0; --edits) {
+      std::size_t at = next() % text.size();
+      switch (next() % 3) {
+        case 0: text.erase(at, 1 + next() % 8); break;
+        case 1: text.insert(at, 1, alphabet[next() % alphabet.size()]); break;
+        default: text[at] = alphabet[next() % alphabet.size()]; break;
+      }
+    }
+    try {
+      parse_properties(text, m, "mangled.props");
+    } catch (const formats::LoadError& e) {
+      ++errors;
+      ASSERT_EQ(e.issues().size(), 1u);
+      EXPECT_EQ(e.issues()[0].where.rfind("mangled.props:", 0), 0u) << e.issues()[0].where;
+    }
+  }
+  EXPECT_GT(errors, 500);
+}
+
+}  // namespace
+}  // namespace cemv::properties
