@@ -24,3 +24,11 @@ add_executable(test_properties_requirements ${CMAKE_CURRENT_LIST_DIR}/test_requi
 target_link_libraries(test_properties_requirements PRIVATE cemv_properties cemv_runtime cemv_testsupport GTest::gtest_main)
 target_compile_definitions(test_properties_requirements PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 gtest_discover_tests(test_properties_requirements DISCOVERY_MODE PRE_TEST)
+
+# Independence (docs/properties.md, "The concrete evaluator"): the concrete
+# evaluator and the symbolic monitor share no code; they meet only in ast.hpp.
+cemv_cli_test(NAME properties_evaluator_includes_neither_encoder_nor_monitor EXIT 1
+  COMMAND grep -nE "#include *[<\"](\\.\\./)*(encoder/|properties/monitor)"
+          ${PROJECT_SOURCE_DIR}/properties/evaluator.hpp ${PROJECT_SOURCE_DIR}/properties/evaluator.cpp)
+cemv_cli_test(NAME properties_nothing_else_includes_the_evaluator EXIT 1
+  COMMAND grep -rnE --exclude=evaluator.cpp "#include *[<\"](\\.\\./)*properties/evaluator" ${PROJECT_SOURCE_DIR}/properties)
