@@ -35,7 +35,7 @@ bool processed(const model::Effect* x) { return x && x->function != model::Effec
 
 class Writer {
  public:
-  explicit Writer(const model::Matrix& m) : m_(m), graph_(m) {}
+  explicit Writer(const model::Matrix& m) : m_(m), graph_(m), inputs_(m) {}
 
   std::string run() {
     for (const auto& i : m_.intersections) intersection(i);
@@ -137,11 +137,10 @@ class Writer {
   // Simulation delivers good quality (C.2), so the property assumes none.
   void failsafe(const model::Cause& x) {
     if (x.bad_quality == model::BadQuality::Ignore || x.tags.empty()) return;
-    model::InputTable inputs(m_);
     std::vector<std::string> assumptions;
     std::string all_bad;
     for (const auto& t : x.tags) {
-      if (model::parse_internal_ref(t.name) || !inputs.find(t.name)) return;  // no quality to lose
+      if (model::parse_internal_ref(t.name) || !inputs_.find(t.name)) return;  // no quality to lose
       all_bad += (all_bad.empty() ? "" : " and ") + std::string("bad(") + tag_literal(t.name) + ")";
       assumptions.push_back("not issued(simulate_tag, tag = " + tag_literal(t.name) + ")");
     }
@@ -154,6 +153,7 @@ class Writer {
 
   const model::Matrix& m_;
   model::DependencyGraph graph_;
+  model::InputTable inputs_;
   std::string out_;
 };
 

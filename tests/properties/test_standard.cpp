@@ -3,6 +3,8 @@
 // of random inputs on random matrices with every option, and on the examples.
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "formats/matrix_json.hpp"
 #include "model/validate.hpp"
 #include "properties/standard.hpp"
@@ -112,6 +114,39 @@ TEST(StandardProperties, InvariantsHoldOnTheExamplesScenariosAndRandomInputs) {
                   std::string(name) + " random seed " + std::to_string(seed), tally);
   }
   EXPECT_GT(tally.antecedents_met, tally.invariants / 3);
+}
+
+}  // namespace
+}  // namespace cemv::properties
+
+namespace cemv::properties {
+namespace {
+
+// The 128 x 128 matrix with 1024 intersections of the checker's benchmark: one
+// intersection property per processed intersection, one reachability per
+// processed effect, names unique.
+TEST(StandardProperties, BigMatrix) {
+  model::Matrix m = testsupport::big_matrix();
+  PropertyFile f = standard_properties(m);
+  std::size_t intersections = 0, effects = 0;
+  for (const auto& i : m.intersections) {
+    const auto* c = m.find_cause(i.cause);
+    const auto* e = m.find_effect(i.effect);
+    intersections += model::is_processed(i.type) && c && c->function != model::CauseFunction::Comment && e &&
+                     e->function != model::EffectFunction::Comment;
+  }
+  for (const auto& e : m.effects) effects += e.function != model::EffectFunction::Comment;
+  std::set<std::string> unique;
+  std::size_t intersection_props = 0, reach_props = 0;
+  for (const auto& p : f.properties) {
+    unique.insert(p.name);
+    intersection_props += p.name.rfind("std.intersection.", 0) == 0;
+    reach_props += p.name.rfind("std.reachable.", 0) == 0;
+  }
+  EXPECT_EQ(unique.size(), f.properties.size());
+  EXPECT_EQ(intersection_props, intersections);
+  EXPECT_EQ(reach_props, effects);
+  EXPECT_GT(intersections, 500u);
 }
 
 }  // namespace
