@@ -32,3 +32,12 @@ cemv_cli_test(NAME properties_evaluator_includes_neither_encoder_nor_monitor EXI
           ${PROJECT_SOURCE_DIR}/properties/evaluator.hpp ${PROJECT_SOURCE_DIR}/properties/evaluator.cpp)
 cemv_cli_test(NAME properties_nothing_else_includes_the_evaluator EXIT 1
   COMMAND grep -rnE --exclude=evaluator.cpp "#include *[<\"](\\.\\./)*properties/evaluator" ${PROJECT_SOURCE_DIR}/properties)
+
+# The concrete evaluator against the symbolic monitor (once both are in the tree).
+if(EXISTS ${PROJECT_SOURCE_DIR}/properties/monitor.cpp)
+  add_executable(test_properties_two_implementations ${CMAKE_CURRENT_LIST_DIR}/test_two_implementations.cpp)
+  target_link_libraries(test_properties_two_implementations PRIVATE cemv_properties cemv_runtime cemv_encoder
+                        cemv_testsupport GTest::gtest_main)
+  target_compile_definitions(test_properties_two_implementations PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  gtest_discover_tests(test_properties_two_implementations DISCOVERY_MODE PRE_TEST)
+endif()
