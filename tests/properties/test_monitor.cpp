@@ -411,6 +411,44 @@ TEST(MonitorSolver, ReachableWitnessOfWithinAfterFell) {
   EXPECT_TRUE(falsifiable_within(h, 2));
 }
 
+// The held counter is exact, so a relational invariant ties it to the
+// matrix's own override timer (E.3, docs/encoding.md T.2) at any length: here
+// 1800 s = 18,000 cycles, proved by one induction step, no unrolling.
+TEST(MonitorSolver, HeldCounterRelatesToTheOverrideTimerByInduction) {
+  auto m = one_cause(false);
+  m.intersections[0].type = model::IntersectionType::V;
+  m.effects[0].override_time = model::Override{1800, 0};
+  const int d = 18000;
+  Property p = invariant(Expr::boolean(true));
+  p.kind = PropertyKind::Never;
+  p.body = unary(Kind::Held, Expr::of_observable(observable(m, "effect[1].override_active")), d);
+  Harness h(m, p);
+  const auto& ts = h.enc->ts;
+  z3::expr running = *ts.statevar("effect[1].override");
+  z3::expr elapsed = *ts.statevar("effect[1].override.elapsed");
+  z3::expr held = *ts.statevar(h.mon.state_vars.at(0));
+  z3::expr_vector parts(h.ctx);
+  parts.push_back(running == (held > 0));
+  parts.push_back(elapsed <= held);
+  parts.push_back(z3::implies(!running, elapsed == 0));
+  for (const auto& l : ts.lemmas()) parts.push_back(l.term);
+  z3::expr inv = z3::mk_and(parts);
+  encoder::Unroller u(ts);
+  z3::solver base(h.ctx);
+  base.add(u.at(ts.init_formula(), 0) && !u.at(inv, 0));
+  EXPECT_EQ(base.check(), z3::unsat);
+  z3::solver step(h.ctx);
+  step.add(u.at(inv, 0) && u.at(ts.constraint_formula(), 0) && u.at(ts.trans_formula(), 0) &&
+           !u.at(inv, 1));
+  EXPECT_EQ(step.check(), z3::unsat);
+  // The step query is not vacuous: with the same premises, a stronger
+  // relation (the timer strictly behind the counter) can fail.
+  z3::solver loose(h.ctx);
+  loose.add(u.at(inv, 0) && u.at(ts.constraint_formula(), 0) && u.at(ts.trans_formula(), 0) &&
+            !u.at(elapsed < held, 1));
+  EXPECT_EQ(loose.check(), z3::sat);
+}
+
 // ---- Several monitors, shared state, cone of influence ----------------------------
 
 TEST(MonitorSystem, SharedSubformulasAndSeveralProperties) {
