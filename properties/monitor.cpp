@@ -404,6 +404,10 @@ Monitor compile_monitor(encoder::Encoding& enc, const Property& p,
       if (p.body.kind == Expr::Kind::Implies) antecedent = b.compile(p.body.args.at(0));
       break;
     case PropertyKind::Never:
+      good = !b.compile(p.body);
+      // docs/properties.md "Vacuity": the first conjunct of `never a and b`.
+      if (p.body.kind == Expr::Kind::And && p.body.args.size() >= 2) antecedent = b.compile(p.body.args[0]);
+      break;
     case PropertyKind::Reachable:
       good = !b.compile(p.body);
       break;

@@ -31,8 +31,9 @@ struct Monitor {
   z3::expr good;
   // Assumed in every cycle: the file's and the property's assumptions.
   z3::expr assumption;
-  // What a vacuity check must be able to reach: the trigger of a Response,
-  // the left side of an Invariant whose body is an implication; else none.
+  // What a vacuity check must be able to reach (docs/properties.md
+  // "Vacuity"): the trigger of a Response, the left side of an Invariant
+  // `a implies b`, the first conjunct of a Never `a and b`; else none.
   std::optional<z3::expr> antecedent;
   // The state variables this monitor added to the system, in creation order.
   std::vector<std::string> state_vars;

@@ -476,6 +476,14 @@ TEST(MonitorSystem, SharedSubformulasAndSeveralProperties) {
   auto imp = properties::compile_monitor(*enc, invariant(Expr::binary(Kind::Implies, x, x)), {});
   ASSERT_TRUE(imp.antecedent.has_value());
   EXPECT_TRUE(z3::eq(*imp.antecedent, *enc->ts.term("cause[1].active")));
+  // And the first conjunct of a never.
+  Property never = invariant(Expr::nary(Kind::And, {Expr::of_observable(observable(m, "effect[1].active")), x}));
+  never.kind = PropertyKind::Never;
+  auto nev = properties::compile_monitor(*enc, never, {});
+  ASSERT_TRUE(nev.antecedent.has_value());
+  EXPECT_TRUE(z3::eq(*nev.antecedent, *enc->ts.term("effect[1].active")));
+  never.body = x;
+  EXPECT_FALSE(properties::compile_monitor(*enc, never, {}).antecedent.has_value());
 }
 
 TEST(MonitorCone, RootsCoverObservablesInputReadersAndCommandTargets) {
