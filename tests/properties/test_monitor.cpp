@@ -599,4 +599,26 @@ TEST(MonitorExamples, StandardPropertiesWithinFourCycles) {
   }
 }
 
+// Every requirement the examples state (examples/*/requirements.props)
+// compiles on its own cone; within 3 cycles none expected `proved` is
+// violated, and the tank's reachability goals have their witnesses.
+TEST(MonitorExamples, RequirementFilesCompileAndHoldForThreeCycles) {
+  for (const char* name : {"tank-overfill", "pipeline-hipps", "compressor", "burner-management"}) {
+    auto m = example(name);
+    auto file = properties::load_properties(
+        std::string(CEMV_SOURCE_DIR) + "/examples/" + name + "/requirements.props", m);
+    ASSERT_FALSE(file.properties.empty()) << name;
+    for (const auto& p : file.properties) {
+      Harness h(m, p, file.assumptions);
+      bool violated = falsifiable_within(h, 3);
+      if (p.expect == "proved") {
+        EXPECT_FALSE(violated) << name << " " << p.name;
+      }
+      if (p.expect == "reachable" && std::string(name) == "tank-overfill") {
+        EXPECT_TRUE(violated) << p.name;
+      }
+    }
+  }
+}
+
 }  // namespace
