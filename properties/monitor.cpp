@@ -256,12 +256,14 @@ expr MonitorBuilder::compile(const Expr& e) {
     case Expr::Kind::Implies: return z3::implies(compile(e.args.at(0)), compile(e.args.at(1)));
     case Expr::Kind::Iff: return compile(e.args.at(0)) == compile(e.args.at(1));
     case Expr::Kind::Count: {
-      // Sum of 0/1 terms: the encoder's Evaluator interprets + and ite.
+      // One n-ary sum of 0/1 terms (the encoder's Evaluator interprets + and
+      // ite): a chain of binary sums over a large aggregate would be as deep
+      // as it is long, and everything that walks terms recursively would
+      // pay for that depth.
       if (e.args.empty()) return I(0);
-      expr sum = z3::ite(compile(e.args[0]), I(1), I(0));
-      for (std::size_t i = 1; i < e.args.size(); ++i)
-        sum = sum + z3::ite(compile(e.args[i]), I(1), I(0));
-      return sum;
+      z3::expr_vector terms(c_);
+      for (const auto& a : e.args) terms.push_back(z3::ite(compile(a), I(1), I(0)));
+      return terms.size() == 1 ? terms[0] : z3::sum(terms);
     }
     case Expr::Kind::Prev: return prev(compile(e.args.at(0)));
     case Expr::Kind::Rose: {

@@ -193,6 +193,18 @@ TEST(MonitorAtoms, CountAndIntObservables) {
   EXPECT_EQ(v.step(1.0f), 0);
 }
 
+// An aggregate as large as the parser allows (100,000 terms) is one flat sum:
+// the Evaluator and Z3 walk it without a 100,000-deep recursion.
+TEST(MonitorAtoms, LargeCountIsOneFlatSum) {
+  auto m = one_cause(false);
+  std::vector<Expr> many(100000, active(m));
+  Expr body = Expr::compare(properties::CompareOp::Ge, Expr::nary(Kind::Count, std::move(many)),
+                            Expr::integer(100000));
+  Harness h(m, invariant(body));
+  EXPECT_EQ(h.step(0.0f), 1);
+  EXPECT_EQ(h.step(1.0f), 0);
+}
+
 TEST(MonitorAtoms, FloatComparisonsInSinglePrecision) {
   auto m = one_cause(true);
   Harness probe(m, invariant(Expr::boolean(true)));
