@@ -1,4 +1,4 @@
-// The symbolic monitor (docs/properties.md, "Monitor semantics"): every
+// The symbolic monitor (docs/properties.md, "The symbolic monitor"): every
 // operator below cites the cycle semantics of properties/ast.hpp it encodes.
 #include "properties/monitor.hpp"
 
@@ -128,7 +128,7 @@ bool matches(const encoder::CommandInput& ci, const CommandPattern& p) {
 // secure-write gate (M.3), since a command counts as issued whether or not it
 // is accepted. The encoding has inputs only for commands the configuration
 // can accept (docs/encoding.md "Operator commands"); others are never issued
-// here (docs/properties.md "Monitor semantics").
+// here (docs/properties.md "The symbolic monitor").
 expr MonitorBuilder::issued(const CommandPattern& p) {
   z3::expr_vector any(c_);
   for (const auto& ci : enc_.commands)
@@ -331,7 +331,7 @@ void RootCollector::readers_of_input(std::size_t index) {
 
 // The elements a command matching the pattern can name. An open target means
 // every element such a command can name, so that no acceptable command is
-// left out of the cone (docs/properties.md "Monitor semantics").
+// left out of the cone (docs/properties.md "The symbolic monitor").
 void RootCollector::command_targets(const CommandPattern& p) {
   using Op = model::CommandOp;
   bool cause_op = p.op == Op::AckCause || p.op == Op::SoftBypassCause || p.op == Op::SoftBypassTag;

@@ -5,7 +5,7 @@
 // property is a plain safety property: `good` must hold in every cycle.
 //
 // This is the symbolic one of the two independent implementations of
-// docs/properties.md ("Monitor semantics"); the concrete evaluator
+// docs/properties.md ("The symbolic monitor"); the concrete evaluator
 // (properties/evaluator.*) is the other, and the two share no code.
 #pragma once
 
