@@ -283,11 +283,23 @@ expr MonitorBuilder::compile(const Expr& e) {
 
 // ---- Cone of influence ----------------------------------------------------------
 
+// Polarity of a subexpression inside an assumption: whether making it truer
+// can only make the assumption truer (Positive), only falser (Negative), or
+// either (Both).
+enum class Polarity { Positive, Negative, Both };
+Polarity flip(Polarity p) {
+  return p == Polarity::Positive ? Polarity::Negative
+         : p == Polarity::Negative ? Polarity::Positive : Polarity::Both;
+}
+
 class RootCollector {
  public:
   explicit RootCollector(const model::Matrix& m) : m_(m), inputs_(m) {}
 
-  void visit(const Expr& e);
+  // Assumed: an assumption; Judged: the body, trigger or response, whose
+  // every atom must be exact.
+  enum class Role { Assumed, Judged };
+  void visit(const Expr& e, Role role, Polarity pol);
   std::vector<model::Node> roots() const { return {roots_.begin(), roots_.end()}; }
 
  private:
@@ -367,7 +379,7 @@ void RootCollector::command_targets(const CommandPattern& p) {
   }
 }
 
-void RootCollector::visit(const Expr& e) {
+void RootCollector::visit(const Expr& e, Role role, Polarity pol) {
   switch (e.kind) {
     case Expr::Kind::Observable:
       if (e.observable.kind == model::Node::Kind::Cause) add_cause(e.observable.id);
@@ -378,12 +390,37 @@ void RootCollector::visit(const Expr& e) {
       readers_of_input(e.input);
       break;
     case Expr::Kind::CommandIssued:
-      command_targets(e.command);
+      // A command that occurs only negatively in an assumption (`assume not
+      // issued(simulate_tag)`) needs no targets in the cone: a run without
+      // the commands outside the cone meets the assumption as well, and acts
+      // the same on the cone ("The symbolic monitor", "Cone of influence").
+      if (role == Role::Judged || pol != Polarity::Negative) command_targets(e.command);
       break;
     default:
       break;
   }
-  for (const auto& a : e.args) visit(a);
+  switch (e.kind) {
+    case Expr::Kind::Not:
+      visit(e.args.at(0), role, flip(pol));
+      return;
+    case Expr::Kind::Implies:
+      visit(e.args.at(0), role, flip(pol));
+      visit(e.args.at(1), role, pol);
+      return;
+    // Monotone in every argument.
+    case Expr::Kind::And:
+    case Expr::Kind::Or:
+    case Expr::Kind::Prev:
+    case Expr::Kind::Held:
+    case Expr::Kind::Within:
+    case Expr::Kind::Since:
+      for (const auto& a : e.args) visit(a, role, pol);
+      return;
+    // Iff, comparisons, counts, rose and fell: either direction.
+    default:
+      for (const auto& a : e.args) visit(a, role, Polarity::Both);
+      return;
+  }
 }
 
 }  // namespace
@@ -427,12 +464,13 @@ Monitor compile_monitor(encoder::Encoding& enc, const Property& p,
 std::vector<model::Node> property_roots(const Property& p,
                                         const std::vector<Assumption>& file_assumptions,
                                         const model::Matrix& m) {
+  using Role = RootCollector::Role;
   RootCollector r(m);
-  for (const auto& a : file_assumptions) r.visit(a.expr);
-  for (const auto& a : p.assumptions) r.visit(a.expr);
-  r.visit(p.body);
-  r.visit(p.trigger);
-  r.visit(p.response);
+  for (const auto& a : file_assumptions) r.visit(a.expr, Role::Assumed, Polarity::Positive);
+  for (const auto& a : p.assumptions) r.visit(a.expr, Role::Assumed, Polarity::Positive);
+  r.visit(p.body, Role::Judged, Polarity::Positive);
+  r.visit(p.trigger, Role::Judged, Polarity::Positive);
+  r.visit(p.response, Role::Judged, Polarity::Positive);
   return r.roots();
 }
 

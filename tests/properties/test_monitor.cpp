@@ -510,13 +510,25 @@ TEST(MonitorCone, RootsCoverObservablesInputReadersAndCommandTargets) {
   EXPECT_EQ(properties::property_roots(p, {}, m),
             (std::vector<Node>{{Node::Kind::Cause, 1}, {Node::Kind::Effect, 1}}));
   properties::CommandPattern reset{model::CommandOp::ResetEffect, {}, 2, {}, {}, {}, {}};
-  properties::Assumption a{"", Expr::unary(Kind::Not, Expr::issued(reset)), {}};
-  EXPECT_EQ(properties::property_roots(p, {a}, m),
-            (std::vector<Node>{{Node::Kind::Cause, 1}, {Node::Kind::Effect, 1}, {Node::Kind::Effect, 2}}));
+  const std::vector<Node> with_e2{{Node::Kind::Cause, 1}, {Node::Kind::Effect, 1}, {Node::Kind::Effect, 2}};
+  const std::vector<Node> without_e2{{Node::Kind::Cause, 1}, {Node::Kind::Effect, 1}};
+  auto assumed = [&](Expr e) { return properties::property_roots(p, {{"", std::move(e), {}}}, m); };
+  Expr issued = Expr::issued(reset);
+  // Assumed absent (negative in the assumption, also under held or an
+  // implication's left side): its target need not be in the cone.
+  EXPECT_EQ(assumed(Expr::unary(Kind::Not, issued)), without_e2);
+  EXPECT_EQ(assumed(unary(Kind::Held, Expr::unary(Kind::Not, issued), 3)), without_e2);
+  EXPECT_EQ(assumed(Expr::binary(Kind::Implies, issued, Expr::boolean(false))), without_e2);
+  // Assumed present, or under rose (either direction), or in the judged
+  // part: its target must be in the cone.
+  EXPECT_EQ(assumed(issued), with_e2);
+  EXPECT_EQ(assumed(Expr::unary(Kind::Not, unary(Kind::Rose, issued))), with_e2);
+  Property judged = p;
+  judged.body = Expr::binary(Kind::And, p.body, Expr::unary(Kind::Not, issued));
+  EXPECT_EQ(properties::property_roots(judged, {}, m), with_e2);
   // An open target: every effect.
   reset.effect.reset();
-  a.expr = Expr::issued(reset);
-  EXPECT_EQ(properties::property_roots(invariant(Expr::boolean(true)), {a}, m).size(), m.effects.size());
+  EXPECT_EQ(assumed(Expr::issued(reset)).size(), m.effects.size() + 1);
 
   // The cone of effect 3 lacks effect 1: compiling is an error, not a guess.
   z3::context ctx;
