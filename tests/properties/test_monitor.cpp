@@ -247,8 +247,9 @@ TEST(MonitorAtoms, CommandPatterns) {
   properties::CommandPattern any_sb{model::CommandOp::SoftBypassCause, 1, {}, {}, {}, {}, {}};
   properties::CommandPattern sb_off = any_sb;
   sb_off.on = false;
-  // Effect 1 has no override configured: the command is never accepted, so
-  // the encoding has no input for it and the pattern never matches.
+  // Effect 1 has no V or R intersection: override_effect is always refused
+  // (O.3), so the encoder has no input for it; the monitor adds a free one,
+  // so issuing it counts (ast.hpp: issued whether or not accepted).
   properties::CommandPattern ovr{model::CommandOp::OverrideEffect, {}, 1, {}, {}, {}, {}};
   model::Command on{model::CommandOp::SoftBypassCause, 1, 0, 0, 0, true, "", 0.0f};
   model::Command off = on;
@@ -262,8 +263,24 @@ TEST(MonitorAtoms, CommandPatterns) {
   Harness only_off(m, invariant(Expr::issued(sb_off)));
   EXPECT_EQ(only_off.step(1.0f, false, {on}), 0);
   EXPECT_EQ(only_off.step(1.0f, false, {off}), 1);
-  Harness never(m, invariant(Expr::issued(ovr)));
-  EXPECT_EQ(never.step(1.0f, false, {ovr_cmd}), 0);
+  Harness refused(m, invariant(Expr::issued(ovr)));
+  EXPECT_EQ(refused.step(1.0f, false, {}), 0);
+  EXPECT_EQ(refused.step(1.0f, false, {ovr_cmd}), 1);
+  EXPECT_EQ(refused.ev->value("effect[1].override_active"), 0);  // and it changes nothing
+  ASSERT_TRUE(refused.enc->ts.inputvar("cmd.override_effect[1]").has_value());
+  EXPECT_NE(refused.enc->find_command(ovr_cmd), nullptr);
+  // An open pattern covers every always-refused ack of the cone (cause 1
+  // acknowledges automatically, O.1).
+  properties::CommandPattern ack{model::CommandOp::AckCause, {}, {}, {}, {}, {}, {}};
+  Harness any_ack(m, invariant(Expr::issued(ack)));
+  model::Command ack1{model::CommandOp::AckCause, 1, 0, 0, 0, true, "", 0.0f};
+  EXPECT_EQ(any_ack.step(1.0f, false, {ack1}), 1);
+  // A simulation of the bypass tag BY1 (not simulatable, O.8) is issued too.
+  properties::CommandPattern sim{model::CommandOp::SimulateTag, {}, {}, {}, {}, {}, std::string("BY1")};
+  Harness simulated(m, invariant(Expr::issued(sim)));
+  model::Command sim_by{model::CommandOp::SimulateTag, 0, 0, 0, 0, true, "by1", 1.0f};
+  EXPECT_EQ(simulated.step(1.0f, false, {}), 0);
+  EXPECT_EQ(simulated.step(1.0f, false, {sim_by}), 1);
 }
 
 // ---- Response -------------------------------------------------------------------
@@ -410,6 +427,16 @@ TEST(MonitorSolver, ResponseIsFirstViolatedAtDepthNPlusOneAndAssumptionsCount) {
   properties::Assumption always_answered{"", Expr::binary(Kind::Implies, probe.value("T1"), probe.bad("T1")), {}};
   Harness assumed(m, p, {always_answered});
   EXPECT_FALSE(falsifiable_within(assumed, 6));
+}
+
+// A never-accepted command is still an operator action the solver may pick.
+TEST(MonitorSolver, AlwaysRefusedCommandCanBeIssued) {
+  auto m = one_cause(false);
+  Property p = invariant(Expr::boolean(true));
+  p.kind = PropertyKind::Never;
+  p.body = Expr::issued({model::CommandOp::OverrideEffect, {}, 1, {}, {}, {}, {}});
+  Harness h(m, p);
+  EXPECT_TRUE(falsifiable_within(h, 1));
 }
 
 TEST(MonitorSolver, ReachableWitnessOfWithinAfterFell) {
