@@ -127,7 +127,7 @@ bool matches(const encoder::CommandInput& ci, const CommandPattern& p) {
 // The concrete commands a pattern can match that name a target of the cone
 // (or the target the pattern fixes): open fields range over the cone's
 // causes / effects, tag positions 1-3, groups 1-15, both `on` variants and the
-// input tags of the matrix.
+// input tags the cone reads.
 std::vector<model::Command> candidate_commands(const encoder::Encoding& enc, const CommandPattern& p) {
   using Op = model::CommandOp;
   std::vector<int> causes, effects;
@@ -194,11 +194,14 @@ std::vector<model::Command> candidate_commands(const encoder::Encoding& enc, con
         c.tag_name = *p.tag_name;
         out.push_back(c);
       } else {
-        for (const auto& t : enc.inputs.tags()) {
-          model::Command c = cmd(0, 0);
-          c.tag_name = t.name;
-          out.push_back(c);
-        }
+        // The tags the cone reads: a simulation of any other tag cannot act
+        // on the cone, and a judged open pattern has every reader in it.
+        for (std::size_t t = 0; t < enc.inputs.size(); ++t)
+          if (t < enc.tag_value.size() && enc.tag_value[t]) {
+            model::Command c = cmd(0, 0);
+            c.tag_name = enc.inputs.tags()[t].name;
+            out.push_back(c);
+          }
       }
       break;
   }
@@ -225,13 +228,9 @@ void add_free_command(encoder::Encoding& enc, const model::Command& c) {
   if (ts.inputvar(name)) throw std::logic_error("monitor: command input " + name + " exists but does not match");
   encoder::CommandInput ci{c.op, c.cause, c.effect, c.tag, c.group, c.on, c.tag_name,
                            ts.make_inputvar(name, ts.ctx().bool_sort()), std::nullopt};
-  if (c.op == model::CommandOp::SimulateTag) {
-    auto idx = enc.inputs.find(c.tag_name);
-    bool analog = idx && enc.inputs.tags()[*idx].kind == model::TagKind::Analog;
-    z3::expr v = ts.make_inputvar(name + ".value", analog ? ts.ctx().fpa_sort(8, 24) : ts.ctx().bool_sort());
-    if (analog) ts.add_constraint(name + ".value.not_nan", !z3::expr(ts.ctx(), Z3_mk_fpa_is_nan(ts.ctx(), v)));
-    ci.value = v;
-  }
+  // The value of a simulation that cannot act on the cone is irrelevant: a
+  // Bool keeps the query free of needless floating point.
+  if (c.op == model::CommandOp::SimulateTag) ci.value = ts.make_inputvar(name + ".value", ts.ctx().bool_sort());
   enc.commands.push_back(ci);
 }
 
