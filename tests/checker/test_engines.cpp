@@ -8,6 +8,7 @@
 #include <functional>
 #include <memory>
 
+#include "checker/check/recheck.hpp"
 #include "checker/engines/bmc.hpp"
 #include "checker/engines/invariants.hpp"
 #include "checker/engines/kinduction.hpp"
@@ -95,6 +96,8 @@ TEST_P(Engines, AnswerIsExpectedOrUndecidedByDesign) {
   if (r.verdict == Verdict::Falsified) {
     EXPECT_EQ(r.cex.input_names.size(), owned.problem.ts->inputvars().size());
   }
+  // Every definitive answer survives the independent re-check.
+  EXPECT_NO_THROW(check::recheck(c.problem.make, r));
 }
 
 std::string case_name(const ::testing::TestParamInfo<Case>& info) {
