@@ -102,6 +102,7 @@ NamedProblem example_term(const std::string& example, const std::vector<model::N
 NamedProblem override_monitor(int bound, Verdict expected, int cex_length) {
   NamedProblem p;
   p.name = "hipps_override_monitor_le_" + std::to_string(bound);
+  p.deep = true;
   p.expected = expected;
   p.cex_length = cex_length;
   p.make = [bound](z3::context& ctx) {
@@ -119,6 +120,7 @@ NamedProblem override_monitor(int bound, Verdict expected, int cex_length) {
 NamedProblem override_instance_monitor(int bound, Verdict expected, int cex_length) {
   NamedProblem p;
   p.name = "hipps_override_instance_monitor_le_" + std::to_string(bound);
+  p.deep = true;
   p.expected = expected;
   p.cex_length = cex_length;
   p.make = [bound](z3::context& ctx) {

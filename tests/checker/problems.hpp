@@ -18,6 +18,9 @@ struct NamedProblem {
   Verdict expected;
   int cex_length = 0;  // cycles of the shortest counterexample, for Falsified
   bool exact_length = true;  // false: cex_length is a lower bound
+  // Needs an 18,000-cycle timer: beyond PDR and plain BMC (the solver
+  // measurements note), decided by relational invariants.
+  bool deep = false;
 };
 
 // A saturating counter x (0, 1, ..., limit, limit, ...) counting the cycles in
