@@ -161,6 +161,11 @@ ProverResult Portfolio::run(const Limits& limits) {
         throw InternalError("engine " + l->engine + " failed: " + e.what());
       }
     }
+  // Two engines contradicting each other means one of them (or Z3) is wrong.
+  for (auto& l : lanes)
+    if (answer && l->result && l->result->verdict != Verdict::Unknown && l->result->verdict != answer->verdict)
+      throw InternalError("engines disagree: " + answer->method + " says " + to_string(answer->verdict) + ", " +
+                          l->engine + " says " + to_string(l->result->verdict));
   if (!answer) {
     // Nobody decided: say why, the most telling reason first.
     ProverResult r;

@@ -77,6 +77,25 @@ NamedProblem guarded_counter(int bound) {
   return p;
 }
 
+NamedProblem edge_counter() {
+  NamedProblem p;
+  p.name = "edge_counter";
+  p.expected = Verdict::Falsified;
+  p.cex_length = 10002;
+  p.make = [](z3::context& ctx) {
+    auto ts = std::make_shared<encoder::TransitionSystem>(ctx);
+    z3::expr x = ts->make_statevar("x", ctx.int_sort());
+    z3::expr prev = ts->make_statevar("prev", ctx.bool_sort());
+    z3::expr go = ts->make_inputvar("go", ctx.bool_sort());
+    ts->set_init(x, ctx.int_val(0));
+    ts->set_init(prev, ctx.bool_val(false));
+    ts->assign_next(x, z3::ite(go && !prev, x + 1, x));
+    ts->assign_next(prev, go);
+    return own(ts, *ts, x <= 5000);
+  };
+  return p;
+}
+
 std::unique_ptr<encoder::Encoding> encode_example(z3::context& ctx, const std::string& example,
                                                   const std::vector<model::Node>& roots) {
   model::Matrix m = model::load_matrix(std::string(CEMV_SOURCE_DIR) + "/examples/" + example + "/matrix.json");

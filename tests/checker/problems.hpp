@@ -33,6 +33,12 @@ NamedProblem twin_counters();
 // holds only because !flag -> x = 0 and flag is cleared when x reaches 3.
 NamedProblem guarded_counter(int bound);
 
+// x counts the rising edges of input `go`; good: x <= 5000. False, but only
+// after 10,000 cycles of toggling input: too deep for BMC, not a held-input
+// stretch for the accelerated unrolling, and a 5,000-step counter for PDR.
+// Nothing decides it in seconds: what a deadline test needs.
+NamedProblem edge_counter();
+
 // The example matrix `examples/NAME/matrix.json` encoded with the given roots.
 std::unique_ptr<encoder::Encoding> encode_example(z3::context& ctx, const std::string& example,
                                                   const std::vector<model::Node>& roots);
