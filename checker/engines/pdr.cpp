@@ -26,8 +26,10 @@ ProverResult Pdr::prove(const SafetyProblem& problem, const Limits& limits) {
   ProverResult r;
   r.method = name();
   try {
-    Watchdog watchdog(ctx, limits);
     z3::fixedpoint fp(ctx);
+    // Declared after the fixedpoint, so destroyed (clearing the interrupt)
+    // before it: see Watchdog.
+    Watchdog watchdog(ctx, limits);
     z3::params p(ctx);
     p.set("engine", "spacer");
     auto left = std::chrono::duration_cast<std::chrono::milliseconds>(limits.deadline - start).count();

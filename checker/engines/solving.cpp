@@ -16,13 +16,27 @@ Watchdog::~Watchdog() {
   }
   wake_.notify_all();
   thread_.join();
+  // Z3_interrupt leaves the context's resource limit cancelled until the next
+  // solver check starts: until then every simplification throws "canceled",
+  // and destroying a fixedpoint (Spacer) throws out of a Z3 destructor, which
+  // is std::terminate (seen with Z3 4.8.12). A check of an empty solver
+  // clears it.
+  if (fired_) {
+    try {
+      z3::solver(ctx_).check();
+    } catch (const z3::exception&) {
+    }
+  }
 }
 
 void Watchdog::watch() {
   std::unique_lock<std::mutex> lock(mutex_);
   while (!done_) {
     wake_.wait_for(lock, std::chrono::milliseconds(10));
-    if (!done_ && limits_.over()) ctx_.interrupt();
+    if (!done_ && limits_.over()) {
+      ctx_.interrupt();
+      fired_ = true;
+    }
   }
 }
 

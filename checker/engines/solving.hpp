@@ -19,7 +19,8 @@ namespace cemv::checker {
 
 // Interrupts `ctx` once the deadline passes or the cancel flag is set, and
 // again every few milliseconds until destroyed, so a solver call that starts
-// late is stopped too.
+// late is stopped too. Destroy it before the Z3 objects the engine made (a
+// fixedpoint in particular): it clears the cancellation on the way out.
 class Watchdog {
  public:
   Watchdog(z3::context& ctx, const Limits& limits);
@@ -34,6 +35,7 @@ class Watchdog {
   std::mutex mutex_;
   std::condition_variable wake_;
   bool done_ = false;
+  bool fired_ = false;
   std::thread thread_;
 };
 

@@ -3,7 +3,7 @@
 if(TARGET cemv_checker)
   add_library(cemv_checker_problems STATIC ${CMAKE_CURRENT_LIST_DIR}/problems.cpp)
   target_compile_definitions(cemv_checker_problems PUBLIC CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
-  target_link_libraries(cemv_checker_problems PUBLIC cemv_checker cemv_encoder cemv_model)
+  target_link_libraries(cemv_checker_problems PUBLIC cemv_checker cemv_encoder cemv_formats cemv_model)
 
   add_executable(test_checker_engines ${CMAKE_CURRENT_LIST_DIR}/test_engines.cpp)
   target_link_libraries(test_checker_engines PRIVATE cemv_checker_problems GTest::gtest_main)

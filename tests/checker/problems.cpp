@@ -1,6 +1,6 @@
 #include "tests/checker/problems.hpp"
 
-#include "model/format.hpp"
+#include "formats/matrix_json.hpp"
 
 namespace cemv::checker::fixtures {
 
@@ -98,7 +98,7 @@ NamedProblem edge_counter() {
 
 std::unique_ptr<encoder::Encoding> encode_example(z3::context& ctx, const std::string& example,
                                                   const std::vector<model::Node>& roots) {
-  model::Matrix m = model::load_matrix(std::string(CEMV_SOURCE_DIR) + "/examples/" + example + "/matrix.json");
+  model::Matrix m = formats::load_matrix(std::string(CEMV_SOURCE_DIR) + "/examples/" + example + "/matrix.json");
   return encoder::encode(ctx, m, roots);
 }
 
