@@ -77,6 +77,22 @@ NamedProblem guarded_counter(int bound) {
   return p;
 }
 
+NamedProblem lasso() {
+  NamedProblem p;
+  p.name = "lasso";
+  p.expected = Verdict::Proved;
+  p.make = [](z3::context& ctx) {
+    auto ts = std::make_shared<encoder::TransitionSystem>(ctx);
+    z3::expr s = ts->make_statevar("s", ctx.int_sort());
+    z3::expr go = ts->make_inputvar("go", ctx.bool_sort());
+    ts->set_init(s, ctx.int_val(0));
+    z3::expr from3 = z3::ite(go, ctx.int_val(4), ctx.int_val(3));
+    ts->assign_next(s, z3::ite(s == 0, ctx.int_val(1), z3::ite(s == 3, from3, s)));
+    return own(ts, *ts, s != 4);
+  };
+  return p;
+}
+
 NamedProblem edge_counter() {
   NamedProblem p;
   p.name = "edge_counter";

@@ -33,6 +33,11 @@ NamedProblem twin_counters();
 // holds only because !flag -> x = 0 and flag is cleared when x reaches 3.
 NamedProblem guarded_counter(int bound);
 
+// s: 0 -> 1 -> 1 -> ...; the unreachable state 3 loops on itself and may
+// step to the bad state 4. good: s != 4. Not k-inductive for any k (3, 3, ...,
+// 3, 4), but 2-inductive on simple paths (only 3 leads to 3).
+NamedProblem lasso();
+
 // x counts the rising edges of input `go`; good: x <= 5000. False, but only
 // after 10,000 cycles of toggling input: too deep for BMC, not a held-input
 // stretch for the accelerated unrolling, and a 5,000-step counter for PDR.

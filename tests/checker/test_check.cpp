@@ -62,6 +62,28 @@ TEST(Recheck, RejectsAProofOfAFalseProperty) {
   EXPECT_THROW(check::recheck_proof(p.make, forged), InternalError);
 }
 
+// k-induction needs its lazily added simple-path constraints here, and the
+// re-check must use them too (without them the step is sat).
+TEST(Recheck, SimplePathProofOfTheLasso) {
+  auto p = fixtures::lasso();
+  KInductionOptions plain;
+  plain.mine_invariants = false;
+  KInduction with_simple_path(plain);
+  ProverResult r = solve(with_simple_path, p);
+  ASSERT_EQ(r.verdict, Verdict::Proved) << r.reason;
+  EXPECT_TRUE(r.simple_path);
+  EXPECT_EQ(r.k, 2);
+  EXPECT_NO_THROW(check::recheck_proof(p.make, r));
+  r.simple_path = false;
+  EXPECT_THROW(check::recheck_proof(p.make, r), InternalError);
+
+  plain.simple_path = false;
+  KInduction without(plain);
+  ProverResult u = solve(without, p);
+  EXPECT_EQ(u.verdict, Verdict::Unknown);
+  EXPECT_EQ(u.reason, "bound reached");
+}
+
 TEST(Replay, AcceptsABmcCounterexample) {
   auto p = fixtures::saturating_counter(10, 4);
   Bmc bmc;
