@@ -16,6 +16,7 @@
 #include "checker/engines/kinduction.hpp"
 #include "checker/engines/pdr.hpp"
 #include "checker/engines/solving.hpp"
+#include "checker/trace_shrink.hpp"
 
 namespace cemv::checker {
 
@@ -179,6 +180,12 @@ ProverResult Portfolio::run(const Limits& limits) {
     r.reason = limits.over() ? "time limit" : memory ? "memory limit" : all_bounds ? "bound reached" : "time limit";
     r.seconds = seconds_since(start);
     return r;
+  }
+  if (answer->verdict == Verdict::Falsified) {
+    z3::context ctx;
+    OwnedProblem owned = make_(ctx);
+    answer->cex = shrink_counterexample(owned.problem, answer->cex);
+    answer->k = static_cast<int>(answer->cex.length()) - 1;
   }
   if (options_.recheck) check::recheck(make_, *answer);
   answer->seconds = seconds_since(start);

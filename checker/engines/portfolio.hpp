@@ -9,7 +9,9 @@
 // - Proved: the first engine in the preference order
 //   invariants+induction, k-induction, pdr that proves it; engines earlier in
 //   the order are waited for (each stops at its own bound), later ones stopped.
-// The answer is re-checked in a fresh context before it is returned.
+// A counterexample's inputs that the violation does not need are set to zero
+// (trace_shrink.hpp). The answer is re-checked in a fresh context before it
+// is returned.
 #pragma once
 
 #include <memory>

@@ -18,6 +18,13 @@ ProverResult race(const fixtures::NamedProblem& p, std::chrono::milliseconds bud
   return portfolio.run(Limits::within(budget, 40));
 }
 
+std::size_t nonzero_inputs(const Trace& t) {
+  std::size_t n = 0;
+  for (const auto& c : t.cycles)
+    for (const auto& v : c.inputs) n += v.i != 0 || v.f != 0.0f;
+  return n;
+}
+
 TEST(Portfolio, ProvesTheHippsOverrideBoundByInvariantsWellUnderFiveSeconds) {
   auto t0 = std::chrono::steady_clock::now();
   ProverResult r = race(fixtures::override_instance_monitor(18000, Verdict::Proved));
@@ -34,11 +41,14 @@ TEST(Portfolio, RefutesTheBoundOneCycleTooTightWithALongCounterexample) {
   EXPECT_GE(r.cex.length(), 18001u);
 }
 
-TEST(Portfolio, ReportsBmcsShortestCounterexample) {
+TEST(Portfolio, ReportsBmcsShortestCounterexampleWithOnlyTheInputsItNeeds) {
   ProverResult r = race(fixtures::guarded_counter(2));
   ASSERT_EQ(r.verdict, Verdict::Falsified) << r.reason;
   EXPECT_EQ(r.method, "bmc");
   EXPECT_EQ(r.cex.length(), 4u);
+  // `start` in cycle 0 is all the counter needs.
+  EXPECT_EQ(r.cex.input(0, "start").i, 1);
+  EXPECT_EQ(nonzero_inputs(r.cex), 1u);
 }
 
 TEST(Portfolio, SameProblemSameAnswer) {
