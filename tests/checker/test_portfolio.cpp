@@ -25,13 +25,17 @@ std::size_t nonzero_inputs(const Trace& t) {
   return n;
 }
 
-TEST(Portfolio, ProvesTheHippsOverrideBoundByInvariantsWellUnderFiveSeconds) {
-  auto t0 = std::chrono::steady_clock::now();
+// Its speed is a benchmark figure (cemv_checker_measure), not asserted here.
+TEST(Portfolio, ProvesTheHippsOverrideBoundByInvariants) {
   ProverResult r = race(fixtures::override_instance_monitor(18000, Verdict::Proved));
-  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   ASSERT_EQ(r.verdict, Verdict::Proved) << r.reason;
   EXPECT_EQ(r.method, "invariants+induction");
-  EXPECT_LT(seconds, 5.0);
+  EXPECT_EQ(r.k, 0);
+  bool relates_monitor_and_timer = false;
+  for (const auto& c : r.invariant.clauses)
+    relates_monitor_and_timer = relates_monitor_and_timer || (c.find("monitor.override_held") != std::string::npos &&
+                                                              c.find("override.elapsed") != std::string::npos);
+  EXPECT_TRUE(relates_monitor_and_timer) << r.invariant.text();
 }
 
 TEST(Portfolio, RefutesTheBoundOneCycleTooTightWithALongCounterexample) {
@@ -76,7 +80,7 @@ TEST(Portfolio, EndsOnTimeWhenNothingDecides) {
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   EXPECT_EQ(r.verdict, Verdict::Unknown);
   EXPECT_EQ(r.reason, "time limit");
-  EXPECT_LT(seconds, 2.5);
+  EXPECT_LT(seconds, 4.0);  // 1.5 s budget; the margin is for a loaded 2-core machine
 }
 
 TEST(Portfolio, RejectsAnUnknownEngine) {
