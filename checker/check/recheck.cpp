@@ -95,7 +95,22 @@ void recheck_proof(const ProblemFactory& make, const ProverResult& result) {
   });
 }
 
+namespace {
+void replay_on_evaluator(const SafetyProblem& problem, const Trace& cex);
+}  // namespace
+
 void replay_counterexample(const SafetyProblem& problem, const Trace& cex) {
+  try {
+    replay_on_evaluator(problem, cex);
+  } catch (const std::logic_error& e) {
+    // An operator the Evaluator does not interpret: the trace cannot be
+    // re-checked, so it must not be reported.
+    throw InternalError(std::string("counterexample cannot be re-simulated: ") + e.what());
+  }
+}
+
+namespace {
+void replay_on_evaluator(const SafetyProblem& problem, const Trace& cex) {
   const auto& ts = *problem.ts;
   if (cex.cycles.empty()) throw InternalError("counterexample without cycles");
   // The Evaluator runs an Encoding; a copy of the system with the property's
@@ -141,6 +156,7 @@ void replay_counterexample(const SafetyProblem& problem, const Trace& cex) {
   }
   if (ev.value("checker.good")) throw InternalError("counterexample does not violate the property in its last cycle");
 }
+}  // namespace
 
 void replay_counterexample(const ProblemFactory& make, const Trace& cex) {
   in_fresh_context(make, [&](const SafetyProblem& p) {

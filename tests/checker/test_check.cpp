@@ -123,6 +123,23 @@ TEST(Replay, RejectsATraceWhoseStatesDisagreeWithTheFormulas) {
   EXPECT_THROW(check::replay_counterexample(p.make, r.cex), InternalError);
 }
 
+// A property the Evaluator cannot compute (multiplication is no operator the
+// encoder emits): its counterexample cannot be re-checked, so it is an
+// internal error, not a verdict.
+TEST(Replay, RefusesWhatItCannotResimulate) {
+  auto p = fixtures::saturating_counter(10, 4);
+  p.make = [inner = p.make](z3::context& ctx) {
+    OwnedProblem o = inner(ctx);
+    z3::expr x = *o.problem.ts->statevar("x");
+    o.problem.good = x * x <= 16;
+    return o;
+  };
+  Bmc bmc;
+  ProverResult r = solve(bmc, p);
+  ASSERT_EQ(r.verdict, Verdict::Falsified);
+  EXPECT_THROW(check::replay_counterexample(p.make, r.cex), InternalError);
+}
+
 std::string run(const std::string& cmd) {
   std::string out;
   std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(cmd.c_str(), "r"), pclose);
