@@ -18,8 +18,8 @@ struct NamedProblem {
   Verdict expected;
   int cex_length = 0;  // cycles of the shortest counterexample, for Falsified
   bool exact_length = true;  // false: cex_length is a lower bound
-  // Needs an 18,000-cycle timer: beyond PDR and plain BMC (the solver
-  // measurements note), decided by relational invariants.
+  // Needs an 18,000-cycle timer: beyond PDR and plain BMC (cemv_checker_measure),
+  // decided by relational invariants and the accelerated unrolling.
   bool deep = false;
 };
 
