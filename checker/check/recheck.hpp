@@ -1,0 +1,41 @@
+// Independent re-checks of an engine's answer before it is reported
+// (Bitwuzla's check/): a proof's invariant and induction step with a fresh
+// solver, a counterexample by re-simulation on the encoder's Evaluator. A
+// failed re-check throws InternalError: it is never turned into a verdict.
+//
+// The overloads taking a ProblemFactory build the problem in a fresh
+// z3::context, so nothing the engine's context cached (simplifications,
+// learned clauses, a wrong rewrite) takes part in the check.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "checker/prover.hpp"
+
+namespace cemv::checker::check {
+
+// Proved: the invariant holds initially and is inductive, and `good` is
+// k-inductive relative to it (ProverResult's comment); each a fresh solver
+// call that must answer unsat.
+void recheck_proof(const SafetyProblem& problem, const ProverResult& result);
+void recheck_proof(const ProblemFactory& make, const ProverResult& result);
+
+// Falsified: from the initial state, the trace's inputs drive the system so
+// that `assumption` holds in every cycle and `good` is false in the last one.
+void replay_counterexample(const SafetyProblem& problem, const Trace& cex);
+void replay_counterexample(const ProblemFactory& make, const Trace& cex);
+
+// Either of the two above, by verdict; Unknown needs no check.
+void recheck(const ProblemFactory& make, const ProverResult& result);
+
+// The proof obligations of a Proved result as SMT-LIB 2 scripts, each of
+// which a solver must answer unsat: invariant initiation and consecution,
+// base case and inductive step.
+struct ProofObligation {
+  std::string name;    // "invariant-init", "invariant-step", "base", "step"
+  std::string script;  // (set-logic ALL) ... (check-sat)
+};
+std::vector<ProofObligation> proof_obligations_smtlib(const SafetyProblem& problem, const ProverResult& result);
+
+}  // namespace cemv::checker::check

@@ -1,0 +1,177 @@
+#include "checker/engines/accelerated_bmc.hpp"
+
+#include <algorithm>
+
+#include "checker/engines/solving.hpp"
+#include "encoder/encode.hpp"
+#include "encoder/evaluate.hpp"
+#include "encoder/unroller.hpp"
+
+namespace cemv::checker {
+
+namespace {
+
+// One macro step of the unrolling: its start state and inputs live in the
+// Unroller's copies at index j; `length` is its number of cycles.
+class MacroUnrolling {
+ public:
+  MacroUnrolling(const SafetyProblem& p)
+      : p_(p), ts_(*p.ts), ctx_(ts_.ctx()), u_(ts_), from_(ctx_) {
+    for (const auto& s : ts_.statevars()) from_.push_back(s.var);
+    for (const auto& i : ts_.inputvars()) from_.push_back(i.var);
+  }
+
+  z3::expr length(int j) { return ctx_.int_const(("macro.length@" + std::to_string(j)).c_str()); }
+
+  // `e` over state and inputs, with the state replaced by `state` and the
+  // inputs by the copies of macro step j.
+  z3::expr with_state(const z3::expr& e, const std::vector<z3::expr>& state, int j) {
+    z3::expr_vector to(ctx_);
+    for (const auto& s : state) to.push_back(s);
+    for (const auto& i : ts_.inputvars()) to.push_back(u_.var_at(i.var, j));
+    z3::expr copy = e;
+    return copy.substitute(from_, to);
+  }
+
+  // Macro step j: from state@j with inputs@j to state@(j+1).
+  z3::expr step(int j) {
+    const z3::expr n = length(j);
+    const z3::expr facts = ts_.constraint_formula() && p_.assumption;
+    z3::expr_vector single(ctx_), stretch(ctx_);
+    std::vector<z3::expr> start, last;
+    for (const auto& s : ts_.statevars()) start.push_back(u_.var_at(s.var, j));
+    for (std::size_t v = 0; v < ts_.statevars().size(); ++v) {
+      const auto& s = ts_.statevars()[v];
+      z3::expr now = start[v];
+      z3::expr after = u_.var_at(s.var, j + 1);
+      z3::expr next_now = with_state(s.next, start, j);
+      single.push_back(after == next_now);
+      if (s.var.is_int()) {
+        z3::expr counts = ctx_.bool_const(("macro.counts." + s.name + "@" + std::to_string(j)).c_str());
+        stretch.push_back(next_now == z3::ite(counts, now + 1, now));
+        stretch.push_back(after == z3::ite(counts, now + n, now));
+        last.push_back(z3::ite(counts, now + n - 1, now));
+      } else {
+        stretch.push_back(next_now == now);
+        stretch.push_back(after == now);
+        last.push_back(now);
+      }
+    }
+    // The last cycle of the stretch, from its own start state, ends where the
+    // stretch ends.
+    for (std::size_t v = 0; v < ts_.statevars().size(); ++v)
+      stretch.push_back(u_.var_at(ts_.statevars()[v].var, j + 1) == with_state(ts_.statevars()[v].next, last, j));
+    stretch.push_back(with_state(facts, last, j));
+    return n >= 1 && u_.at(facts, j) && z3::ite(n == 1, z3::mk_and(single), z3::mk_and(stretch));
+  }
+
+  z3::expr init() { return u_.at(ts_.init_formula(), 0); }
+  z3::expr violation(int j) { return u_.at(ts_.constraint_formula() && p_.assumption && !p_.good, j); }
+  encoder::Unroller& unroller() { return u_; }
+
+ private:
+  const SafetyProblem& p_;
+  const encoder::TransitionSystem& ts_;
+  z3::context& ctx_;
+  encoder::Unroller u_;
+  z3::expr_vector from_;
+};
+
+// Expands macro steps into cycles on the Evaluator; returns the trace up to
+// the first violating cycle, or nothing when the run does not violate `good`
+// (or breaks the assumption first).
+std::optional<Trace> confirm(const SafetyProblem& p, const std::vector<std::vector<Value>>& inputs,
+                             const std::vector<std::int64_t>& lengths) {
+  const auto& ts = *p.ts;
+  encoder::Encoding enc(ts.ctx());
+  enc.ts = ts;
+  enc.ts.name_term("checker.good", p.good);
+  enc.ts.name_term("checker.facts", ts.constraint_formula() && p.assumption);
+  encoder::Evaluator ev(enc);
+  Trace t;
+  for (const auto& i : ts.inputvars()) t.input_names.push_back(i.name);
+  for (const auto& s : ts.statevars()) t.state_names.push_back(s.name);
+  for (std::size_t j = 0; j < inputs.size(); ++j) {
+    std::vector<encoder::Evaluator::Value> in(inputs[j].size());
+    for (std::size_t i = 0; i < in.size(); ++i) {
+      in[i].i = inputs[j][i].i;
+      in[i].f = inputs[j][i].f;
+    }
+    for (std::int64_t c = 0; c < lengths[j]; ++c) {
+      Trace::Cycle cycle;
+      cycle.inputs = inputs[j];
+      for (std::size_t v = 0; v < ts.statevars().size(); ++v)
+        cycle.state.push_back(Value{ts.statevars()[v].var.is_fpa(), ev.state()[v].i, ev.state()[v].f});
+      ev.step_raw(in);
+      t.cycles.push_back(std::move(cycle));
+      if (!ev.value("checker.facts")) return std::nullopt;
+      if (!ev.value("checker.good")) return t;
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+ProverResult AcceleratedBmc::prove(const SafetyProblem& problem, const Limits& limits) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto& ts = *problem.ts;
+  z3::context& ctx = ts.ctx();
+  ProverResult r;
+  r.method = name();
+  auto finish = [&](std::string reason) {
+    r.reason = std::move(reason);
+    r.seconds = seconds_since(start);
+    return r;
+  };
+  const int max_steps = std::min(kMaxMacroSteps, limits.max_depth);
+  try {
+    Watchdog watchdog(ctx, limits);
+    MacroUnrolling m(problem);
+    encoder::Unroller& u = m.unroller();
+    z3::solver s(ctx);
+    s.add(m.init());
+    for (int J = 0; J <= max_steps; ++J) {
+      if (J > 0) s.add(m.step(J - 1));
+      z3::expr violated = ctx.bool_const(("macro.violated@" + std::to_string(J)).c_str());
+      s.add(z3::implies(violated, m.violation(J)));
+      for (int attempt = 0; attempt < kMaxRefinements; ++attempt) {
+        if (limits.over()) return finish("time limit");
+        set_timeout(s, limits);
+        z3::expr_vector assume(ctx);
+        assume.push_back(violated);
+        z3::check_result cr = s.check(assume);
+        if (cr == z3::unknown) return finish(unknown_reason(s.reason_unknown(), limits));
+        if (cr == z3::unsat) break;
+        z3::model model = s.get_model();
+        std::vector<std::vector<Value>> inputs;
+        std::vector<std::int64_t> lengths;
+        z3::expr_vector same(ctx);
+        for (int j = 0; j <= J; ++j) {
+          std::vector<Value> in;
+          for (const auto& i : ts.inputvars()) in.push_back(value_in(model, u.var_at(i.var, j)));
+          inputs.push_back(std::move(in));
+          std::int64_t n = j < J ? model.eval(m.length(j), true).get_numeral_int64() : 1;
+          lengths.push_back(n);
+          if (j < J) same.push_back(m.length(j) == ctx.int_val(n));
+        }
+        if (auto trace = confirm(problem, inputs, lengths)) {
+          r.verdict = Verdict::Falsified;
+          r.k = static_cast<int>(trace->length()) - 1;
+          r.cex = std::move(*trace);
+          return finish("");
+        }
+        // Spurious (the stretch is not what its end points claimed): exclude
+        // these lengths and ask again.
+        s.add(same.empty() ? ctx.bool_val(false) : !z3::mk_and(same));
+      }
+    }
+  } catch (const z3::exception& e) {
+    return finish(unknown_reason(e.msg(), limits));
+  } catch (const std::logic_error& e) {
+    return finish(std::string("the evaluator cannot run this system: ") + e.what());
+  }
+  return finish("bound reached");
+}
+
+}  // namespace cemv::checker

@@ -1,0 +1,389 @@
+#include "checker/engines/invariants.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <set>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "checker/engines/kinduction.hpp"
+#include "checker/engines/solving.hpp"
+#include "encoder/encode.hpp"
+#include "encoder/evaluate.hpp"
+#include "encoder/unroller.hpp"
+
+namespace cemv::checker {
+
+namespace {
+
+using Sample = std::vector<encoder::Evaluator::Value>;
+
+// The numerals of the system's formulas: thresholds worth driving inputs to,
+// and bounds worth proposing for counters.
+struct Constants {
+  std::set<std::int64_t> ints{0, 1};
+  std::set<float> floats{0.0f};
+};
+
+void collect_constants(const z3::expr& e, Constants& out, std::unordered_set<unsigned>& seen) {
+  if (!seen.insert(e.id()).second || !e.is_app()) return;
+  if (e.num_args() == 0) {
+    if (e.is_int() && e.is_numeral()) {
+      std::int64_t v = 0;
+      if (e.is_numeral_i64(v)) out.ints.insert(v);
+    } else if (e.is_fpa() && e.decl().decl_kind() != Z3_OP_UNINTERPRETED) {
+      z3::expr bits(e.ctx(), Z3_mk_fpa_to_ieee_bv(e.ctx(), e));
+      z3::expr b = bits.simplify();
+      if (b.is_numeral()) {
+        float f = std::bit_cast<float>(static_cast<std::uint32_t>(b.get_numeral_uint64()));
+        if (!std::isnan(f)) out.floats.insert(f);
+      }
+    }
+    return;
+  }
+  for (unsigned i = 0; i < e.num_args(); ++i) collect_constants(e.arg(i), out, seen);
+}
+
+Constants constants_of(const SafetyProblem& p) {
+  Constants c;
+  std::unordered_set<unsigned> seen;
+  for (const auto& s : p.ts->statevars()) collect_constants(s.next, c, seen);
+  for (const auto& t : p.ts->named_terms()) collect_constants(t.term, c, seen);
+  for (const auto& l : p.ts->lemmas()) collect_constants(l.term, c, seen);
+  collect_constants(p.good, c, seen);
+  collect_constants(p.assumption, c, seen);
+  return c;
+}
+
+// Random runs with inputs held for stretches of varying length (timers run
+// out only when a trip is held), commands issued at the start of a stretch
+// with varying probability.
+std::vector<Sample> simulate(const SafetyProblem& p, const MiningOptions& opt) {
+  const auto& ts = *p.ts;
+  encoder::Encoding enc(ts.ctx());
+  enc.ts = ts;
+  encoder::Evaluator ev(enc);
+  Constants k = constants_of(p);
+  std::vector<float> fpool;
+  for (float f : k.floats)
+    for (float g : {f, std::nextafter(f, -INFINITY), std::nextafter(f, INFINITY), f - 1.0f, f + 1.0f})
+      fpool.push_back(g);
+  std::vector<std::int64_t> ipool(k.ints.begin(), k.ints.end());
+  std::mt19937 rng(opt.seed);
+  std::vector<Sample> samples{ev.state()};
+  const double command_p[] = {0.3, 0.05, 0.01, 0.002};
+  const int hold_max[] = {1, 8, 60, 600};
+  for (int run = 0; run < opt.runs; ++run) {
+    ev.reset();
+    const double pc = command_p[run % 4];
+    const int hm = hold_max[(run / 4 + run) % 4];
+    int cycle = 0;
+    while (cycle < opt.cycles_per_run) {
+      std::vector<encoder::Evaluator::Value> in(ts.inputvars().size());
+      for (std::size_t i = 0; i < in.size(); ++i) {
+        const auto& v = ts.inputvars()[i];
+        if (v.var.is_bool()) {
+          bool command = v.name.rfind("cmd.", 0) == 0;
+          in[i].i = std::bernoulli_distribution(command ? pc : 0.5)(rng) ? 1 : 0;
+        } else if (v.var.is_int()) {
+          in[i].i = ipool[std::uniform_int_distribution<std::size_t>(0, ipool.size() - 1)(rng)];
+        } else {
+          in[i].f = fpool[std::uniform_int_distribution<std::size_t>(0, fpool.size() - 1)(rng)];
+        }
+      }
+      int hold = std::uniform_int_distribution<int>(1, hm)(rng);
+      for (int h = 0; h < hold && cycle < opt.cycles_per_run; ++h, ++cycle) {
+        ev.step_raw(in);
+        samples.push_back(ev.state());
+        if (h == 0)  // commands act once per stretch
+          for (std::size_t i = 0; i < in.size(); ++i)
+            if (ts.inputvars()[i].name.rfind("cmd.", 0) == 0 && ts.inputvars()[i].var.is_bool()) in[i].i = 0;
+      }
+    }
+  }
+  return samples;
+}
+
+// Candidates as (evaluable predicate, term builder) pairs are overkill; the
+// templates are few, so each is tested on the samples where it is made.
+class CandidateMiner {
+ public:
+  CandidateMiner(const SafetyProblem& p, std::vector<Sample> samples, const MiningOptions& opt)
+      : ts_(*p.ts), samples_(std::move(samples)), opt_(opt), k_(constants_of(p)) {
+    for (std::size_t i = 0; i < ts_.statevars().size(); ++i) {
+      const auto& v = ts_.statevars()[i].var;
+      if (v.is_int()) ints_.push_back(i);
+      else if (v.is_bool()) bools_.push_back(i);
+    }
+  }
+
+  std::vector<z3::expr> mine() {
+    unary();
+    pairs();
+    guarded();
+    if (opt_.bool_implications) bool_implications();
+    return std::move(out_);
+  }
+
+ private:
+  std::int64_t iv(const Sample& s, std::size_t v) const { return s[v].i; }
+  z3::expr var(std::size_t v) const { return ts_.statevars()[v].var; }
+  z3::expr num(std::int64_t c) const { return ts_.ctx().int_val(c); }
+  void add(const z3::expr& e) {
+    if (out_.size() < opt_.max_candidates) out_.push_back(e);
+  }
+
+  void unary() {
+    for (std::size_t x : ints_) {
+      std::int64_t lo = std::numeric_limits<std::int64_t>::max(), hi = std::numeric_limits<std::int64_t>::min();
+      for (const auto& s : samples_) {
+        lo = std::min(lo, iv(s, x));
+        hi = std::max(hi, iv(s, x));
+      }
+      if (lo == hi) {
+        add(var(x) == num(lo));
+        continue;
+      }
+      // The nearest numerals of the system beyond the observed range: a
+      // saturating counter's bound is one of them.
+      auto up = k_.ints.lower_bound(hi);
+      if (up != k_.ints.end()) add(var(x) <= num(*up));
+      if (up == k_.ints.end() || *up != hi) add(var(x) <= num(hi));
+      auto down = k_.ints.upper_bound(lo);
+      if (down != k_.ints.begin()) add(var(x) >= num(*std::prev(down)));
+    }
+    for (std::size_t b : bools_) {
+      bool all_true = true, all_false = true;
+      for (const auto& s : samples_) (s[b].i ? all_false : all_true) = false;
+      if (all_true) add(var(b));
+      if (all_false) add(!var(b));
+    }
+  }
+
+  // Over the samples selected by `keep`: is x - y constant (and which)?
+  template <class Keep>
+  std::optional<std::int64_t> constant_difference(std::size_t x, std::size_t y, Keep keep) const {
+    std::optional<std::int64_t> d;
+    for (const auto& s : samples_) {
+      if (!keep(s)) continue;
+      std::int64_t v = iv(s, x) - (y == SIZE_MAX ? 0 : iv(s, y));
+      if (d && *d != v) return std::nullopt;
+      d = v;
+    }
+    return d;
+  }
+
+  void pairs() {
+    for (std::size_t a = 0; a < ints_.size(); ++a)
+      for (std::size_t b = a + 1; b < ints_.size(); ++b) {
+        std::size_t x = ints_[a], y = ints_[b];
+        if (auto d = constant_difference(x, y, [](const Sample&) { return true; })) {
+          add(var(x) == var(y) + num(*d));
+          continue;
+        }
+        std::int64_t lo = std::numeric_limits<std::int64_t>::max(), hi = std::numeric_limits<std::int64_t>::min();
+        for (const auto& s : samples_) {
+          lo = std::min(lo, iv(s, x) - iv(s, y));
+          hi = std::max(hi, iv(s, x) - iv(s, y));
+        }
+        add(var(x) <= var(y) + num(hi));
+        add(var(x) >= var(y) + num(lo));
+      }
+  }
+
+  void guarded() {
+    for (std::size_t g : bools_)
+      for (int pol = 1; pol >= 0; --pol) {
+        auto keep = [&](const Sample& s) { return s[g].i == pol; };
+        if (std::none_of(samples_.begin(), samples_.end(), keep)) continue;
+        z3::expr guard = pol ? var(g) : !var(g);
+        for (std::size_t a = 0; a < ints_.size(); ++a) {
+          std::size_t x = ints_[a];
+          bool global = constant_difference(x, SIZE_MAX, [](const Sample&) { return true; }).has_value();
+          if (!global)
+            if (auto c = constant_difference(x, SIZE_MAX, keep)) add(z3::implies(guard, var(x) == num(*c)));
+          for (std::size_t b = a + 1; b < ints_.size(); ++b) {
+            std::size_t y = ints_[b];
+            if (constant_difference(x, y, [](const Sample&) { return true; })) continue;
+            if (auto d = constant_difference(x, y, keep)) add(z3::implies(guard, var(x) == var(y) + num(*d)));
+          }
+        }
+      }
+  }
+
+  void bool_implications() {
+    for (std::size_t a = 0; a < bools_.size(); ++a)
+      for (std::size_t b = a + 1; b < bools_.size(); ++b)
+        for (int pa = 0; pa < 2; ++pa)
+          for (int pb = 0; pb < 2; ++pb) {
+            // The clause (x == pa) or (y == pb) on every sample.
+            bool holds = std::all_of(samples_.begin(), samples_.end(), [&](const Sample& s) {
+              return s[bools_[a]].i == pa || s[bools_[b]].i == pb;
+            });
+            if (!holds) continue;
+            z3::expr la = pa ? var(bools_[a]) : !var(bools_[a]);
+            z3::expr lb = pb ? var(bools_[b]) : !var(bools_[b]);
+            add(la || lb);
+          }
+  }
+
+  const encoder::TransitionSystem& ts_;
+  std::vector<Sample> samples_;
+  const MiningOptions& opt_;
+  Constants k_;
+  std::vector<std::size_t> ints_, bools_;
+  std::vector<z3::expr> out_;
+};
+
+// A candidate, its copy at the cycle whose value decides (0 for initiation,
+// 1 for consecution; made once: renaming is the expensive part on big cones),
+// and its activation literal in cycle 0 (consecution only).
+struct Candidate {
+  z3::expr term;
+  z3::expr decided;
+  std::optional<z3::expr> literal;
+};
+
+// Drops, in order, the candidates false in a model, until a check is unsat.
+// Each round's "some candidate is false" sits behind a fresh literal instead
+// of a push/pop, which keeps the solver's internalised terms.
+void drop_until_unsat(z3::solver& s, std::vector<Candidate>& cands, const Limits& limits) {
+  z3::context& ctx = s.ctx();
+  for (int round = 0;; ++round) {
+    if (limits.over()) throw std::runtime_error("time limit");
+    if (cands.empty()) return;
+    z3::expr_vector some_false(ctx);
+    for (const auto& c : cands) some_false.push_back(!c.decided);
+    z3::expr this_round = ctx.bool_const(("houdini.round." + std::to_string(round) + "." +
+                                          std::to_string(cands.size())).c_str());
+    s.add(z3::implies(this_round, z3::mk_or(some_false)));
+    set_timeout(s, limits);
+    z3::expr_vector assume(ctx);
+    assume.push_back(this_round);
+    for (const auto& c : cands)
+      if (c.literal) assume.push_back(*c.literal);
+    z3::check_result r = s.check(assume);
+    if (r == z3::unsat) return;
+    if (r == z3::unknown) throw std::runtime_error(unknown_reason(s.reason_unknown(), limits));
+    z3::model m = s.get_model();
+    std::vector<Candidate> keep;
+    for (auto& c : cands)
+      if (m.eval(c.decided, true).is_true()) keep.push_back(std::move(c));
+    s.add(!this_round);
+    cands = std::move(keep);
+  }
+}
+
+// Every Bool atom over Float32 terms (comparisons of analog inputs with
+// limits, equalities of simulated values) replaced by a fresh Bool: an
+// over-approximation of the transition relation, so whatever is inductive for
+// it is inductive for the system. The candidates speak only of Int and Bool
+// state, and without the floats each Houdini round is a small SAT/LIA query
+// instead of a bit-blasted one (27 s -> well under a second on a 191-variable
+// cone of a 128 x 128 matrix).
+class FloatAbstraction {
+ public:
+  explicit FloatAbstraction(z3::context& ctx) : ctx_(ctx) {}
+
+  z3::expr operator()(const z3::expr& e) {
+    auto it = memo_.find(e.id());
+    if (it != memo_.end()) return it->second;
+    z3::expr out = e;
+    if (e.is_app() && e.num_args() > 0) {
+      bool float_atom = false;
+      if (e.is_bool())
+        for (unsigned i = 0; i < e.num_args(); ++i) float_atom = float_atom || e.arg(i).is_fpa();
+      if (float_atom) {
+        out = ctx_.bool_const(("houdini.float_atom." + std::to_string(memo_.size())).c_str());
+      } else if (!e.is_fpa()) {
+        z3::expr_vector args(ctx_);
+        bool changed = false;
+        for (unsigned i = 0; i < e.num_args(); ++i) {
+          args.push_back((*this)(e.arg(i)));
+          changed = changed || !z3::eq(args.back(), e.arg(i));
+        }
+        if (changed) out = e.decl()(args);
+      }
+    }
+    memo_.emplace(e.id(), out);
+    return out;
+  }
+
+ private:
+  z3::context& ctx_;
+  std::unordered_map<unsigned, z3::expr> memo_;
+};
+
+}  // namespace
+
+std::vector<z3::expr> mine_candidates(const SafetyProblem& problem, const MiningOptions& options) {
+  std::vector<Sample> samples;
+  try {
+    samples = simulate(problem, options);
+  } catch (const std::logic_error&) {
+    return {};  // an operator the Evaluator does not interpret: no samples, no candidates
+  }
+  return CandidateMiner(problem, std::move(samples), options).mine();
+}
+
+std::vector<z3::expr> houdini(const SafetyProblem& problem, std::vector<z3::expr> candidates,
+                              const Limits& limits) {
+  const auto& ts = *problem.ts;
+  z3::context& ctx = ts.ctx();
+  encoder::Unroller u(ts);
+  Watchdog watchdog(ctx, limits);
+  FloatAbstraction abstract(ctx);
+  std::vector<Candidate> cands;
+  for (const auto& c : candidates) cands.push_back(Candidate{c, u.at(c, 0), std::nullopt});
+  // Initiation: drop what the initial state violates.
+  {
+    z3::solver s(ctx);
+    s.add(abstract(u.at(ts.init_formula(), 0)));
+    drop_until_unsat(s, cands, limits);
+  }
+  // Consecution: candidates of cycle 0 (each behind an activation literal)
+  // and one transition; drop what the post-state violates.
+  z3::solver s(ctx);
+  s.add(abstract(u.at(ts.constraint_formula() && problem.assumption && ts.trans_formula(), 0)));
+  for (std::size_t i = 0; i < cands.size(); ++i) {
+    z3::expr l = ctx.bool_const(("houdini.cand." + std::to_string(i)).c_str());
+    s.add(z3::implies(l, cands[i].decided));
+    cands[i].literal = l;
+    cands[i].decided = u.at(cands[i].term, 1);
+  }
+  drop_until_unsat(s, cands, limits);
+  std::vector<z3::expr> kept;
+  for (const auto& c : cands) kept.push_back(c.term);
+  return kept;
+}
+
+namespace {
+
+// Two rounds: the counter relations alone (cheap: few candidates), and only
+// if induction fails with them, the Bool clauses as well.
+class InvariantProver : public Prover {
+ public:
+  std::string name() const override { return "invariants+induction"; }
+  ProverResult prove(const SafetyProblem& problem, const Limits& limits) override {
+    KInductionOptions o;
+    o.mine_invariants = true;
+    o.simple_path = false;
+    o.max_k = 1;
+    o.method = name();
+    o.bool_implications = false;
+    ProverResult r = KInduction(o).prove(problem, limits);
+    if (r.verdict != Verdict::Unknown || r.reason != "bound reached") return r;
+    o.bool_implications = true;
+    ProverResult second = KInduction(o).prove(problem, limits);
+    second.seconds += r.seconds;
+    return second;
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Prover> make_invariant_prover() { return std::make_unique<InvariantProver>(); }
+
+}  // namespace cemv::checker

@@ -1,0 +1,195 @@
+#include "checker/engines/portfolio.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <condition_variable>
+#include <exception>
+#include <mutex>
+#include <optional>
+#include <stdexcept>
+#include <thread>
+
+#include "checker/check/recheck.hpp"
+#include "checker/engines/accelerated_bmc.hpp"
+#include "checker/engines/bmc.hpp"
+#include "checker/engines/invariants.hpp"
+#include "checker/engines/kinduction.hpp"
+#include "checker/engines/pdr.hpp"
+#include "checker/engines/solving.hpp"
+#include "checker/trace_shrink.hpp"
+
+namespace cemv::checker {
+
+std::unique_ptr<Prover> make_prover(const std::string& name, int max_k) {
+  if (name == "bmc") return std::make_unique<Bmc>();
+  if (name == "k-induction") {
+    KInductionOptions o;
+    o.max_k = max_k;
+    return std::make_unique<KInduction>(o);
+  }
+  if (name == "invariants+induction") return make_invariant_prover();
+  if (name == "pdr") return std::make_unique<Pdr>();
+  if (name == "accelerated-bmc") return std::make_unique<AcceleratedBmc>();
+  throw std::invalid_argument("unknown engine " + name);
+}
+
+namespace {
+
+const std::vector<std::string> kProofOrder{"invariants+induction", "k-induction", "pdr"};
+
+int proof_rank(const std::string& engine) {
+  auto it = std::find(kProofOrder.begin(), kProofOrder.end(), engine);
+  return it == kProofOrder.end() ? -1 : static_cast<int>(it - kProofOrder.begin());
+}
+
+// One engine's thread and what it reported.
+struct Lane {
+  std::string engine;
+  std::atomic<bool> cancel{false};
+  std::optional<ProverResult> result;
+  std::exception_ptr error;
+  std::thread thread;
+};
+
+}  // namespace
+
+Portfolio::Portfolio(ProblemFactory make, PortfolioOptions options)
+    : make_(std::move(make)), options_(std::move(options)) {}
+
+ProverResult Portfolio::run(const Limits& limits) {
+  const auto start = std::chrono::steady_clock::now();
+  std::mutex mutex;
+  std::condition_variable changed;
+  std::vector<std::unique_ptr<Lane>> lanes;
+  for (const auto& name : options_.engines) {
+    make_prover(name);  // unknown names fail here, before any thread starts
+    auto lane = std::make_unique<Lane>();
+    lane->engine = name;
+    lanes.push_back(std::move(lane));
+  }
+  for (auto& lane_ptr : lanes) {
+    Lane* lane = lane_ptr.get();
+    lane->thread = std::thread([&, lane] {
+      std::optional<ProverResult> r;
+      std::exception_ptr error;
+      try {
+        z3::context ctx;
+        OwnedProblem owned = make_(ctx);
+        Limits mine = limits;
+        mine.cancel = &lane->cancel;
+        r = make_prover(lane->engine, options_.max_k)->prove(owned.problem, mine);
+      } catch (...) {
+        error = std::current_exception();
+      }
+      std::lock_guard<std::mutex> lock(mutex);
+      lane->result = std::move(r);
+      lane->error = error;
+      changed.notify_all();
+    });
+  }
+  auto finished = [](const Lane& l) { return l.result.has_value() || l.error; };
+  auto find = [&](const std::string& name) -> Lane* {
+    for (auto& l : lanes)
+      if (l->engine == name) return l.get();
+    return nullptr;
+  };
+
+  std::optional<ProverResult> answer;
+  {
+    std::unique_lock<std::mutex> lock(mutex);
+    std::vector<std::string> stopped;  // engines cancelled because their answer no longer matters
+    for (;;) {
+      // A falsification decides; prefer BMC's shortest counterexample.
+      Lane* falsifier = nullptr;
+      for (auto& l : lanes)
+        if (l->result && l->result->verdict == Verdict::Falsified) {
+          falsifier = l.get();
+          break;
+        }
+      if (falsifier) {
+        Lane* bmc = find("bmc");
+        for (auto& l : lanes)
+          if (l.get() != bmc) l->cancel = true;
+        if (falsifier == bmc || !bmc) {
+          answer = falsifier->result;
+          break;
+        }
+        if (bmc->result && bmc->result->verdict == Verdict::Falsified) {
+          answer = bmc->result;
+          break;
+        }
+        const bool bmc_can_reach = static_cast<int>(falsifier->result->cex.length()) - 1 <= limits.max_depth;
+        if (!bmc_can_reach || finished(*bmc)) {
+          bmc->cancel = true;
+          answer = falsifier->result;
+          break;
+        }
+        changed.wait(lock);
+        continue;
+      }
+      // A proof decides once every engine preferred to it has finished.
+      std::optional<int> best;
+      for (auto& l : lanes) {
+        int rank = proof_rank(l->engine);
+        if (l->result && l->result->verdict == Verdict::Proved && rank >= 0 && (!best || rank < *best)) best = rank;
+      }
+      if (best) {
+        bool waiting = false;
+        for (auto& l : lanes) {
+          int rank = proof_rank(l->engine);
+          if (rank >= 0 && rank < *best && !finished(*l)) waiting = true;
+          else if (rank < 0 || rank > *best) l->cancel = true;
+        }
+        if (!waiting) {
+          answer = find(kProofOrder[*best])->result;
+          break;
+        }
+      }
+      bool errors = false;
+      if (std::all_of(lanes.begin(), lanes.end(), [&](const auto& l) { return finished(*l); })) break;
+      for (auto& l : lanes) errors = errors || l->error;
+      if (errors) break;
+      changed.wait(lock);
+    }
+    for (auto& l : lanes) l->cancel = true;
+  }
+  for (auto& l : lanes) l->thread.join();
+  for (auto& l : lanes)
+    if (l->error) {
+      try {
+        std::rethrow_exception(l->error);
+      } catch (const std::exception& e) {
+        throw InternalError("engine " + l->engine + " failed: " + e.what());
+      }
+    }
+  // Two engines contradicting each other means one of them (or Z3) is wrong.
+  for (auto& l : lanes)
+    if (answer && l->result && l->result->verdict != Verdict::Unknown && l->result->verdict != answer->verdict)
+      throw InternalError("engines disagree: " + answer->method + " says " + to_string(answer->verdict) + ", " +
+                          l->engine + " says " + to_string(l->result->verdict));
+  if (!answer) {
+    // Nobody decided: say why, the most telling reason first.
+    ProverResult r;
+    r.method = "portfolio";
+    bool memory = false, all_bounds = true;
+    for (auto& l : lanes) {
+      if (!l->result) continue;
+      memory = memory || l->result->reason == "memory limit";
+      all_bounds = all_bounds && l->result->reason == "bound reached";
+    }
+    r.reason = limits.over() ? "time limit" : memory ? "memory limit" : all_bounds ? "bound reached" : "time limit";
+    r.seconds = seconds_since(start);
+    return r;
+  }
+  if (answer->verdict == Verdict::Falsified) {
+    z3::context ctx;
+    OwnedProblem owned = make_(ctx);
+    answer->cex = shrink_counterexample(owned.problem, answer->cex);
+    answer->k = static_cast<int>(answer->cex.length()) - 1;
+  }
+  if (options_.recheck) check::recheck(make_, *answer);
+  answer->seconds = seconds_since(start);
+  return *answer;
+}
+
+}  // namespace cemv::checker

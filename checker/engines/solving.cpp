@@ -1,0 +1,127 @@
+#include "checker/engines/solving.hpp"
+
+#include <bit>
+#include <cstring>
+#include <limits>
+
+namespace cemv::checker {
+
+Watchdog::Watchdog(z3::context& ctx, const Limits& limits)
+    : ctx_(ctx), limits_(limits), thread_([this] { watch(); }) {}
+
+Watchdog::~Watchdog() {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    done_ = true;
+  }
+  wake_.notify_all();
+  thread_.join();
+  // Z3_interrupt leaves the context's resource limit cancelled until the next
+  // solver check starts: until then every simplification throws "canceled",
+  // and destroying a fixedpoint (Spacer) throws out of a Z3 destructor, which
+  // is std::terminate (seen with Z3 4.8.12). A check of an empty solver
+  // clears it.
+  if (fired_) {
+    try {
+      z3::solver(ctx_).check();
+    } catch (const z3::exception&) {
+    }
+  }
+}
+
+void Watchdog::watch() {
+  std::unique_lock<std::mutex> lock(mutex_);
+  while (!done_) {
+    wake_.wait_for(lock, std::chrono::milliseconds(10));
+    if (!done_ && limits_.over()) {
+      ctx_.interrupt();
+      fired_ = true;
+    }
+  }
+}
+
+void set_timeout(z3::solver& s, const Limits& limits) {
+  auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+      limits.deadline - std::chrono::steady_clock::now());
+  long long ms = left.count();
+  if (limits.deadline == std::chrono::steady_clock::time_point::max() || ms > 4000000000LL) return;
+  z3::params p(s.ctx());
+  p.set("timeout", static_cast<unsigned>(ms < 1 ? 1 : ms));
+  s.set(p);
+}
+
+std::string unknown_reason(const std::string& z3_reason, const Limits& limits) {
+  if (limits.over()) return "time limit";
+  if (z3_reason.find("memory") != std::string::npos) return "memory limit";
+  if (z3_reason.find("timeout") != std::string::npos || z3_reason.find("canceled") != std::string::npos)
+    return "time limit";
+  return z3_reason.empty() ? "solver gave up" : z3_reason;
+}
+
+Value value_in(const z3::model& m, const z3::expr& e) {
+  z3::expr v = m.eval(e, true);
+  Value out;
+  if (e.is_bool()) {
+    out.i = v.is_true() ? 1 : 0;
+  } else if (e.is_int()) {
+    out.i = v.get_numeral_int64();
+  } else if (e.is_fpa()) {
+    out.is_float = true;
+    // A NaN has no one bit pattern in SMT-LIB (only unconstrained states of an
+    // inductive step hold one; inputs exclude NaN).
+    if (Z3_fpa_is_numeral_nan(e.ctx(), v)) {
+      out.f = std::numeric_limits<float>::quiet_NaN();
+      return out;
+    }
+    // The IEEE bit pattern of the numeral, as the runtime's float holds it.
+    z3::expr bits(e.ctx(), Z3_mk_fpa_to_ieee_bv(e.ctx(), v));
+    std::uint64_t u = bits.simplify().get_numeral_uint64();
+    out.f = std::bit_cast<float>(static_cast<std::uint32_t>(u));
+  } else {
+    throw std::logic_error("value_in: unsupported sort of " + e.to_string());
+  }
+  return out;
+}
+
+Trace trace_from_model(const encoder::TransitionSystem& ts, encoder::Unroller& u,
+                       const z3::model& m, int last) {
+  Trace t;
+  for (const auto& i : ts.inputvars()) t.input_names.push_back(i.name);
+  for (const auto& s : ts.statevars()) t.state_names.push_back(s.name);
+  for (int k = 0; k <= last; ++k) {
+    Trace::Cycle c;
+    for (const auto& i : ts.inputvars()) c.inputs.push_back(value_in(m, u.var_at(i.var, k)));
+    for (const auto& s : ts.statevars()) c.state.push_back(value_in(m, u.var_at(s.var, k)));
+    t.cycles.push_back(std::move(c));
+  }
+  return t;
+}
+
+std::string to_smtlib(const z3::expr& e) {
+  // Z3 prints terms in SMT-LIB syntax and quotes symbols such as
+  // |cause[1].active|; let-bindings are avoided for short terms.
+  return e.to_string();
+}
+
+z3::expr from_smtlib(const encoder::TransitionSystem& ts, const std::string& term) {
+  z3::context& ctx = ts.ctx();
+  z3::sort_vector sorts(ctx);
+  z3::func_decl_vector decls(ctx);
+  for (const auto& s : ts.statevars()) decls.push_back(s.var.decl());
+  for (const auto& i : ts.inputvars()) decls.push_back(i.var.decl());
+  z3::expr_vector parsed = ctx.parse_string(("(assert " + term + ")").c_str(), sorts, decls);
+  if (parsed.size() != 1) throw InternalError("cannot read invariant clause: " + term);
+  return parsed[0];
+}
+
+z3::expr invariant_term(const encoder::TransitionSystem& ts, const Invariant& inv) {
+  z3::expr_vector parts(ts.ctx());
+  for (const auto& c : inv.clauses) parts.push_back(from_smtlib(ts, c));
+  return parts.empty() ? ts.ctx().bool_val(true) : z3::mk_and(parts);
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace cemv::checker

@@ -1,0 +1,184 @@
+// The re-checks themselves: a wrong answer must raise InternalError (never
+// pass), and a right proof's obligations, exported as SMT-LIB, are unsat for
+// a second solver (cvc5) too.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+
+#include "checker/check/recheck.hpp"
+#include "checker/engines/bmc.hpp"
+#include "checker/engines/invariants.hpp"
+#include "checker/engines/kinduction.hpp"
+#include "tests/checker/problems.hpp"
+
+using namespace cemv;
+using namespace cemv::checker;
+
+namespace {
+
+ProverResult solve(Prover& prover, const fixtures::NamedProblem& p) {
+  z3::context ctx;
+  OwnedProblem o = p.make(ctx);
+  return prover.prove(o.problem, Limits::within(std::chrono::seconds(30), 30));
+}
+
+TEST(Recheck, AcceptsTheHippsOverrideProof) {
+  auto p = fixtures::override_instance_monitor(18000, Verdict::Proved);
+  ProverResult r = solve(*make_invariant_prover(), p);
+  ASSERT_EQ(r.verdict, Verdict::Proved) << r.reason;
+  EXPECT_NO_THROW(check::recheck_proof(p.make, r));
+}
+
+TEST(Recheck, RejectsAProofWhoseInvariantIsWeakened) {
+  auto p = fixtures::override_instance_monitor(18000, Verdict::Proved);
+  ProverResult r = solve(*make_invariant_prover(), p);
+  ASSERT_EQ(r.verdict, Verdict::Proved) << r.reason;
+  // Drop the relation between the monitor and the override timer.
+  std::vector<std::string> kept;
+  for (const auto& c : r.invariant.clauses)
+    if (c.find("override.elapsed") == std::string::npos || c.find("monitor") == std::string::npos) kept.push_back(c);
+  ASSERT_LT(kept.size(), r.invariant.clauses.size());
+  r.invariant.clauses = kept;
+  EXPECT_THROW(check::recheck_proof(p.make, r), InternalError);
+}
+
+TEST(Recheck, RejectsAnInvariantThatIsNotInductive) {
+  auto p = fixtures::guarded_counter(3);
+  ProverResult r = solve(*make_invariant_prover(), p);
+  ASSERT_EQ(r.verdict, Verdict::Proved) << r.reason;
+  r.invariant.clauses.push_back("(<= x 1)");  // true initially, not preserved
+  EXPECT_THROW(check::recheck_proof(p.make, r), InternalError);
+}
+
+TEST(Recheck, RejectsAProofOfAFalseProperty) {
+  auto p = fixtures::guarded_counter(2);
+  ProverResult forged;
+  forged.verdict = Verdict::Proved;
+  forged.method = "forged";
+  forged.k = 2;
+  EXPECT_THROW(check::recheck_proof(p.make, forged), InternalError);
+}
+
+// k-induction needs its lazily added simple-path constraints here, and the
+// re-check must use them too (without them the step is sat).
+TEST(Recheck, SimplePathProofOfTheLasso) {
+  auto p = fixtures::lasso();
+  KInductionOptions plain;
+  plain.mine_invariants = false;
+  KInduction with_simple_path(plain);
+  ProverResult r = solve(with_simple_path, p);
+  ASSERT_EQ(r.verdict, Verdict::Proved) << r.reason;
+  EXPECT_TRUE(r.simple_path);
+  EXPECT_EQ(r.k, 2);
+  EXPECT_NO_THROW(check::recheck_proof(p.make, r));
+  r.simple_path = false;
+  EXPECT_THROW(check::recheck_proof(p.make, r), InternalError);
+
+  plain.simple_path = false;
+  KInduction without(plain);
+  ProverResult u = solve(without, p);
+  EXPECT_EQ(u.verdict, Verdict::Unknown);
+  EXPECT_EQ(u.reason, "bound reached");
+}
+
+TEST(Replay, AcceptsABmcCounterexample) {
+  auto p = fixtures::saturating_counter(10, 4);
+  Bmc bmc;
+  ProverResult r = solve(bmc, p);
+  ASSERT_EQ(r.verdict, Verdict::Falsified);
+  EXPECT_NO_THROW(check::replay_counterexample(p.make, r.cex));
+}
+
+TEST(Replay, RejectsACounterexampleWithAChangedInput) {
+  auto p = fixtures::saturating_counter(10, 4);
+  Bmc bmc;
+  ProverResult r = solve(bmc, p);
+  ASSERT_EQ(r.verdict, Verdict::Falsified);
+  ASSERT_EQ(r.cex.length(), 6u);
+  r.cex.cycles[2].inputs[0].i = 0;  // `go` false resets the counter
+  EXPECT_THROW(check::replay_counterexample(p.make, r.cex), InternalError);
+}
+
+TEST(Replay, RejectsATruncatedCounterexample) {
+  auto p = fixtures::guarded_counter(2);
+  Bmc bmc;
+  ProverResult r = solve(bmc, p);
+  ASSERT_EQ(r.verdict, Verdict::Falsified);
+  EXPECT_NO_THROW(check::replay_counterexample(p.make, r.cex));
+  r.cex.cycles.pop_back();
+  EXPECT_THROW(check::replay_counterexample(p.make, r.cex), InternalError);
+}
+
+TEST(Replay, RejectsATraceWhoseStatesDisagreeWithTheFormulas) {
+  auto p = fixtures::example_term("tank-overfill", {model::Node{model::Node::Kind::Effect, 1}}, "effect[1].active",
+                                  true, Verdict::Falsified, 1);
+  Bmc bmc;
+  ProverResult r = solve(bmc, p);
+  ASSERT_EQ(r.verdict, Verdict::Falsified);
+  EXPECT_NO_THROW(check::replay_counterexample(p.make, r.cex));
+  r.cex.cycles[0].state[0].i ^= 1;  // first_cycle
+  EXPECT_THROW(check::replay_counterexample(p.make, r.cex), InternalError);
+}
+
+// A property the Evaluator cannot compute (multiplication is no operator the
+// encoder emits): its counterexample cannot be re-checked, so it is an
+// internal error, not a verdict.
+TEST(Replay, RefusesWhatItCannotResimulate) {
+  auto p = fixtures::saturating_counter(10, 4);
+  p.make = [inner = p.make](z3::context& ctx) {
+    OwnedProblem o = inner(ctx);
+    z3::expr x = *o.problem.ts->statevar("x");
+    o.problem.good = x * x <= 16;
+    return o;
+  };
+  Bmc bmc;
+  ProverResult r = solve(bmc, p);
+  ASSERT_EQ(r.verdict, Verdict::Falsified);
+  EXPECT_THROW(check::replay_counterexample(p.make, r.cex), InternalError);
+}
+
+std::string run(const std::string& cmd) {
+  std::string out;
+  std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(cmd.c_str(), "r"), pclose);
+  if (!pipe) return out;
+  char buf[256];
+  while (fgets(buf, sizeof buf, pipe.get())) out += buf;
+  return out;
+}
+
+// The base case and inductive step of real proofs, confirmed by cvc5.
+TEST(SmtlibExport, Cvc5ConfirmsTheProofObligations) {
+  struct Item {
+    fixtures::NamedProblem problem;
+    std::unique_ptr<Prover> prover;
+  };
+  std::vector<Item> items;
+  items.push_back({fixtures::override_instance_monitor(18000, Verdict::Proved), make_invariant_prover()});
+  items.push_back({fixtures::guarded_counter(3), std::make_unique<KInduction>()});
+  items.push_back({fixtures::saturating_counter(10, 10), std::make_unique<KInduction>()});
+  auto dir = std::filesystem::temp_directory_path() / ("cemv_checker_smt_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  int confirmed = 0;
+  for (auto& item : items) {
+    z3::context ctx;
+    OwnedProblem o = item.problem.make(ctx);
+    ProverResult r = item.prover->prove(o.problem, Limits::within(std::chrono::seconds(30), 10));
+    ASSERT_EQ(r.verdict, Verdict::Proved) << item.problem.name << " " << r.reason;
+    auto obligations = check::proof_obligations_smtlib(o.problem, r);
+    ASSERT_GE(obligations.size(), 3u);
+    for (const auto& ob : obligations) {
+      auto file = dir / (item.problem.name + "." + ob.name + ".smt2");
+      std::ofstream(file) << ob.script;
+      std::string out = run("cvc5 --lang smt2 " + file.string() + " 2>&1");
+      EXPECT_EQ(out.substr(0, out.find('\n')), "unsat") << item.problem.name << " " << ob.name << "\n" << out;
+      ++confirmed;
+    }
+  }
+  std::filesystem::remove_all(dir);
+  EXPECT_GE(confirmed, 9);
+}
+
+}  // namespace

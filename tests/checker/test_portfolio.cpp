@@ -1,0 +1,93 @@
+// The portfolio: the engines race in their own contexts, yet the answer is
+// the deterministic one (BMC's shortest counterexample, the preferred proof),
+// re-checked, and on time.
+#include <gtest/gtest.h>
+
+#include <chrono>
+
+#include "checker/engines/portfolio.hpp"
+#include "tests/checker/problems.hpp"
+
+using namespace cemv;
+using namespace cemv::checker;
+
+namespace {
+
+ProverResult race(const fixtures::NamedProblem& p, std::chrono::milliseconds budget = std::chrono::seconds(30)) {
+  Portfolio portfolio(p.make);
+  return portfolio.run(Limits::within(budget, 40));
+}
+
+std::size_t nonzero_inputs(const Trace& t) {
+  std::size_t n = 0;
+  for (const auto& c : t.cycles)
+    for (const auto& v : c.inputs) n += v.i != 0 || v.f != 0.0f;
+  return n;
+}
+
+// Its speed is a benchmark figure (cemv_checker_measure), not asserted here.
+TEST(Portfolio, ProvesTheHippsOverrideBoundByInvariants) {
+  ProverResult r = race(fixtures::override_instance_monitor(18000, Verdict::Proved));
+  ASSERT_EQ(r.verdict, Verdict::Proved) << r.reason;
+  EXPECT_EQ(r.method, "invariants+induction");
+  EXPECT_EQ(r.k, 0);
+  bool relates_monitor_and_timer = false;
+  for (const auto& c : r.invariant.clauses)
+    relates_monitor_and_timer = relates_monitor_and_timer || (c.find("monitor.override_held") != std::string::npos &&
+                                                              c.find("override.elapsed") != std::string::npos);
+  EXPECT_TRUE(relates_monitor_and_timer) << r.invariant.text();
+}
+
+TEST(Portfolio, RefutesTheBoundOneCycleTooTightWithALongCounterexample) {
+  ProverResult r = race(fixtures::override_instance_monitor(17999, Verdict::Falsified));
+  ASSERT_EQ(r.verdict, Verdict::Falsified) << r.reason;
+  EXPECT_EQ(r.method, "accelerated-bmc");
+  EXPECT_GE(r.cex.length(), 18001u);
+}
+
+TEST(Portfolio, ReportsBmcsShortestCounterexampleWithOnlyTheInputsItNeeds) {
+  ProverResult r = race(fixtures::guarded_counter(2));
+  ASSERT_EQ(r.verdict, Verdict::Falsified) << r.reason;
+  EXPECT_EQ(r.method, "bmc");
+  EXPECT_EQ(r.cex.length(), 4u);
+  // `start` in cycle 0 is all the counter needs.
+  EXPECT_EQ(r.cex.input(0, "start").i, 1);
+  EXPECT_EQ(nonzero_inputs(r.cex), 1u);
+}
+
+TEST(Portfolio, SameProblemSameAnswer) {
+  auto tank = fixtures::example_term("tank-overfill", {model::Node{model::Node::Kind::Effect, 1}},
+                                     "effect[1].active", true, Verdict::Falsified, 1);
+  ProverResult a = race(tank), b = race(tank);
+  ASSERT_EQ(a.verdict, Verdict::Falsified);
+  EXPECT_EQ(a.method, b.method);
+  ASSERT_EQ(a.cex.length(), b.cex.length());
+  for (std::size_t c = 0; c < a.cex.length(); ++c) {
+    EXPECT_EQ(a.cex.cycles[c].inputs, b.cex.cycles[c].inputs) << "cycle " << c;
+    EXPECT_EQ(a.cex.cycles[c].state, b.cex.cycles[c].state) << "cycle " << c;
+  }
+  auto proof = fixtures::override_instance_monitor(18000, Verdict::Proved);
+  ProverResult p = race(proof), q = race(proof);
+  ASSERT_EQ(p.verdict, Verdict::Proved);
+  EXPECT_EQ(p.method, q.method);
+  EXPECT_EQ(p.k, q.k);
+  EXPECT_EQ(p.invariant.clauses, q.invariant.clauses);
+}
+
+TEST(Portfolio, EndsOnTimeWhenNothingDecides) {
+  auto t0 = std::chrono::steady_clock::now();
+  ProverResult r = race(fixtures::edge_counter(), std::chrono::milliseconds(1500));
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_EQ(r.verdict, Verdict::Unknown);
+  EXPECT_EQ(r.reason, "time limit");
+  EXPECT_LT(seconds, 4.0);  // 1.5 s budget; the margin is for a loaded 2-core machine
+}
+
+TEST(Portfolio, RejectsAnUnknownEngine) {
+  PortfolioOptions o;
+  o.engines = {"bmc", "magic"};
+  Portfolio portfolio(fixtures::guarded_counter(2).make, o);
+  EXPECT_THROW(portfolio.run(Limits::within(std::chrono::seconds(5))), std::invalid_argument);
+}
+
+}  // namespace
