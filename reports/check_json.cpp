@@ -10,7 +10,7 @@ namespace cemv::reports {
 namespace {
 
 using nlohmann::ordered_json;
-using checker::Verdict;
+using checker::PropertyVerdict;
 
 ordered_json support_json(const std::vector<checker::SupportElement>& elements) {
   ordered_json a = ordered_json::array();
@@ -40,7 +40,7 @@ ordered_json property_json(const checker::PropertyResult& p) {
   j["notes"] = p.notes;
   j["elements"] = property_elements(p);
   j["support"] = support_json(p.support);
-  j["support_minimal"] = p.verdict == Verdict::Proved ? ordered_json(p.support_minimal) : ordered_json();
+  j["support_minimal"] = p.verdict == PropertyVerdict::Proved ? ordered_json(p.support_minimal) : ordered_json();
   j["invariant"] = optional_text(p.invariant);
   j["scenario"] = optional_text(p.scenario_file);
   j["violation_cycle"] = p.violation_cycle >= 0 ? ordered_json(p.violation_cycle) : ordered_json();
@@ -62,7 +62,7 @@ std::string check_json(const checker::CheckResult& r, const CheckReportInputs& i
   ordered_json summary;
   summary["properties"] = r.properties.size();
   for (std::size_t v = 0; v < counts.size(); ++v)
-    summary[verdict_name(static_cast<Verdict>(v))] = counts[v];
+    summary[verdict_name(static_cast<PropertyVerdict>(v))] = counts[v];
   j["summary"] = summary;
   ordered_json props = ordered_json::array();
   for (const auto& p : r.properties) props.push_back(property_json(p));

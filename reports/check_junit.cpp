@@ -13,7 +13,7 @@ namespace cemv::reports {
 namespace {
 
 using checker::PropertyResult;
-using checker::Verdict;
+using checker::PropertyVerdict;
 
 // Length of the valid UTF-8 sequence at s[i] and its code point, or 0.
 std::size_t utf8_sequence(std::string_view s, std::size_t i, std::uint32_t& cp) {
@@ -94,10 +94,10 @@ std::string detail_text(const PropertyResult& p) {
 
 std::string check_junit(const checker::CheckResult& r, const CheckReportInputs& in) {
   auto counts = verdict_counts(r);
-  int failures = counts[static_cast<std::size_t>(Verdict::Falsified)] +
-                 counts[static_cast<std::size_t>(Verdict::Unreachable)] +
-                 counts[static_cast<std::size_t>(Verdict::Vacuous)];
-  int errors = counts[static_cast<std::size_t>(Verdict::Unknown)];
+  int failures = counts[static_cast<std::size_t>(PropertyVerdict::Falsified)] +
+                 counts[static_cast<std::size_t>(PropertyVerdict::Unreachable)] +
+                 counts[static_cast<std::size_t>(PropertyVerdict::Vacuous)];
+  int errors = counts[static_cast<std::size_t>(PropertyVerdict::Unknown)];
   std::string totals = " tests=\"" + std::to_string(r.properties.size()) + "\" failures=\"" +
                        std::to_string(failures) + "\" errors=\"" + std::to_string(errors) + "\"";
   std::ostringstream out;
@@ -124,7 +124,7 @@ std::string check_junit(const checker::CheckResult& r, const CheckReportInputs& 
     if (is_failure(p.verdict))
       out << "      <failure type=\"" << verdict_name(p.verdict) << "\" message=\"" << message
           << "\">" << body << "</failure>\n";
-    else if (p.verdict == Verdict::Unknown)
+    else if (p.verdict == PropertyVerdict::Unknown)
       out << "      <error type=\"unknown\" message=\"" << message << "\">" << body << "</error>\n";
     else
       out << "      <system-out>" << body << "</system-out>\n";

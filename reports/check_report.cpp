@@ -10,7 +10,7 @@
 
 namespace cemv::reports {
 
-using checker::Verdict;
+using checker::PropertyVerdict;
 
 std::optional<CheckFormat> check_format_from_string(std::string_view name) {
   if (name == "text") return CheckFormat::Text;
@@ -31,20 +31,20 @@ std::string check_report(const checker::CheckResult& r, const CheckReportInputs&
   return {};
 }
 
-const char* verdict_name(Verdict v) {
+const char* verdict_name(PropertyVerdict v) {
   switch (v) {
-    case Verdict::Proved: return "proved";
-    case Verdict::Falsified: return "falsified";
-    case Verdict::Reachable: return "reachable";
-    case Verdict::Unreachable: return "unreachable";
-    case Verdict::Vacuous: return "vacuous";
-    case Verdict::Unknown: return "unknown";
+    case PropertyVerdict::Proved: return "proved";
+    case PropertyVerdict::Falsified: return "falsified";
+    case PropertyVerdict::Reachable: return "reachable";
+    case PropertyVerdict::Unreachable: return "unreachable";
+    case PropertyVerdict::Vacuous: return "vacuous";
+    case PropertyVerdict::Unknown: return "unknown";
   }
   return "unknown";
 }
 
-bool is_failure(Verdict v) {
-  return v == Verdict::Falsified || v == Verdict::Unreachable || v == Verdict::Vacuous;
+bool is_failure(PropertyVerdict v) {
+  return v == PropertyVerdict::Falsified || v == PropertyVerdict::Unreachable || v == PropertyVerdict::Vacuous;
 }
 
 std::array<int, 6> verdict_counts(const checker::CheckResult& r) {
@@ -82,14 +82,14 @@ std::string outcome_text(const checker::PropertyResult& p) {
   std::string at = p.violation_cycle >= 0 ? " at cycle " + std::to_string(p.violation_cycle + 1)
                                           : std::string();
   switch (p.verdict) {
-    case Verdict::Proved: return "proved" + by_method(p);
-    case Verdict::Falsified:
+    case PropertyVerdict::Proved: return "proved" + by_method(p);
+    case PropertyVerdict::Falsified:
       return "falsified" + at + (p.method.empty() ? "" : " (found by " + p.method + ")");
-    case Verdict::Reachable:
+    case PropertyVerdict::Reachable:
       return "reachable, witness" + at + (p.method.empty() ? "" : " (found by " + p.method + ")");
-    case Verdict::Unreachable: return "unreachable" + by_method(p) + with_reason(p);
-    case Verdict::Vacuous: return "vacuous" + with_reason(p);
-    case Verdict::Unknown: return "unknown" + with_reason(p);
+    case PropertyVerdict::Unreachable: return "unreachable" + by_method(p) + with_reason(p);
+    case PropertyVerdict::Vacuous: return "vacuous" + with_reason(p);
+    case PropertyVerdict::Unknown: return "unknown" + with_reason(p);
   }
   return "unknown";
 }

@@ -28,12 +28,12 @@ std::string check_report(const checker::CheckResult& r, const CheckReportInputs&
 
 // The verdict as every output spells it: "proved", "falsified", "reachable",
 // "unreachable", "vacuous", "unknown" (the cemv-result/1 vocabulary).
-const char* verdict_name(checker::Verdict v);
+const char* verdict_name(checker::PropertyVerdict v);
 
 // A verdict that fails the check (exit 1): falsified, unreachable, vacuous.
-bool is_failure(checker::Verdict v);
+bool is_failure(checker::PropertyVerdict v);
 
-// How many properties ended in each verdict, indexed by the Verdict enumerator.
+// How many properties ended in each verdict, indexed by the PropertyVerdict enumerator.
 std::array<int, 6> verdict_counts(const checker::CheckResult& r);
 
 // The matrix elements a property is about, derived from the observables it

@@ -18,10 +18,10 @@ namespace {
 
 using nlohmann::ordered_json;
 using checker::PropertyResult;
-using checker::Verdict;
+using checker::PropertyVerdict;
 
 struct Rule {
-  Verdict verdict;
+  PropertyVerdict verdict;
   const char* id;
   const char* name;
   const char* short_text;
@@ -30,29 +30,29 @@ struct Rule {
 };
 
 const Rule kRules[] = {
-    {Verdict::Falsified, "CEMV-FALSIFIED", "PropertyFalsified",
+    {PropertyVerdict::Falsified, "CEMV-FALSIFIED", "PropertyFalsified",
      "A safety property of the matrix is violated.",
      "The checker found a run of the matrix that violates the property. The run was replayed on "
      "the reference runtime and is saved as a cemv-scenario/1 file: `cemv simulate MATRIX "
      "SCENARIO` shows it cycle by cycle.",
      "error"},
-    {Verdict::Unreachable, "CEMV-UNREACHABLE", "CoverUnreachable",
+    {PropertyVerdict::Unreachable, "CEMV-UNREACHABLE", "CoverUnreachable",
      "A reachable property has no witness: the logic it describes is dead.",
      "No run of the matrix makes the property's condition true, which was proved. The cause, "
      "effect or state it names can never occur.",
      "error"},
-    {Verdict::Vacuous, "CEMV-VACUOUS", "PropertyVacuous",
+    {PropertyVerdict::Vacuous, "CEMV-VACUOUS", "PropertyVacuous",
      "A property holds only vacuously.",
      "The property's assumptions cannot hold together, or the antecedent of its implication or "
      "the trigger of its response can never occur, so proving it says nothing.",
      "error"},
-    {Verdict::Unknown, "CEMV-UNKNOWN", "PropertyUndecided",
+    {PropertyVerdict::Unknown, "CEMV-UNKNOWN", "PropertyUndecided",
      "A property was not decided.",
      "The checker reached a time limit or a bound before it could prove or refute the property.",
      "warning"},
 };
 
-const Rule* rule_for(Verdict v) {
+const Rule* rule_for(PropertyVerdict v) {
   for (const auto& r : kRules)
     if (r.verdict == v) return &r;
   return nullptr;

@@ -13,7 +13,7 @@ namespace cemv::reports {
 namespace {
 
 using checker::PropertyResult;
-using checker::Verdict;
+using checker::PropertyVerdict;
 
 std::string seconds_text(double s) {
   char buf[32];
@@ -36,10 +36,10 @@ std::string place(const PropertyResult& p, const CheckReportInputs& in) {
 }
 
 std::string method_column(const PropertyResult& p) {
-  if (p.verdict == Verdict::Unknown || p.verdict == Verdict::Vacuous)
+  if (p.verdict == PropertyVerdict::Unknown || p.verdict == PropertyVerdict::Vacuous)
     return p.reason.empty() ? std::string("-") : p.reason;
   std::string s = p.method.empty() ? std::string("-") : p.method;
-  if (p.depth > 0) s += (p.verdict == Verdict::Proved || p.verdict == Verdict::Unreachable)
+  if (p.depth > 0) s += (p.verdict == PropertyVerdict::Proved || p.verdict == PropertyVerdict::Unreachable)
                             ? ", k=" + std::to_string(p.depth)
                             : ", " + std::to_string(p.depth) + (p.depth == 1 ? " cycle" : " cycles");
   return s;
@@ -53,16 +53,16 @@ void indented(std::ostringstream& out, const std::string& block, const char* ind
 
 void details(std::ostringstream& out, const PropertyResult& p, const CheckReportInputs& in) {
   for (const auto& n : p.notes) out << "    note: " << n << "\n";
-  if (is_failure(p.verdict) || p.verdict == Verdict::Unknown)
-    out << "    " << place(p, in) << ": " << (p.verdict == Verdict::Unknown ? "warning" : "error")
+  if (is_failure(p.verdict) || p.verdict == PropertyVerdict::Unknown)
+    out << "    " << place(p, in) << ": " << (p.verdict == PropertyVerdict::Unknown ? "warning" : "error")
         << ": property '" << p.name << "' " << outcome_text(p) << "\n";
-  if (p.verdict == Verdict::Proved && !p.support.empty()) {
+  if (p.verdict == PropertyVerdict::Proved && !p.support.empty()) {
     out << "    support (" << (p.support_minimal ? "minimal" : "not minimised") << "):";
     for (const auto& s : p.support) out << " " << s.key;
     out << "\n";
   }
-  if (p.verdict == Verdict::Falsified || p.verdict == Verdict::Reachable) {
-    if (p.verdict == Verdict::Reachable && p.violation_cycle >= 0)
+  if (p.verdict == PropertyVerdict::Falsified || p.verdict == PropertyVerdict::Reachable) {
+    if (p.verdict == PropertyVerdict::Reachable && p.violation_cycle >= 0)
       out << "    witnessed at cycle " << p.violation_cycle + 1 << "\n";
     if (!p.scenario_file.empty()) out << "    scenario: " << p.scenario_file << "\n";
     if (!p.timing_table.empty()) indented(out, p.timing_table, "    ");
@@ -100,7 +100,7 @@ std::string check_text(const checker::CheckResult& r, const CheckReportInputs& i
   const char* sep = ": ";
   for (std::size_t v = 0; v < counts.size(); ++v) {
     if (!counts[v]) continue;
-    out << sep << counts[v] << " " << verdict_name(static_cast<Verdict>(v));
+    out << sep << counts[v] << " " << verdict_name(static_cast<PropertyVerdict>(v));
     sep = ", ";
   }
   out << "; " << seconds_text(total) << " of checking";

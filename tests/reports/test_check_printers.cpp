@@ -15,12 +15,12 @@
 
 using cemv::checker::CheckResult;
 using cemv::checker::PropertyResult;
-using cemv::checker::Verdict;
+using cemv::checker::PropertyVerdict;
 using cemv::reports::CheckFormat;
 
 namespace {
 
-PropertyResult property(std::string name, std::string kind, int line, Verdict v) {
+PropertyResult property(std::string name, std::string kind, int line, PropertyVerdict v) {
   PropertyResult p;
   p.name = std::move(name);
   p.kind = std::move(kind);
@@ -39,7 +39,7 @@ CheckResult sample(double seconds_scale = 1.0) {
   r.property_files = {"examples/tank-overfill/requirements.props"};
   r.shard = "2/3";
 
-  PropertyResult proved = property("req1.overfill_closes_xv101", "response", 12, Verdict::Proved);
+  PropertyResult proved = property("req1.overfill_closes_xv101", "response", 12, PropertyVerdict::Proved);
   proved.description = "2oo3 high level for 2 s closes XV_101 within 500 ms";
   proved.method = "k-induction";
   proved.depth = 3;
@@ -52,7 +52,7 @@ CheckResult sample(double seconds_scale = 1.0) {
   proved.seconds = 0.25 * seconds_scale;
   r.properties.push_back(proved);
 
-  PropertyResult falsified = property("req5.stored_holds", "invariant", 30, Verdict::Falsified);
+  PropertyResult falsified = property("req5.stored_holds", "invariant", 30, PropertyVerdict::Falsified);
   falsified.description = "effect 1 stays active while a cause is active";
   falsified.method = "bmc";
   falsified.depth = 4;
@@ -66,7 +66,7 @@ CheckResult sample(double seconds_scale = 1.0) {
   falsified.seconds = 0.031 * seconds_scale;
   r.properties.push_back(falsified);
 
-  PropertyResult reach = property("req7.effect1_trips", "reachable", 40, Verdict::Reachable);
+  PropertyResult reach = property("req7.effect1_trips", "reachable", 40, PropertyVerdict::Reachable);
   reach.method = "bmc";
   reach.depth = 2;
   reach.violation_cycle = 1;
@@ -76,20 +76,20 @@ CheckResult sample(double seconds_scale = 1.0) {
   reach.seconds = 0.01 * seconds_scale;
   r.properties.push_back(reach);
 
-  PropertyResult dead = property("req7.effect9_resets", "reachable", 41, Verdict::Unreachable);
+  PropertyResult dead = property("req7.effect9_resets", "reachable", 41, PropertyVerdict::Unreachable);
   dead.method = "pdr";
   dead.depth = 1;
   dead.matters = {"effect[9].reset_required"};
   dead.seconds = 0.5 * seconds_scale;
   r.properties.push_back(dead);
 
-  PropertyResult vac = property("req9.when_never", "response", 50, Verdict::Vacuous);
+  PropertyResult vac = property("req9.when_never", "response", 50, PropertyVerdict::Vacuous);
   vac.reason = "the trigger can never hold";
   vac.matters = {"cause[2].active", "effect[2].active"};
   vac.seconds = 0.02 * seconds_scale;
   r.properties.push_back(vac);
 
-  PropertyResult unknown = property("req4.override_1800s", "invariant", 60, Verdict::Unknown);
+  PropertyResult unknown = property("req4.override_1800s", "invariant", 60, PropertyVerdict::Unknown);
   unknown.reason = "time limit";
   unknown.matters = {"effect[4].override_active"};
   unknown.seconds = 10.0 * seconds_scale;
@@ -101,7 +101,7 @@ CheckResult sample(double seconds_scale = 1.0) {
   odd.name = "std.effect[3] <a & \"b\"> 'c'";
   odd.kind = "invariant";
   odd.description = std::string("tab\there, bell\x07, bad byte \xff, newline\nend");
-  odd.verdict = Verdict::Falsified;
+  odd.verdict = PropertyVerdict::Falsified;
   odd.method = "bmc";
   odd.depth = 1;
   odd.violation_cycle = 0;
