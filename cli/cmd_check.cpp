@@ -19,7 +19,7 @@
 #include "cli/commands.hpp"
 #include "cli/matrix_input.hpp"
 #include "cli/output.hpp"
-#include "model/format.hpp"
+#include "formats/matrix_json.hpp"
 #include "properties/parser.hpp"
 #include "properties/standard.hpp"
 #include "reports/check_report.hpp"
@@ -211,7 +211,7 @@ int run_check(const CheckArgs& a) {
 
   checker::CheckResult skeleton;
   skeleton.matrix_name = m.name;
-  skeleton.matrix_signature = model::signature(m);
+  skeleton.matrix_signature = formats::signature(m);
   skeleton.tool_version = CEMV_VERSION;
   for (const auto& f : a.property_files) skeleton.property_files.push_back(input_name(f));
   skeleton.standard = a.standard;
@@ -265,20 +265,25 @@ int run_check(const CheckArgs& a) {
   checker::CheckResult result;
   try {
     result = checker::check(m, files, options);
-  } catch (const checker::InternalError& e) {
+  } catch (const std::exception& e) {
+    // Inputs were checked above, so anything the checker throws is cemv's
+    // fault: a re-check that refuted an answer (InternalError, whose message
+    // carries both sides), or a failure of the engines themselves.
     if (reporting.exchange(true)) for (;;) std::this_thread::sleep_for(std::chrono::hours(1));
-    std::cerr << "internal error: " << e.what()
-              << "\n(cemv refuted one of its own answers; please report this with the files above)\n";
+    bool refuted = dynamic_cast<const checker::InternalError*>(&e) != nullptr;
+    std::cerr << "internal error: " << (refuted ? "" : "the checker failed: ") << e.what()
+              << "\n(a bug in cemv: please report it with the matrix and property files)\n";
     return 4;
   }
   // The watchdog fired while check() was returning: it writes and exits.
   if (reporting.exchange(true)) for (;;) std::this_thread::sleep_for(std::chrono::hours(1));
   watchdog.reset();
 
-  // The checker fills these too; the CLI's values name the files as given.
+  // The checker fills these too; the CLI's values name the files as given and
+  // carry the version of this binary.
   result.matrix_name = skeleton.matrix_name;
   result.matrix_signature = skeleton.matrix_signature;
-  if (result.tool_version.empty()) result.tool_version = skeleton.tool_version;
+  result.tool_version = skeleton.tool_version;
   result.property_files = skeleton.property_files;
   result.standard = skeleton.standard;
   result.shard = skeleton.shard;

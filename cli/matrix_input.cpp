@@ -3,7 +3,8 @@
 #include <iostream>
 #include <iterator>
 
-#include "model/format.hpp"
+#include "formats/diagnostics.hpp"
+#include "formats/matrix_json.hpp"
 #include "model/validate.hpp"
 
 namespace cemv::cli {
@@ -11,15 +12,15 @@ namespace cemv::cli {
 std::string input_name(const std::string& path) { return path == "-" ? kStdinName : path; }
 
 std::string read_input(const std::string& path) {
-  if (path != "-") return model::read_text_file(path);
+  if (path != "-") return formats::read_text_file(path);
   std::string text(std::istreambuf_iterator<char>(std::cin), {});
-  if (std::cin.bad()) throw model::LoadError({model::LoadIssue{kStdinName, "cannot read standard input"}});
+  if (std::cin.bad()) throw formats::LoadError({formats::LoadIssue{kStdinName, "cannot read standard input"}});
   return text;
 }
 
 std::optional<model::Matrix> load_valid_matrix(const std::string& path, const std::string& purpose) {
-  model::Matrix m = path == "-" ? model::parse_matrix(read_input(path), kStdinName)
-                                : model::load_matrix(path);
+  model::Matrix m = path == "-" ? formats::parse_matrix(read_input(path), kStdinName)
+                                : formats::load_matrix(path);
   auto diags = model::validate(m);
   if (!model::has_errors(diags)) return m;
   std::cerr << "error: " << input_name(path) << ": the matrix has validation errors; it cannot be "

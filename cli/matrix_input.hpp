@@ -14,7 +14,7 @@ namespace cemv::cli {
 // How messages name standard input.
 inline constexpr const char* kStdinName = "<stdin>";
 
-// The text of `path` ("-" = standard input). Throws model::LoadError naming the file.
+// The text of `path` ("-" = standard input). Throws formats::LoadError naming the file.
 std::string read_input(const std::string& path);
 
 // `path` as messages name it: "<stdin>" for "-".
@@ -23,7 +23,7 @@ std::string input_name(const std::string& path);
 // Loads and validates a matrix. On validation errors prints them to standard
 // error, saying that the matrix cannot be used to `purpose` ("checked",
 // "simulated"), and returns nothing (the caller exits 2). Throws
-// model::LoadError for an unreadable or malformed file.
+// formats::LoadError for an unreadable or malformed file.
 std::optional<model::Matrix> load_valid_matrix(const std::string& path, const std::string& purpose);
 
 }  // namespace cemv::cli

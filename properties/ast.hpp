@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "model/io.hpp"
+#include "model/vocabulary.hpp"
 
 namespace cemv::properties {
 

@@ -20,6 +20,9 @@ cemv_cli_test(NAME cli_check_unknown_exit_3 EXIT 3 MATCH "u.unknown_timer: undec
 cemv_cli_test(NAME cli_check_internal_error_exit_4
   EXIT 4 MATCH "internal error: replayed trace does not violate 'i.internal_replay'"
   COMMAND ${_d} check ${_tank} ${_c}/internal.props)
+cemv_cli_test(NAME cli_check_checker_failure_exit_4
+  EXIT 4 MATCH "internal error: the checker failed: solver exception: out of memory"
+  COMMAND ${_d} check ${_tank} ${_c}/crash.props)
 cemv_cli_test(NAME cli_check_invalid_matrix_exit_2
   EXIT 2 MATCH "errors.json: the matrix has validation errors; it cannot be checked:.*|E-INTERSECTION-X"
   COMMAND ${_d} check tests/model/validate_cases/errors.json --standard)

@@ -5,11 +5,13 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <thread>
 
 #include "checker/check.hpp"
 #include "checker/prover.hpp"
-#include "model/format.hpp"
+#include "formats/diagnostics.hpp"
+#include "formats/matrix_json.hpp"
 #include "properties/parser.hpp"
 #include "properties/standard.hpp"
 
@@ -48,6 +50,7 @@ PropertyResult decide(const properties::PropertyFile& f, const properties::Prope
   r.matters = {"effect[1].active", "cause[1].active"};
   r.seconds = 0.001;
   if (has(p.name, "internal")) throw InternalError("replayed trace does not violate '" + p.name + "'");
+  if (has(p.name, "crash")) throw std::runtime_error("solver exception: out of memory");
   if (has(p.name, "hang")) std::this_thread::sleep_for(std::chrono::hours(1));
   if (has(p.name, "nap")) std::this_thread::sleep_for(std::chrono::milliseconds(200));
   if (has(p.name, "falsified") || (has(p.name, "reachable") && !has(p.name, "unreachable"))) {
@@ -85,7 +88,7 @@ CheckResult check(const model::Matrix& m, const std::vector<properties::Property
                   const CheckOptions& options) {
   CheckResult result;
   result.matrix_name = m.name;
-  result.matrix_signature = model::signature(m);
+  result.matrix_signature = formats::signature(m);
   result.tool_version = "double";
   std::size_t index = 0;
   for (const auto& f : files)
@@ -120,7 +123,7 @@ PropertyFile parse_properties(std::string_view text, const model::Matrix&, const
       if (kind == word) p.kind = k, known = true;
     int column = static_cast<int>(line.find(kind)) + 1;
     if (!known)
-      throw model::LoadError({model::LoadIssue{file_name + ":" + std::to_string(n) + ":" + std::to_string(column),
+      throw formats::LoadError({formats::LoadIssue{file_name + ":" + std::to_string(n) + ":" + std::to_string(column),
                                "expected invariant, never, reachable or response, found '" + kind + "'"}});
     words >> name;
     std::getline(words >> std::ws, p.description);
