@@ -137,7 +137,7 @@ void publish(const checker::CheckResult& r, const CheckArgs& a, const std::vecto
     bool to_stdout = d.file == "-";
     any_stdout |= to_stdout;
     if (a.quiet && to_stdout && d.format == reports::CheckFormat::Text) continue;
-    write_output(d.file, reports::check_report(r, {a.matrix_file}, d.format));
+    write_output(d.file, reports::check_report(r, {input_name(a.matrix_file)}, d.format));
     if (!to_stdout) written += (written.empty() ? "" : ", ") + d.format_name + " to " + d.file;
   }
   if (any_stdout || a.quiet) return;

@@ -60,6 +60,8 @@ cemv_cli_test(NAME cli_check_standard_json EXIT 0 MATCH "\"standard\": true"
   COMMAND ${_d} check ${_tank} --standard --format json)
 cemv_cli_test(NAME cli_check_props_from_stdin EXIT 0 MATCH "\"file\": \"<stdin>\""
   COMMAND bash -c "${_d} check ${_tank} - --format json < ${_c}/proved.props")
+cemv_cli_test(NAME cli_check_matrix_from_stdin EXIT 0 MATCH "\"file\": \"<stdin>\""
+  COMMAND bash -c "${_d} check - ${_c}/proved.props --format json < ${_tank}")
 cemv_cli_test(NAME cli_check_quiet_prints_nothing EXIT 0 MATCH "^$"
   COMMAND bash -c "${_d} check ${_tank} ${_c}/proved.props -q -o ${_tmp}/quiet.xml --format junit 2>&1 | wc -c | grep -qx 0 && echo")
 cemv_cli_test(NAME cli_check_summary_line_with_o EXIT 1
