@@ -302,15 +302,24 @@ void add_check_commands(CLI::App& app, Context& ctx) {
   cmd->add_flag("--standard", a.standard, "also check the standard properties derived from the matrix");
   cmd->add_option("--format", a.format, "report format: text, json (cemv-result/1), junit, sarif")
       ->capture_default_str();
-  cmd->add_option("-o,--output", a.report_file, "write the report to FILE ('-' = standard output)");
+  cmd->add_option("-o,--output", a.report_file, "write the report to FILE ('-' = standard output)")
+      ->type_name("FILE");
+  // One value per --report, so that a positional argument after it is not taken.
   cmd->add_option("--report", a.extra_reports,
-                  "also write a report in FORMAT to FILE (repeatable), e.g. --report sarif:cemv.sarif");
-  cmd->add_option("--out", a.out_dir, "folder for counterexample scenarios (created if missing)");
+                  "also write a report in FORMAT to FILE (repeatable), e.g. --report sarif:cemv.sarif")
+      ->type_name("FORMAT:FILE")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  cmd->add_option("--out", a.out_dir, "folder for counterexample scenarios (created if missing)")
+      ->type_name("DIR");
   cmd->add_option("--jobs", a.jobs, "worker threads over the properties")->capture_default_str();
-  cmd->add_option("--shard", a.shard, "check only shard i of n (1 <= i <= n), for CI runners");
-  cmd->add_option("--timeout", a.timeout_s, "wall-clock limit per property, seconds (0 = none)");
+  cmd->add_option("--shard", a.shard, "check only shard i of n (1 <= i <= n), for CI runners")
+      ->type_name("i/n");
+  cmd->add_option("--timeout", a.timeout_s, "wall-clock limit per property, seconds (0 = none)")
+      ->type_name("S");
   cmd->add_option("--total-timeout", a.total_timeout_s,
-                  "hard wall-clock limit for the whole run, seconds (0 = none)");
+                  "hard wall-clock limit for the whole run, seconds (0 = none)")
+      ->type_name("S");
   cmd->add_flag("-q,--quiet", a.quiet, "print nothing but errors");
   cmd->footer(
       "Exit status: 0 every property proved or reachable; 1 some property falsified, unreachable\n"

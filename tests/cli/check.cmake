@@ -67,6 +67,9 @@ cemv_cli_test(NAME cli_check_quiet_prints_nothing EXIT 0 MATCH "^$"
 cemv_cli_test(NAME cli_check_summary_line_with_o EXIT 1
   MATCH "^cemv check: TANK_T100: 6 properties: 1 proved, 1 falsified, 1 reachable, 1 unreachable, 1 vacuous, 1 unknown; wrote sarif to .*summary.sarif, junit to .*summary.xml"
   COMMAND ${_d} check ${_tank} ${_c}/all_verdicts.props --format sarif -o ${_tmp}/summary.sarif --report junit:${_tmp}/summary.xml)
+# --report takes one value: the matrix and property file after it stay positional.
+cemv_cli_test(NAME cli_check_report_takes_one_value EXIT 0 MATCH "2 proved; wrote json to .*order.json, junit to .*order.xml"
+  COMMAND ${_d} check --report junit:${_tmp}/order.xml -o ${_tmp}/order.json --format json ${_tank} ${_c}/proved.props)
 # One run, several reports: each the same as a run in that format alone.
 cemv_cli_test(NAME cli_check_several_reports_one_run EXIT 0 MATCH "^same$"
   COMMAND bash ${_c}/several_reports.sh ${_d} ${_tank} ${_c}/all_verdicts.props ${_tmp}/several)
