@@ -69,12 +69,21 @@ std::pair<int, int> parse_shard(const std::string& s) {
   return {i, n};
 }
 
+const char* kind_name(properties::PropertyKind k) {
+  switch (k) {
+    case properties::PropertyKind::Invariant: return "invariant";
+    case properties::PropertyKind::Never: return "never";
+    case properties::PropertyKind::Reachable: return "reachable";
+    case properties::PropertyKind::Response: return "response";
+  }
+  return "invariant";
+}
+
 // The properties this run decides, in the checker's order (files as given,
 // then the standard set; shard i of n by position): what a report must list
 // even when the run is cut short.
 std::vector<PropertyResult> planned_properties(const std::vector<properties::PropertyFile>& files,
                                                int shard_index, int shard_count) {
-  static const char* kinds[] = {"invariant", "never", "reachable", "response"};
   std::vector<PropertyResult> planned;
   std::size_t index = 0;
   for (const auto& f : files)
@@ -83,7 +92,7 @@ std::vector<PropertyResult> planned_properties(const std::vector<properties::Pro
       PropertyResult r;
       r.name = p.name;
       r.description = p.description;
-      r.kind = kinds[static_cast<int>(p.kind)];
+      r.kind = kind_name(p.kind);
       r.file = f.file_name;
       r.line = p.loc.line;
       r.column = p.loc.column;
