@@ -210,9 +210,7 @@ int run_check(const CheckArgs& a) {
   for (const auto& d : outputs) check_writable(d.file);
   if (!a.out_dir.empty()) check_writable_directory(a.out_dir);
 
-  auto matrix = load_valid_matrix(a.matrix_file, "checked");
-  if (!matrix) return 2;
-  const model::Matrix& m = *matrix;
+  const model::Matrix m = load_valid_matrix(a.matrix_file, "checked");
   std::vector<properties::PropertyFile> files;
   for (const auto& f : a.property_files)
     files.push_back(properties::parse_properties(read_input(f), m, input_name(f)));

@@ -18,18 +18,18 @@ std::string read_input(const std::string& path) {
   return text;
 }
 
-std::optional<model::Matrix> load_valid_matrix(const std::string& path, const std::string& purpose) {
-  model::Matrix m = path == "-" ? formats::parse_matrix(read_input(path), kStdinName)
-                                : formats::load_matrix(path);
-  auto diags = model::validate(m);
-  if (!model::has_errors(diags)) return m;
-  std::cerr << "error: " << input_name(path) << ": the matrix has validation errors; it cannot be "
-            << purpose << ":\n";
-  for (const auto& d : diags)
+model::Matrix load_valid_matrix(const std::string& path, const std::string& use) {
+  if (path != "-") return formats::load_valid_matrix(path, use);
+  // The same refusal as formats::load_valid_matrix, for a matrix that has no path.
+  model::Matrix m = formats::parse_matrix(read_input(path), kStdinName);
+  auto diagnostics = model::validate(m);
+  if (!model::has_errors(diagnostics)) return m;
+  std::vector<formats::LoadIssue> issues{
+      {kStdinName, "the matrix has validation errors; it cannot be " + use}};
+  for (const auto& d : diagnostics)
     if (d.severity == model::Severity::Error)
-      std::cerr << "  " << d.rule << " " << d.element << " (" << d.section << "): " << d.message
-                << "\n";
-  return std::nullopt;
+      issues.push_back({kStdinName, d.rule + " " + d.element + " (" + d.section + "): " + d.message});
+  throw formats::LoadError(std::move(issues));
 }
 
 }  // namespace cemv::cli

@@ -1,10 +1,8 @@
-// Reading the inputs of a command that computes from a matrix: one function
-// that loads a matrix and refuses it when it has validation errors (a checker,
-// simulator or generator must never compute from an invalid matrix), and "-"
-// meaning standard input for every input file argument.
+// "-" as standard input for the input files of a command: reading them, and
+// loading a matrix from them through formats::load_valid_matrix's rule (a
+// matrix with validation errors is refused, listing them, exit 2).
 #pragma once
 
-#include <optional>
 #include <string>
 
 #include "model/matrix.hpp"
@@ -20,10 +18,9 @@ std::string read_input(const std::string& path);
 // `path` as messages name it: "<stdin>" for "-".
 std::string input_name(const std::string& path);
 
-// Loads and validates a matrix. On validation errors prints them to standard
-// error, saying that the matrix cannot be used to `purpose` ("checked",
-// "simulated"), and returns nothing (the caller exits 2). Throws
-// formats::LoadError for an unreadable or malformed file.
-std::optional<model::Matrix> load_valid_matrix(const std::string& path, const std::string& purpose);
+// formats::load_valid_matrix, also for "-": throws formats::LoadError for an
+// unreadable or malformed file and for a matrix with validation errors, which
+// cannot be `use`d ("checked", "simulated").
+model::Matrix load_valid_matrix(const std::string& path, const std::string& use);
 
 }  // namespace cemv::cli
