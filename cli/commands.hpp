@@ -1,7 +1,8 @@
 // The subcommands of `cemv`, one registration function per command group, each
 // in its own file. A command's callback stores its exit status in Context:
 // 0 success, 1 a negative verdict (validation errors, failed expectation,
-// counterexample), 2 bad input (unreadable or invalid file, bad arguments).
+// counterexample), 2 bad input (unreadable or invalid file, bad arguments);
+// `check` adds 3 (undecided) and 4 (internal error), docs/checker.md.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -18,5 +19,6 @@ void add_report_commands(CLI::App& app, Context& ctx);    // report
 void add_csv_commands(CLI::App& app, Context& ctx);       // export-csv, import-csv
 void add_simulate_commands(CLI::App& app, Context& ctx);  // simulate
 void add_smt_commands(CLI::App& app, Context& ctx);       // export-smt
+void add_check_commands(CLI::App& app, Context& ctx);     // check
 
 }  // namespace cemv::cli

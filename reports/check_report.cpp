@@ -1,0 +1,97 @@
+// Shared pieces of the check printers (check_report.hpp).
+#include "reports/check_report.hpp"
+
+#include <algorithm>
+
+#include "reports/check_json.hpp"
+#include "reports/check_junit.hpp"
+#include "reports/check_sarif.hpp"
+#include "reports/check_text.hpp"
+
+namespace cemv::reports {
+
+using checker::PropertyVerdict;
+
+std::optional<CheckFormat> check_format_from_string(std::string_view name) {
+  if (name == "text") return CheckFormat::Text;
+  if (name == "json") return CheckFormat::Json;
+  if (name == "junit") return CheckFormat::Junit;
+  if (name == "sarif") return CheckFormat::Sarif;
+  return std::nullopt;
+}
+
+std::string check_report(const checker::CheckResult& r, const CheckReportInputs& in,
+                         CheckFormat format) {
+  switch (format) {
+    case CheckFormat::Text: return check_text(r, in);
+    case CheckFormat::Json: return check_json(r, in);
+    case CheckFormat::Junit: return check_junit(r, in);
+    case CheckFormat::Sarif: return check_sarif(r, in);
+  }
+  return {};
+}
+
+const char* verdict_name(PropertyVerdict v) {
+  switch (v) {
+    case PropertyVerdict::Proved: return "proved";
+    case PropertyVerdict::Falsified: return "falsified";
+    case PropertyVerdict::Reachable: return "reachable";
+    case PropertyVerdict::Unreachable: return "unreachable";
+    case PropertyVerdict::Vacuous: return "vacuous";
+    case PropertyVerdict::Unknown: return "unknown";
+  }
+  return "unknown";
+}
+
+bool is_failure(PropertyVerdict v) {
+  return v == PropertyVerdict::Falsified || v == PropertyVerdict::Unreachable || v == PropertyVerdict::Vacuous;
+}
+
+std::array<int, 6> verdict_counts(const checker::CheckResult& r) {
+  std::array<int, 6> counts{};
+  for (const auto& p : r.properties) ++counts[static_cast<std::size_t>(p.verdict)];
+  return counts;
+}
+
+std::vector<std::string> property_elements(const checker::PropertyResult& p) {
+  std::vector<std::string> out;
+  for (const auto& key : p.matters) {
+    std::string element = key.substr(0, key.find('.'));
+    if (std::find(out.begin(), out.end(), element) == out.end()) out.push_back(element);
+  }
+  return out;
+}
+
+namespace {
+
+std::string by_method(const checker::PropertyResult& p) {
+  if (p.method.empty()) return "";
+  std::string s = " by " + p.method;
+  if (p.depth > 0) s += " (k = " + std::to_string(p.depth) + ")";
+  return s;
+}
+
+std::string with_reason(const checker::PropertyResult& p) {
+  return p.reason.empty() ? std::string() : ": " + p.reason;
+}
+
+}  // namespace
+
+std::string outcome_text(const checker::PropertyResult& p) {
+  // Cycles are shown 1-based, as in the timing tables of `cemv simulate`.
+  std::string at = p.violation_cycle >= 0 ? " at cycle " + std::to_string(p.violation_cycle + 1)
+                                          : std::string();
+  switch (p.verdict) {
+    case PropertyVerdict::Proved: return "proved" + by_method(p);
+    case PropertyVerdict::Falsified:
+      return "falsified" + at + (p.method.empty() ? "" : " (found by " + p.method + ")");
+    case PropertyVerdict::Reachable:
+      return "reachable, witness" + at + (p.method.empty() ? "" : " (found by " + p.method + ")");
+    case PropertyVerdict::Unreachable: return "unreachable" + by_method(p) + with_reason(p);
+    case PropertyVerdict::Vacuous: return "vacuous" + with_reason(p);
+    case PropertyVerdict::Unknown: return "unknown" + with_reason(p);
+  }
+  return "unknown";
+}
+
+}  // namespace cemv::reports

@@ -1,0 +1,48 @@
+// The four printers of `cemv check` results (docs/checker.md, "Outputs"), and
+// what they share. Every printer is a pure function of the CheckResult: only
+// the text printer shows times, so JSON, JUnit and SARIF are byte-identical
+// between runs on the same inputs.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "checker/result.hpp"
+
+namespace cemv::reports {
+
+enum class CheckFormat { Text, Json, Junit, Sarif };
+std::optional<CheckFormat> check_format_from_string(std::string_view name);
+
+// The inputs a printer needs beyond the result itself.
+struct CheckReportInputs {
+  std::string matrix_file;  // as given on the command line
+};
+
+// Renders `r` in `format` (one of the printers below).
+std::string check_report(const checker::CheckResult& r, const CheckReportInputs& in,
+                         CheckFormat format);
+
+// The verdict as every output spells it: "proved", "falsified", "reachable",
+// "unreachable", "vacuous", "unknown" (the cemv-result/1 vocabulary).
+const char* verdict_name(checker::PropertyVerdict v);
+
+// A verdict that fails the check (exit 1): falsified, unreachable, vacuous.
+bool is_failure(checker::PropertyVerdict v);
+
+// How many properties ended in each verdict, indexed by the PropertyVerdict enumerator.
+std::array<int, 6> verdict_counts(const checker::CheckResult& r);
+
+// The matrix elements a property is about, derived from the observables it
+// reads ("effect[1].tag[2]" -> "effect[1]"), in first-use order; used to name
+// the element in SARIF messages and logical locations.
+std::vector<std::string> property_elements(const checker::PropertyResult& p);
+
+// One line describing the outcome, without times: "proved by k-induction (k = 3)",
+// "falsified at cycle 4 (trace of 5 cycles)", "unknown: time limit", ...
+std::string outcome_text(const checker::PropertyResult& p);
+
+}  // namespace cemv::reports

@@ -1,0 +1,13 @@
+// `cemv check --format sarif` (docs/checker.md, "Outputs").
+#pragma once
+
+#include <string>
+
+#include "checker/result.hpp"
+#include "reports/check_report.hpp"
+
+namespace cemv::reports {
+
+std::string check_sarif(const checker::CheckResult& r, const CheckReportInputs& in);
+
+}  // namespace cemv::reports

@@ -1,0 +1,14 @@
+// TEST DOUBLE of properties/parser.hpp (see ../../README.md).
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "model/matrix.hpp"
+#include "properties/ast.hpp"
+
+namespace cemv::properties {
+
+PropertyFile parse_properties(std::string_view text, const model::Matrix& m, const std::string& file_name);
+
+}  // namespace cemv::properties

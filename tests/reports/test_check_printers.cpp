@@ -1,0 +1,175 @@
+// The four printers of `cemv check` results on one hand-built CheckResult that
+// holds every verdict, a standard property, and names with characters that
+// XML and JSON must escape. Golden files under golden/ pin the exact bytes;
+// run with CEMV_UPDATE_GOLDEN=1 to rewrite them after an intended change (and
+// review the diff).
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "reports/check_report.hpp"
+
+using cemv::checker::CheckResult;
+using cemv::checker::PropertyResult;
+using cemv::checker::PropertyVerdict;
+using cemv::reports::CheckFormat;
+
+namespace {
+
+PropertyResult property(std::string name, std::string kind, int line, PropertyVerdict v) {
+  PropertyResult p;
+  p.name = std::move(name);
+  p.kind = std::move(kind);
+  p.file = "examples/tank-overfill/requirements.props";
+  p.line = line;
+  p.column = 10;
+  p.verdict = v;
+  return p;
+}
+
+CheckResult sample(double seconds_scale = 1.0) {
+  CheckResult r;
+  r.matrix_name = "TANK_T100";
+  r.matrix_signature = "3f0c9a1b2d4e5f60718293a4b5c6d7e8f90a1b2c3d4e5f60718293a4b5c6d7e8";
+  r.tool_version = "0.1.0";
+  r.property_files = {"examples/tank-overfill/requirements.props"};
+  r.shard = "2/3";
+
+  PropertyResult proved = property("req1.overfill_closes_xv101", "response", 12, PropertyVerdict::Proved);
+  proved.description = "2oo3 high level for 2 s closes XV_101 within 500 ms";
+  proved.method = "k-induction";
+  proved.depth = 3;
+  proved.notes = {"500 ms is 5 cycles of 100 ms"};
+  proved.support = {{"intersection[1,1]", "cause 1 -> effect 1 (N)"},
+                    {"cause[1].voting", "2oo3"}};
+  proved.support_minimal = true;
+  proved.invariant = "(<= effect[1].timer 5)";
+  proved.matters = {"cause[1].active", "effect[1].active", "effect[1].tag[1]"};
+  proved.seconds = 0.25 * seconds_scale;
+  r.properties.push_back(proved);
+
+  PropertyResult falsified = property("req5.stored_holds", "invariant", 30, PropertyVerdict::Falsified);
+  falsified.description = "effect 1 stays active while a cause is active";
+  falsified.method = "bmc";
+  falsified.depth = 4;
+  falsified.violation_cycle = 3;
+  falsified.scenario_file = "out/req5.stored_holds.scenario.json";
+  falsified.timing_table =
+      "timing (cycle:value at the first cycle and at each change; cycle n is t = (n-1)*100 ms):\n"
+      "  LT_100A           1:0  3:95\n"
+      "  effect[1].active  1:0  3:1  4:0\n";
+  falsified.matters = {"effect[1].active", "cause[1].active"};
+  falsified.seconds = 0.031 * seconds_scale;
+  r.properties.push_back(falsified);
+
+  PropertyResult reach = property("req7.effect1_trips", "reachable", 40, PropertyVerdict::Reachable);
+  reach.method = "bmc";
+  reach.depth = 2;
+  reach.violation_cycle = 1;
+  reach.scenario_file = "out/req7.effect1_trips.scenario.json";
+  reach.timing_table = "timing:\n  effect[1].active  1:0  2:1\n";
+  reach.matters = {"effect[1].active"};
+  reach.seconds = 0.01 * seconds_scale;
+  r.properties.push_back(reach);
+
+  PropertyResult dead = property("req7.effect9_resets", "reachable", 41, PropertyVerdict::Unreachable);
+  dead.method = "pdr";
+  dead.depth = 1;
+  dead.matters = {"effect[9].reset_required"};
+  dead.seconds = 0.5 * seconds_scale;
+  r.properties.push_back(dead);
+
+  PropertyResult vac = property("req9.when_never", "response", 50, PropertyVerdict::Vacuous);
+  vac.reason = "the trigger can never hold";
+  vac.matters = {"cause[2].active", "effect[2].active"};
+  vac.seconds = 0.02 * seconds_scale;
+  r.properties.push_back(vac);
+
+  PropertyResult unknown = property("req4.override_1800s", "invariant", 60, PropertyVerdict::Unknown);
+  unknown.reason = "time limit";
+  unknown.matters = {"effect[4].override_active"};
+  unknown.seconds = 10.0 * seconds_scale;
+  r.properties.push_back(unknown);
+
+  // A generated property (no file) whose text needs escaping everywhere:
+  // markup, quotes, a control character and a byte that is not UTF-8.
+  PropertyResult odd;
+  odd.name = "std.effect[3] <a & \"b\"> 'c'";
+  odd.kind = "invariant";
+  odd.description = std::string("tab\there, bell\x07, bad byte \xff, newline\nend");
+  odd.verdict = PropertyVerdict::Falsified;
+  odd.method = "bmc";
+  odd.depth = 1;
+  odd.violation_cycle = 0;
+  odd.timing_table = "  x <&> 1:0\n";
+  odd.seconds = 0.001 * seconds_scale;
+  r.properties.push_back(odd);
+
+  r.standard = false;
+  return r;
+}
+
+const cemv::reports::CheckReportInputs kInputs{"examples/tank-overfill/matrix.json"};
+
+std::string golden_path(const std::string& name) { return std::string(CEMV_GOLDEN_DIR) + "/" + name; }
+
+void expect_golden(const std::string& actual, const std::string& name) {
+  std::string path = golden_path(name);
+  if (std::getenv("CEMV_UPDATE_GOLDEN")) {
+    std::ofstream(path, std::ios::binary) << actual;
+    return;
+  }
+  std::ifstream f(path, std::ios::binary);
+  ASSERT_TRUE(f) << "missing golden file " << path;
+  std::stringstream s;
+  s << f.rdbuf();
+  EXPECT_EQ(actual, s.str()) << "differs from " << path;
+}
+
+std::string render(const CheckResult& r, CheckFormat f) {
+  return cemv::reports::check_report(r, kInputs, f);
+}
+
+}  // namespace
+
+TEST(CheckPrinters, TextGolden) { expect_golden(render(sample(), CheckFormat::Text), "check.txt"); }
+TEST(CheckPrinters, JsonGolden) { expect_golden(render(sample(), CheckFormat::Json), "check.json"); }
+TEST(CheckPrinters, JunitGolden) { expect_golden(render(sample(), CheckFormat::Junit), "check.junit.xml"); }
+TEST(CheckPrinters, SarifGolden) { expect_golden(render(sample(), CheckFormat::Sarif), "check.sarif"); }
+
+// Only the text report shows times: the machine formats are byte-identical
+// whatever the run took.
+TEST(CheckPrinters, MachineFormatsHaveNoTimes) {
+  for (CheckFormat f : {CheckFormat::Json, CheckFormat::Junit, CheckFormat::Sarif})
+    EXPECT_EQ(render(sample(1.0), f), render(sample(3.7), f));
+  EXPECT_NE(render(sample(1.0), CheckFormat::Text), render(sample(3.7), CheckFormat::Text));
+}
+
+TEST(CheckPrinters, JsonSummaryCountsEveryVerdict) {
+  auto j = nlohmann::json::parse(render(sample(), CheckFormat::Json));
+  EXPECT_EQ(j["format"], "cemv-result/1");
+  EXPECT_EQ(j["summary"]["properties"], 7);
+  EXPECT_EQ(j["summary"]["falsified"], 2);
+  EXPECT_EQ(j["summary"]["proved"], 1);
+  EXPECT_EQ(j["summary"]["unknown"], 1);
+  EXPECT_EQ(j["properties"][1]["violation_cycle"], 3);
+  EXPECT_TRUE(j["properties"][0]["violation_cycle"].is_null());
+  EXPECT_EQ(j["properties"][0]["elements"], nlohmann::json({"cause[1]", "effect[1]"}));
+}
+
+TEST(CheckPrinters, InterruptedRunSaysSo) {
+  CheckResult r = sample();
+  r.interrupted = true;
+  EXPECT_EQ(nlohmann::json::parse(render(r, CheckFormat::Json))["interrupted"], true);
+  EXPECT_NE(render(r, CheckFormat::Text).find("INTERRUPTED"), std::string::npos);
+}
+
+TEST(CheckPrinters, FormatNames) {
+  EXPECT_EQ(cemv::reports::check_format_from_string("sarif"), CheckFormat::Sarif);
+  EXPECT_EQ(cemv::reports::check_format_from_string("junit"), CheckFormat::Junit);
+  EXPECT_FALSE(cemv::reports::check_format_from_string("xml").has_value());
+}
