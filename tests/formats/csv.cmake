@@ -22,6 +22,10 @@ cemv_cli_test(NAME cli_import_csv_lsst_validate EXIT 1
 cemv_cli_test(NAME cli_import_csv_forced_grid EXIT 0 MATCH "effect id 'TMA-A-17' out of order"
   COMMAND $<TARGET_FILE:cemv> import-csv --layout grid ${LSST} -o ${CSV_TMP}/lsst3.json)
 cemv_cli_test(NAME cli_import_csv_separator_option EXIT 0 MATCH "\"name\": \"E_2\""
+  COMMAND $<TARGET_FILE:cemv> import-csv --separator tab --orientation causes-as-rows ${CSV_CASES}/tab_grid.tsv)
+# No corner labels, ids 1, 2 and T-1: no evidence of the orientation, so a refusal that asks for it.
+cemv_cli_test(NAME cli_import_csv_orientation_unknown EXIT 2
+  MATCH "tab_grid.tsv: line 2: cannot tell whether the causes are the rows or the columns.*--orientation"
   COMMAND $<TARGET_FILE:cemv> import-csv --separator tab ${CSV_CASES}/tab_grid.tsv)
 cemv_cli_test(NAME cli_import_csv_missing_file EXIT 2 MATCH "error: .*no_such_file.csv"
   COMMAND $<TARGET_FILE:cemv> import-csv ${CSV_CASES}/no_such_file.csv)
