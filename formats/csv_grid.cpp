@@ -477,8 +477,8 @@ class GridImporter {
           key += number;
           key += ')';
           std::string text = key;
-          if (auto l = legend_.find(key); l != legend_.end()) text += " " + l->second;
-          else unexplained.insert(key);
+          if (auto l = legend_.find(key); l == legend_.end()) unexplained.insert(key);
+          else if (!l->second.empty()) text += " " + l->second;
           join_to(x.note, "; ", text);
         }
         intersections_.push_back(std::move(x));

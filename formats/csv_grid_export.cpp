@@ -4,6 +4,7 @@
 // reading it back gives the same intersections.
 #include <map>
 #include <optional>
+#include <regex>
 
 #include "formats/csv_grid.hpp"
 #include "model/vocabulary.hpp"
@@ -40,6 +41,50 @@ void write_row(std::string& out, const std::vector<std::string>& fields) {
   out += "\r\n";
 }
 
+// Intersection notes as footnotes `(n)` explained in legend rows. A note the
+// grid import made ("(1) Override with cabinet switch": the footnote and its
+// legend) keeps its number and its text, so a grid read and written again is
+// the same sheet; other notes get the next free numbers.
+class Footnotes {
+ public:
+  explicit Footnotes(const model::Matrix& m) {
+    static const std::regex imported(R"(^\((\d{1,6})\)(?: (.*))?$)");
+    std::vector<const std::string*> others;
+    for (const auto& x : m.intersections) {
+      if (x.note.empty() || number_.count(x.note)) continue;
+      std::smatch mt;
+      if (std::regex_match(x.note, mt, imported) && !legend_.count(std::stoi(mt[1].str()))) {
+        const int n = std::stoi(mt[1].str());
+        number_[x.note] = n;
+        legend_[n] = mt[2].str();
+      } else {
+        others.push_back(&x.note);
+      }
+    }
+    for (const std::string* note : others) {
+      if (number_.count(*note)) continue;
+      const int n = legend_.empty() ? 1 : legend_.rbegin()->first + 1;
+      number_[*note] = n;
+      legend_[n] = *note;
+    }
+  }
+  int number_of(const std::string& note) const { return number_.at(note); }
+  // An empty row, then `(n),text` per footnote that has a text.
+  void write_legend(std::string& out) const {
+    bool first = true;
+    for (const auto& [n, text] : legend_) {
+      if (text.empty()) continue;  // a bare (n), as the sheet had it
+      if (first) out += "\r\n";
+      first = false;
+      write_row(out, {"(" + std::to_string(n) + ")", text});
+    }
+  }
+
+ private:
+  std::map<std::string, int> number_;
+  std::map<int, std::string> legend_;
+};
+
 }  // namespace
 
 std::string export_csv_grid(const model::Matrix& m, CsvOrientation orientation) {
@@ -47,18 +92,11 @@ std::string export_csv_grid(const model::Matrix& m, CsvOrientation orientation) 
   for (const auto& c : m.causes) causes.push_back({c.id, sheet_id(c.name, c.note, c.id, "C"), c.description});
   for (const auto& e : m.effects) effects.push_back({e.id, sheet_id(e.name, e.note, e.id, "E"), e.description});
 
-  // Intersection notes become footnotes (n) explained in legend rows, one
-  // number per distinct note in the order the notes first appear.
-  std::map<std::string, int> footnote;
-  std::vector<std::string> legend;
+  const Footnotes footnotes(m);
   std::map<std::pair<int, int>, std::string> cell;  // (cause, effect) -> mark
   for (const auto& x : m.intersections) {
     std::string mark = model::to_string(x.type);
-    if (!x.note.empty()) {
-      auto [it, fresh] = footnote.emplace(x.note, static_cast<int>(legend.size() + 1));
-      if (fresh) legend.push_back(x.note);
-      mark += "(" + std::to_string(it->second) + ")";
-    }
+    if (!x.note.empty()) mark += "(" + std::to_string(footnotes.number_of(x.note)) + ")";
     cell[{x.cause, x.effect}] = mark;
   }
 
@@ -83,9 +121,7 @@ std::string export_csv_grid(const model::Matrix& m, CsvOrientation orientation) 
     }
     write_row(out, fields);
   }
-  if (!legend.empty()) out += "\r\n";
-  for (std::size_t k = 0; k < legend.size(); ++k)
-    write_row(out, {"(" + std::to_string(k + 1) + ")", legend[k]});
+  footnotes.write_legend(out);
   return out;
 }
 

@@ -63,7 +63,7 @@ Kind id_kind(const std::string& id) {
   return c == e ? Kind::None : c ? Kind::Causes : Kind::Effects;
 }
 
-// "TMA-D-<n>": the id with its digit groups replaced.
+// "TMA-D-<n>": the id with its digit groups replaced by <n>.
 std::string pattern_of(const std::string& id) {
   static const std::regex digits(R"(\d+)");
   return std::regex_replace(id, digits, "<n>");
@@ -113,6 +113,8 @@ std::pair<Kind, std::string> axis_ids(const std::vector<std::string>& ids) {
   int best = 0;
   for (const auto& [p, count] : patterns)
     if (count > best) best = count, pattern = p;
+  // A pattern only when ids share it (TMA-D-<n>); else an example.
+  if (best < 2 && !ids.empty()) pattern = "such as " + model::in_quotes(ids.front());
   return {kind, pattern};
 }
 
