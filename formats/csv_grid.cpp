@@ -25,18 +25,6 @@ namespace {
 constexpr std::size_t kMaxMatrixNameLength = 16;  // 6.1.2
 constexpr std::size_t kMaxTitleLength = 60;       // 6.2.1
 
-struct SheetElement {
-  std::string sheet_id;       // as written, trimmed
-  std::string text;           // description, trimmed
-  int line = 0;
-  int column = 0;             // of the id cell
-  int id = 0;
-  std::string name;
-  std::string tag;
-  std::string note;
-  std::string unnamed;        // the name when the id is empty: CAUSE_LINE_<n>, EFFECT_COL_<c>
-  std::string tag_from_sheet; // from a tag row or column
-};
 
 std::string upper(std::string s) {
   for (auto& c : s)
@@ -51,37 +39,26 @@ bool is_tag_label(const std::string& label) {
   return std::regex_search(label, tag);
 }
 
-// The intersection type of an upper-case mark letter (6.5.2).
-IntersectionType type_of(char letter) {
-  switch (letter) {
-    case 'N': return IntersectionType::N;
-    case 'S': return IntersectionType::S;
-    case 'V': return IntersectionType::V;
-    case 'R': return IntersectionType::R;
-    case 'X': return IntersectionType::X;
-    default: return IntersectionType::Note;  // '*'
-  }
-}
-
 class GridImporter {
  public:
   GridImporter(const Sheet& sheet, const Shape& shape, OrientationDecision orientation,
                std::string source, std::string name)
       : sheet_(sheet), shape_(shape), orientation_(std::move(orientation)),
-        source_(std::move(source)), name_(std::move(name)) {}
+        source_(std::move(source)), name_(std::move(name)), warnings_(source_) {}
 
   CsvImportResult run() {
     if (orientation_.disagreement) {
       const auto& d = *orientation_.disagreement;
-      warnings_.push_back({{sheet_.rows[shape_.id_row].line, 0}, d});
+      warnings_.add(sheet_.rows[shape_.id_row].line, d);
     }
     read_legend();
     read_column_elements();
     read_row_elements();
-    number(effects(), "effect", "E", kMaxEffects);
-    number(causes(), "cause", "C", kMaxCauses);
-    read_cells();
-    report_cell_styles();
+    number_elements(effects(), "effect", "E", kMaxEffects, warnings_);
+    number_elements(causes(), "cause", "C", kMaxCauses, warnings_);
+    intersections_ = read_intersections(sheet_, shape_,
+                                        GridAxes{row_elements_, element_rows_, column_elements_, causes_are_rows()},
+                                        legend_, warnings_);
     report_missing_override();
 
     CsvImportResult result;
@@ -89,9 +66,7 @@ class GridImporter {
     result.orientation = orientation_.orientation;
     result.matrix = parse_matrix(to_canonical_json(build_matrix()), source_);
     result.summary = summary(result.matrix);
-    std::stable_sort(warnings_.begin(), warnings_.end(),
-                     [](const auto& a, const auto& b) { return a.first < b.first; });
-    for (auto& [order, w] : warnings_) result.warnings.push_back(std::move(w));
+    result.warnings = warnings_.in_file_order();
     return result;
   }
 
@@ -103,12 +78,7 @@ class GridImporter {
   std::vector<SheetElement>& causes() { return causes_are_rows() ? row_elements_ : column_elements_; }
   std::vector<SheetElement>& effects() { return causes_are_rows() ? column_elements_ : row_elements_; }
 
-  void warn(int line, int column, std::string what) {
-    warnings_.push_back({{line, column}, LoadIssue{where_of(source_, line, column), std::move(what)}});
-  }
-  void warn_text(int line, std::string where_suffix, std::string what) {
-    warnings_.push_back({{line, 0}, LoadIssue{where_of(source_, line) + where_suffix, std::move(what)}});
-  }
+  void warn(int line, int column, std::string what) { warnings_.at(line, column, std::move(what)); }
 
   Matrix build_matrix() {
     Matrix m;
@@ -311,228 +281,6 @@ class GridImporter {
     note_extras(shape_.extra_columns, false, kind);
   }
 
-  // Numeric ids follow the sheet's own numbering (`TMA-D-40` -> 40) when every id
-  // ends in a number within the limits of 3.4, so evidence refers to the same
-  // numbers as the sheet; otherwise elements are numbered by position. A repeated
-  // id keeps both elements: the later one gets the next free number and the
-  // suffix _2, _3, ... (merging would silently drop one row's intersections).
-  void number(std::vector<SheetElement>& elements, const char* kind, const char* prefix, int limit) {
-    std::vector<std::optional<int>> nums;
-    bool by_sheet = true;
-    for (const auto& e : elements) {
-      nums.push_back(e.sheet_id.empty() ? std::nullopt : trailing_number(e.sheet_id));
-      by_sheet = by_sheet && nums.back() && *nums.back() >= 1 && *nums.back() <= limit;
-    }
-    std::set<int> used;
-    int next_free = 0;
-    if (by_sheet) {
-      for (auto& n : nums) next_free = std::max(next_free, *n);
-      ++next_free;
-      std::set<int> seen;
-      int extra = 0;
-      for (auto& n : nums)
-        if (!seen.insert(*n).second) ++extra;
-      if (next_free + extra - 1 > limit) by_sheet = false;
-    }
-    if (!by_sheet && !elements.empty())
-      warn(elements.front().line, elements.front().column,
-           std::string(kind) + " ids do not all end in a number 1-" + std::to_string(limit) +
-               "; " + kind + "s are numbered by their position in the sheet");
-
-    std::map<std::string, std::size_t> first_by_id;  // sheet id -> index of first element
-    std::map<int, std::size_t> first_by_number;      // sheet number -> index of first element
-    std::set<std::string> names;                     // tag_key() of each, for uniqueness
-    for (std::size_t i = 0; i < elements.size(); ++i) {
-      auto& e = elements[i];
-      auto [first, fresh] = first_by_id.emplace(e.sheet_id, i);
-      bool duplicate = !fresh && !e.sheet_id.empty();
-      if (by_sheet) {
-        auto [same_number, unused] = first_by_number.emplace(*nums[i], i);
-        if (unused) {
-          e.id = *nums[i];
-        } else {
-          e.id = next_free++;
-          if (!duplicate)
-            warn(e.line, e.column,
-                 std::string(kind) + " id '" + e.sheet_id + "' ends in the same number as '" +
-                     elements[same_number->second].sheet_id + "'; numbered " + std::to_string(e.id));
-        }
-      } else {
-        e.id = static_cast<int>(i + 1);
-      }
-      std::string base = sanitize_identifier(e.sheet_id, kMaxTagNameLength - 3);
-      if (base.empty())
-        base = e.sheet_id.empty() ? e.unnamed : std::string(prefix) + "_" + std::to_string(e.id);
-      else if (base[0] >= '0' && base[0] <= '9')
-        base = std::string(prefix) + "_" + base;  // a leading letter keeps names identifier-like
-      base = sanitize_identifier(base, kMaxTagNameLength - 3);
-      std::string name = base;
-      for (int k = 2; names.count(tag_key(name)); ++k) name = base + "_" + std::to_string(k);
-      names.insert(tag_key(name));
-      e.name = name;
-      e.tag = e.tag_from_sheet.empty() ? name : e.tag_from_sheet;
-      std::string origin = "sheet id: " + (e.sheet_id.empty() ? std::string("(none)") : e.sheet_id);
-      e.note = e.note.empty() ? origin : origin + "; " + e.note;
-      if (duplicate) {
-        const auto& f = elements[first->second];
-        warn(e.line, e.column,
-             std::string(kind) + " id '" + e.sheet_id + "' repeats line " + std::to_string(f.line) +
-                 " ('" + f.text + "'); both rows are kept as separate " + kind + "s: line " +
-                 std::to_string(f.line) + " is " + kind + " " + std::to_string(f.id) + " " + f.name +
-                 ", this one " + kind + " " + std::to_string(e.id) + " " + e.name +
-                 " (not merged: merging would lose one row's intersections; give it its own id "
-                 "in the sheet)");
-        e.note += "; duplicate of the id of line " + std::to_string(f.line);
-      }
-    }
-    if (by_sheet) report_out_of_order(elements, first_by_number, kind);
-  }
-
-  // An element whose number breaks the ascending order of the sheet: the ones
-  // outside a longest ascending run of numbers (so one moved column is reported,
-  // not every column after it).
-  void report_out_of_order(const std::vector<SheetElement>& elements,
-                           const std::map<int, std::size_t>& first_by_number, const char* kind) {
-    std::vector<std::size_t> order;  // first occurrences, in sheet order
-    for (std::size_t i = 0; i < elements.size(); ++i) {
-      auto it = first_by_number.find(elements[i].id);
-      if (it != first_by_number.end() && it->second == i) order.push_back(i);
-    }
-    std::vector<std::size_t> tails;   // positions in `order`
-    std::vector<long> prev(order.size(), -1);
-    for (std::size_t k = 0; k < order.size(); ++k) {
-      int key = elements[order[k]].id;
-      auto it = std::lower_bound(tails.begin(), tails.end(), key, [&](std::size_t t, int v) {
-        return elements[order[t]].id < v;
-      });
-      if (it != tails.begin()) prev[k] = static_cast<long>(*(it - 1));
-      if (it == tails.end()) tails.push_back(k);
-      else *it = k;
-    }
-    std::vector<bool> in_run(order.size(), false);
-    for (long k = tails.empty() ? -1 : static_cast<long>(tails.back()); k >= 0; k = prev[static_cast<std::size_t>(k)])
-      in_run[static_cast<std::size_t>(k)] = true;
-    for (std::size_t k = 0; k < order.size(); ++k) {
-      if (in_run[k]) continue;
-      const auto& e = elements[order[k]];
-      std::string place;
-      if (order[k] > 0) place += "after '" + elements[order[k] - 1].sheet_id + "'";
-      if (order[k] + 1 < elements.size())
-        join_to(place, ", ", "before '" + elements[order[k] + 1].sheet_id + "'");
-      warn(e.line, e.column,
-           std::string(kind) + " id '" + e.sheet_id + "' out of order (" + place +
-               "); it keeps its number (" + kind + " " + std::to_string(e.id) +
-               ") and the matrix lists " + kind + "s by number");
-    }
-  }
-
-  // Reads one intersection cell: a type letter, optionally followed by footnote
-  // references `(n)`. Anything else is a stray value: reported, never guessed.
-  void read_cells() {
-    std::set<std::string> unexplained;
-    const std::size_t c0 = shape_.first_data_column, end = shape_.column_end;
-    for (std::size_t k = 0; k < row_elements_.size(); ++k) {
-      const CsvRecord& row = sheet_.rows[element_rows_[k]];
-      for (std::size_t i = c0; i < std::max(row.fields.size(), end); ++i) {
-        int column = sheet_.column_of(i);
-        if (i >= row.fields.size()) {
-          styles_.push_back({row.line, column, CellStyle::Missing});
-          continue;
-        }
-        const std::string& raw = row.fields[i].text;
-        std::string t(trim(raw));
-        if (i >= end) {
-          if (!t.empty())
-            warn(row.line, column,
-                 "stray value '" + t + "' right of the last " + column_kind() + " column; ignored");
-          continue;
-        }
-        if (t.empty()) {
-          styles_.push_back({row.line, column, raw.empty() ? CellStyle::Empty : CellStyle::Blank});
-          continue;
-        }
-        const auto& across = column_elements_[i - c0];
-        const auto& cause = causes_are_rows() ? row_elements_[k] : across;
-        const auto& effect = causes_are_rows() ? across : row_elements_[k];
-        const auto mark = parse_mark(t);
-        if (!mark) {
-          warn(row.line, column,
-               "stray value '" + t + "' at cause " + cause.name + " / effect " + effect.name +
-                   " is not N, S, V, R, X or * (with optional footnotes like R(1)); ignored: no "
-                   "intersection imported");
-          continue;
-        }
-        char letter = mark->letter;
-        if (letter >= 'a' && letter <= 'z') {
-          letter = static_cast<char>(letter - 'a' + 'A');
-          warn(row.line, column,
-               "lower-case mark '" + t + "' read as '" + std::string(1, letter) + "'");
-        }
-        Intersection x;
-        x.cause = cause.id;
-        x.effect = effect.id;
-        x.type = type_of(letter);
-        for (const auto& number : mark->footnotes) {
-          std::string key(1, '(');
-          key += number;
-          key += ')';
-          std::string text = key;
-          if (auto l = legend_.find(key); l == legend_.end()) unexplained.insert(key);
-          else if (!l->second.empty()) text += " " + l->second;
-          join_to(x.note, "; ", text);
-        }
-        intersections_.push_back(std::move(x));
-      }
-      if (row.fields.size() < end) {
-        const int last = sheet_.column_of(row.fields.size() - 1);
-        warn(row.line, last,
-             "row ends after column " + std::to_string(last) + " of " +
-                 std::to_string(sheet_.column_of(end - 1)) + "; the missing cells read as no intersection");
-      }
-    }
-    if (!unexplained.empty()) {
-      std::string list;
-      for (const auto& k : unexplained) join_to(list, ", ", k);
-      warn(sheet_.rows[element_rows_.front()].line, 0,
-           "footnotes " + list +
-               (legend_.empty() ? " are referenced but the file has no legend rows"
-                                : " have no legend entry") +
-               "; kept as notes on their intersections");
-    }
-  }
-
-  enum class CellStyle { Empty, Blank, Missing };
-  struct StyledCell {
-    int line;
-    int column;
-    CellStyle style;
-  };
-
-  // A grid should say "no intersection" one way. Cells that differ from the
-  // grid's usual way (empty vs. a space) are reported per row: they read the same,
-  // but a mixed sheet often means rows pasted from another version.
-  void report_cell_styles() {
-    std::size_t empty = 0, blank = 0;
-    for (const auto& s : styles_) {
-      if (s.style == CellStyle::Empty) ++empty;
-      if (s.style == CellStyle::Blank) ++blank;
-    }
-    if (empty == 0 || blank == 0) return;
-    CellStyle odd = blank >= empty ? CellStyle::Empty : CellStyle::Blank;
-    std::string usual = odd == CellStyle::Empty ? "a space (' ')" : "an empty cell";
-    std::string what = odd == CellStyle::Empty ? "empty cell" : "space-only cell";
-    std::map<int, std::vector<int>> by_line;
-    for (const auto& s : styles_)
-      if (s.style == odd) by_line[s.line].push_back(s.column);
-    for (auto& [line, cols] : by_line) {
-      std::string text = (cols.size() == 1 ? what : std::to_string(cols.size()) + " " + what + "s") +
-                         " where the grid otherwise uses " + usual +
-                         " for no intersection; read as no intersection";
-      if (cols.size() == 1) warn(line, cols.front(), text);
-      else warn_text(line, ", columns " + number_ranges(cols), text);
-    }
-  }
-
   // 6.5.2: V and R need a maximum override time, which a grid never states.
   void report_missing_override() {
     std::set<int> need;
@@ -558,8 +306,7 @@ class GridImporter {
   std::vector<std::string> extras_;            // what the extra header rows/columns became
   std::map<std::string, std::string> legend_;
   std::vector<Intersection> intersections_;
-  std::vector<StyledCell> styles_;
-  std::vector<std::pair<std::pair<int, int>, LoadIssue>> warnings_;
+  GridWarnings warnings_;
 };
 
 }  // namespace

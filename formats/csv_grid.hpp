@@ -7,10 +7,13 @@
 //    its header rows and label columns end, and whether the description row
 //    lines up with the id row;
 //  - csv_grid_orientation.cpp: which axis holds the causes, from evidence;
-//  - csv_grid.cpp: the elements, their numbers and the intersections.
+//  - csv_grid.cpp: the elements, with csv_grid_numbers.cpp for their numbers
+//    and names and csv_grid_cells.cpp for the intersections.
 #pragma once
 
 #include <cstddef>
+#include <map>
+#include <utility>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -93,6 +96,65 @@ struct OrientationDecision {
 // requested orientation, with any evidence against it as a disagreement.
 OrientationDecision decide_orientation(const Sheet& sheet, const Shape& shape,
                                        CsvOrientation requested, const std::string& source);
+
+// One cause or effect as the sheet has it, then as numbered and named.
+struct SheetElement {
+  std::string sheet_id;       // as written, trimmed
+  std::string text;           // description, trimmed
+  int line = 0;
+  int column = 0;             // of the id cell
+  int id = 0;
+  std::string name;
+  std::string tag;
+  std::string note;
+  std::string unnamed;        // the name when the id is empty: CAUSE_LINE_<n>, EFFECT_COL_<c>
+  std::string tag_from_sheet; // from a tag row or column
+};
+
+
+// The warnings of a grid import, handed out in file order (line, column).
+class GridWarnings {
+ public:
+  explicit GridWarnings(std::string source) : source_(std::move(source)) {}
+  // At "line L, column C" (the line alone when column is 0).
+  void at(int line, int column, std::string what) {
+    std::string where = (source_.empty() ? "" : source_ + ": ") + "line " + std::to_string(line);
+    if (column > 0) where += ", column " + std::to_string(column);
+    issues_.push_back({{line, column}, LoadIssue{std::move(where), std::move(what)}});
+  }
+  // At "line L, columns 3-12, 14".
+  void at_columns(int line, const std::vector<int>& columns, std::string what);
+  void add(int line, LoadIssue issue) { issues_.push_back({{line, 0}, std::move(issue)}); }
+  std::vector<LoadIssue> in_file_order();
+
+ private:
+  std::string source_;
+  std::vector<std::pair<std::pair<int, int>, LoadIssue>> issues_;
+};
+
+// Numbers and names the elements of one kind (`cause`, prefix `C`, at most
+// `limit`, 3.4): the number the sheet id ends in when every id has one, else
+// the position; names and tags are the sanitized ids, made unique with _2, _3.
+// A repeated id keeps both elements (the later one gets the next free number).
+// Defects (duplicates, ids out of order) are reported through warn.
+void number_elements(std::vector<SheetElement>& elements, const char* kind, const char* prefix,
+                     int limit, GridWarnings& warnings);
+
+// The elements of both axes, and which of them are the causes.
+struct GridAxes {
+  const std::vector<SheetElement>& rows;      // one per data row
+  const std::vector<std::size_t>& sheet_rows;  // the Sheet::rows index of each
+  const std::vector<SheetElement>& columns;    // one per data column
+  bool causes_are_rows;
+};
+
+// One intersection per marked cell, its footnotes explained by the legend
+// (`(1)` -> text) as its note. Stray values, lower-case marks, short rows,
+// unexplained footnotes and a mix of empty and blank cells are warnings.
+std::vector<model::Intersection> read_intersections(const Sheet& sheet, const Shape& shape,
+                                                    const GridAxes& axes,
+                                                    const std::map<std::string, std::string>& legend,
+                                                    GridWarnings& warnings);
 
 // Reads a grid: the three steps above. Throws LoadError.
 CsvImportResult import_grid(std::string_view text, const std::string& source,

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <random>
 #include <set>
 #include <sstream>
 #include <tuple>
@@ -324,6 +325,41 @@ TEST(GridExport, RoundTripKeepsTheIntersections) {
     EXPECT_EQ(export_csv_grid(import_csv(again, "again.csv").matrix, o), again);
   }
   EXPECT_EQ(export_csv_grid(m).substr(0, 17), ",Effects,\"Close i");
+}
+
+// Never a crash: seeded mutations of the transposed table and of an exported
+// grid either import or throw LoadError (run under the sanitizer build as well).
+TEST(GridRobustness, MutatedLayoutsImportOrFailCleanly) {
+  const std::string transposed = join(transpose(read_table("lsst-tma-interlock-table.csv")));
+  const std::string exported =
+      export_csv_grid(model::testing::every_field_matrix(), CsvOrientation::EffectsAsRows);
+  const std::string alphabet = ";,\"\n\r (1)NSVRX*#-_a9\tCausesEffects/";
+  std::mt19937 rng(20261123);
+  int imported = 0, rejected = 0;
+  for (const std::string* base : {&transposed, &exported}) {
+    for (int round = 0; round < 150; ++round) {
+      std::string text = *base;
+      const int edits = 1 + static_cast<int>(rng() % 6);
+      for (int k = 0; k < edits && !text.empty(); ++k) {
+        const std::size_t at = rng() % text.size();
+        const char c = alphabet[rng() % alphabet.size()];
+        switch (rng() % 3) {
+          case 0: text[at] = c; break;
+          case 1: text.insert(text.begin() + static_cast<long>(at), c); break;
+          default: text.erase(at, 1 + rng() % 40); break;
+        }
+      }
+      try {
+        import_csv(text, "mutant.csv");
+        ++imported;
+      } catch (const LoadError& e) {
+        EXPECT_FALSE(e.issues().empty());
+        ++rejected;
+      }
+    }
+  }
+  EXPECT_GT(imported, 0);
+  EXPECT_GT(rejected, 0);
 }
 
 }  // namespace
