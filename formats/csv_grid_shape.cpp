@@ -90,8 +90,18 @@ class ShapeFinder {
   Cells column_cells(std::size_t col, std::size_t from_row, std::size_t c0) const {
     Cells c;
     for (std::size_t r = from_row; r < rows_.size(); ++r)
-      if (!label_row(r, c0)) c = count(cell_text(rows_[r], col), c);
+      if (!cached_label_row(r, c0)) c = count(cell_text(rows_[r], col), c);
     return c;
+  }
+  // label_row, remembered per c0: column scans ask it for every row, and a
+  // hostile sheet may have thousands of rows and columns.
+  bool cached_label_row(std::size_t r, std::size_t c0) const {
+    if (cache_c0_ != c0) {
+      label_rows_.assign(rows_.size(), -1);
+      cache_c0_ = c0;
+    }
+    if (label_rows_[r] < 0) label_rows_[r] = label_row(r, c0) ? 1 : 0;
+    return label_rows_[r] == 1;
   }
   // A row or column of the corner block that reaches into the data: axis labels
   // (left of, or above, the data) and at most one mark-like token besides, such
@@ -152,6 +162,8 @@ class ShapeFinder {
  private:
   const std::vector<CsvRecord>& rows_;
   std::size_t width_ = 0;
+  mutable std::vector<signed char> label_rows_;
+  mutable std::size_t cache_c0_ = static_cast<std::size_t>(-1);
 };
 
 // The description row and the id row must cover the same columns: a row one
