@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "formats/csv.hpp"
+#include "formats/csv_text.hpp"
 
 namespace cemv::formats::grid {
 
@@ -118,9 +119,7 @@ class GridWarnings {
   explicit GridWarnings(std::string source) : source_(std::move(source)) {}
   // At "line L, column C" (the line alone when column is 0).
   void at(int line, int column, std::string what) {
-    std::string where = (source_.empty() ? "" : source_ + ": ") + "line " + std::to_string(line);
-    if (column > 0) where += ", column " + std::to_string(column);
-    issues_.push_back({{line, column}, LoadIssue{std::move(where), std::move(what)}});
+    issues_.push_back({{line, column}, LoadIssue{csv_text::where_of(source_, line, column), std::move(what)}});
   }
   // At "line L, columns 3-12, 14".
   void at_columns(int line, const std::vector<int>& columns, std::string what);

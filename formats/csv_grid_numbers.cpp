@@ -139,9 +139,7 @@ void number_elements(std::vector<SheetElement>& elements, const char* kind, cons
 
 void GridWarnings::at_columns(int line, const std::vector<int>& columns, std::string what) {
   issues_.push_back({{line, 0},
-                     LoadIssue{(source_.empty() ? "" : source_ + ": ") + "line " + std::to_string(line) +
-                                   ", columns " + number_ranges(columns),
-                               std::move(what)}});
+                     LoadIssue{where_of(source_, line) + ", columns " + number_ranges(columns), std::move(what)}});
 }
 
 std::vector<LoadIssue> GridWarnings::in_file_order() {
