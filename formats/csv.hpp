@@ -23,6 +23,11 @@ namespace cemv::formats {
 
 inline constexpr const char* kCsvLayout = "cemv-csv/1";
 
+// Which axis of a grid holds the causes (docs/csv.md "Orientation"). Auto
+// decides from the corner labels and the id patterns, and refuses when they
+// are missing or disagree.
+enum class CsvOrientation { Auto, CausesAsRows, EffectsAsRows };
+
 // ---- RFC 4180 reading -------------------------------------------------------
 
 struct CsvField {
@@ -55,6 +60,13 @@ std::string csv_quote(std::string_view field, char separator = ',');
 // The whole matrix as a `cemv-csv/1` file (CRLF line ends, deterministic).
 std::string export_csv(const model::Matrix& m);
 
+// The matrix as a C&E grid (docs/csv.md "Grid export"): descriptions and sheet
+// ids in the two header rows, one N/S/V/R/X/* cell per intersection, notes as
+// footnotes with legend rows. Auto means causes as rows. Importing it gives back
+// the same intersections; every other field stays out of a grid.
+std::string export_csv_grid(const model::Matrix& m,
+                            CsvOrientation orientation = CsvOrientation::CausesAsRows);
+
 // ---- Import -------------------------------------------------------------------
 
 enum class CsvLayoutKind { Auto, Records, Grid };
@@ -65,12 +77,18 @@ struct CsvImportOptions {
   // Grid layout only: the matrix name (6.1.2: at most 16 characters); empty =
   // the sanitized file stem.
   std::string matrix_name;
+  CsvOrientation orientation = CsvOrientation::Auto;  // grid layout only
+  bool strict = false;  // every warning is an error (LoadError), for CI
 };
 
 struct CsvImportResult {
   model::Matrix matrix;                    // already checked by parse_matrix
   std::vector<LoadIssue> warnings;  // in file order
   CsvLayoutKind layout = CsvLayoutKind::Records;
+  // Grid layout: how the sheet was read, for the engineer to check at a glance
+  // ("read 36 causes (rows 3-38, ids in column 2), ...; orientation ...").
+  std::string summary;
+  CsvOrientation orientation = CsvOrientation::CausesAsRows;  // grid layout only
 };
 
 // Reads either layout (Auto: the record layout when the first cell is one of its

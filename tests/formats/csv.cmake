@@ -1,5 +1,6 @@
 # Spreadsheet import/export (6.6, docs/csv.md).
-add_executable(test_formats_csv ${CMAKE_CURRENT_LIST_DIR}/test_csv.cpp ${CMAKE_CURRENT_LIST_DIR}/test_csv_grid.cpp)
+add_executable(test_formats_csv ${CMAKE_CURRENT_LIST_DIR}/test_csv.cpp ${CMAKE_CURRENT_LIST_DIR}/test_csv_grid.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/test_csv_layouts.cpp)
 target_link_libraries(test_formats_csv PRIVATE cemv_formats GTest::gtest_main)
 target_compile_definitions(test_formats_csv PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 gtest_discover_tests(test_formats_csv DISCOVERY_MODE PRE_TEST)
@@ -22,6 +23,10 @@ cemv_cli_test(NAME cli_import_csv_lsst_validate EXIT 1
 cemv_cli_test(NAME cli_import_csv_forced_grid EXIT 0 MATCH "effect id 'TMA-A-17' out of order"
   COMMAND $<TARGET_FILE:cemv> import-csv --layout grid ${LSST} -o ${CSV_TMP}/lsst3.json)
 cemv_cli_test(NAME cli_import_csv_separator_option EXIT 0 MATCH "\"name\": \"E_2\""
+  COMMAND $<TARGET_FILE:cemv> import-csv --separator tab --orientation causes-as-rows ${CSV_CASES}/tab_grid.tsv)
+# No corner labels, ids 1, 2 and T-1: no evidence of the orientation, so a refusal that asks for it.
+cemv_cli_test(NAME cli_import_csv_orientation_unknown EXIT 2
+  MATCH "tab_grid.tsv: line 2: cannot tell whether the causes are the rows or the columns.*--orientation"
   COMMAND $<TARGET_FILE:cemv> import-csv --separator tab ${CSV_CASES}/tab_grid.tsv)
 cemv_cli_test(NAME cli_import_csv_missing_file EXIT 2 MATCH "error: .*no_such_file.csv"
   COMMAND $<TARGET_FILE:cemv> import-csv ${CSV_CASES}/no_such_file.csv)
@@ -42,4 +47,33 @@ foreach(example tank-overfill burner-management pipeline-hipps compressor)
   cemv_cli_test(NAME cli_csv_round_trip_${example} EXIT 0 MATCH "round trip identical"
     COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/csv_cases/cli_round_trip.sh $<TARGET_FILE:cemv>
             examples/${example}/matrix.json ${CSV_TMP}/round_trip)
+endforeach()
+
+# Grid layouts (docs/csv.md "The grid layout"): the summary, --orientation, --strict and grid export.
+cemv_cli_test(NAME cli_import_csv_lsst_summary EXIT 0
+  MATCH "note: .*read 36 causes \\(rows 3-38, ids in column 2\\), 17 effects \\(columns 3-19, ids in row 2\\), 102 intersections; orientation causes-as-rows from the corner labels"
+  COMMAND $<TARGET_FILE:cemv> import-csv ${LSST} -o ${CSV_TMP}/lsst_summary.json)
+cemv_cli_test(NAME cli_import_csv_transposed_auto EXIT 0
+  MATCH "transposed table: 102 intersections as published; note: .*read 36 causes \\(columns 3-38, ids in row 2\\), 17 effects \\(rows 3-19, ids in column 2\\), 102 intersections; orientation effects-as-rows from the corner labels"
+  COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/csv_cases/cli_transposed_lsst.sh $<TARGET_FILE:cemv> ${LSST} ${CSV_TMP}/transposed_auto)
+cemv_cli_test(NAME cli_import_csv_transposed_orientation EXIT 0
+  MATCH "transposed table: 102 intersections as published; note: .*orientation effects-as-rows as given by --orientation"
+  COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/csv_cases/cli_transposed_lsst.sh $<TARGET_FILE:cemv> ${LSST} ${CSV_TMP}/transposed_option --orientation effects-as-rows)
+cemv_cli_test(NAME cli_import_csv_strict_refuses_lsst EXIT 2
+  MATCH "^error: 11 import warnings are an error under --strict"
+  COMMAND $<TARGET_FILE:cemv> import-csv --strict ${LSST} -o ${CSV_TMP}/lsst_strict.json)
+cemv_cli_test(NAME cli_import_csv_strict_clean_grid EXIT 0
+  MATCH "note: .*read 4 causes"
+  COMMAND bash -c "$<TARGET_FILE:cemv> export-csv --layout grid examples/tank-overfill/matrix.json -o ${CSV_TMP}/clean_grid.csv && $<TARGET_FILE:cemv> import-csv --strict ${CSV_TMP}/clean_grid.csv -o ${CSV_TMP}/clean_grid.json")
+cemv_cli_test(NAME cli_export_csv_bad_layout EXIT 2 MATCH "layout"
+  COMMAND $<TARGET_FILE:cemv> export-csv --layout sideways examples/tank-overfill/matrix.json)
+# Every example, in both orientations (the script fails on the first difference).
+file(GLOB example_matrices RELATIVE ${PROJECT_SOURCE_DIR} CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/examples/*/matrix.json)
+foreach(matrix ${example_matrices})
+  get_filename_component(example_dir ${matrix} DIRECTORY)
+  get_filename_component(example ${example_dir} NAME)
+  cemv_cli_test(NAME cli_csv_grid_round_trip_${example} EXIT 0
+    MATCH "^effects-as-rows: [0-9]+ intersections identical"
+    COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/csv_cases/cli_grid_round_trip.sh $<TARGET_FILE:cemv>
+            ${matrix} ${CSV_TMP}/grid_round_trip)
 endforeach()

@@ -245,7 +245,11 @@ TEST(GridImport, DuplicateEffectIdsAndUnnumberedIds) {
 TEST(GridImport, CommaSeparatedGridAndForcedLayout) {
   CsvImportOptions opt;
   opt.layout = CsvLayoutKind::Grid;
-  auto r = import_csv(",,A,B\n,,1,2\nc one,10,N,\"V(3)\"\n", "comma.csv", opt);
+  const std::string grid = ",,A,B\n,,1,2\nc one,10,N,\"V(3)\"\n";
+  // No corner labels and plain numbers as ids: nothing says which axis holds the causes.
+  EXPECT_THROW(import_csv(grid, "comma.csv", opt), LoadError);
+  opt.orientation = CsvOrientation::CausesAsRows;
+  auto r = import_csv(grid, "comma.csv", opt);
   EXPECT_EQ(r.matrix.effects.size(), 2u);
   EXPECT_EQ(r.matrix.causes.at(0).id, 10);
   EXPECT_EQ(r.matrix.causes.at(0).name, "C_10");  // a leading digit gets a letter

@@ -1,0 +1,327 @@
+// The shape of a C&E grid (docs/csv.md "Shape"): the padding around it, its
+// header rows and label columns, and whether its description row lines up with
+// its id row. Like the Safety Matrix's own import (6.6), a sheet that does not
+// match is refused; nothing is guessed.
+#include <algorithm>
+#include <regex>
+
+#include "formats/csv_grid.hpp"
+#include "formats/csv_text.hpp"
+#include "model/text.hpp"
+
+namespace cemv::formats::grid {
+
+using namespace csv_text;
+
+namespace {
+
+// Which separator a hand-made grid uses: the most frequent of ; , TAB outside
+// quotes in its first two lines (';' wins ties: the separator of spreadsheets
+// in locales with a decimal comma, like the LSST table).
+char detect_separator(std::string_view text) {
+  std::size_t semi = 0, comma = 0, tab = 0;
+  bool quoted = false;
+  int lines = 0;
+  for (std::size_t i = 0; i < text.size() && lines < 2; ++i) {
+    char c = text[i];
+    if (c == '"') quoted = !quoted;
+    if (quoted) continue;
+    if (c == '\n') ++lines;
+    semi += c == ';';
+    comma += c == ',';
+    tab += c == '\t';
+  }
+  if (tab > semi && tab > comma) return '\t';
+  if (comma > semi) return ',';
+  return ';';
+}
+
+bool blank(const CsvRecord& r) {
+  return std::all_of(r.fields.begin(), r.fields.end(),
+                     [](const CsvField& f) { return trim(f.text).empty(); });
+}
+
+std::size_t leading_blank_fields(const CsvRecord& r) {
+  std::size_t n = 0;
+  while (n < r.fields.size() && trim(r.fields[n].text).empty()) ++n;
+  return n;
+}
+
+}  // namespace
+
+bool corner_label_like(const std::string& text) {
+  static const std::regex label(
+      R"(^(\s|[/\\&,;:.\-x#]|and|or|of|the|list|ids?|no|numbers?|descriptions?|tags?|names?|causes?|detections?|initiators?|initiating|trips?|inputs?|effects?|actuations?|actions?|final|elements?|outputs?)+$)",
+      std::regex::icase);
+  static const std::regex word(
+      R"((cause|detection|initiat|trip|input|effect|actuation|action|final|output))", std::regex::icase);
+  return !text.empty() && std::regex_match(text, label) && std::regex_search(text, word);
+}
+
+namespace {
+
+struct Cells {
+  int marks = 0;
+  int other = 0;
+  int non_blank() const { return marks + other; }
+};
+
+Cells count(const std::string& t, Cells c) {
+  if (t.empty()) return c;
+  if (parse_mark(t)) ++c.marks;
+  else ++c.other;
+  return c;
+}
+
+// Row and column tests against the current boundaries (r0, c0).
+class ShapeFinder {
+ public:
+  explicit ShapeFinder(const Sheet& sheet) : rows_(sheet.rows) {
+    for (const auto& r : rows_) width_ = std::max(width_, r.fields.size());
+  }
+
+  std::size_t width() const { return width_; }
+
+  Cells row_cells(std::size_t r, std::size_t from_column) const {
+    Cells c;
+    for (std::size_t i = from_column; i < rows_[r].fields.size(); ++i) c = count(cell_text(rows_[r], i), c);
+    return c;
+  }
+  Cells column_cells(std::size_t col, std::size_t from_row, std::size_t c0) const {
+    Cells c;
+    for (std::size_t r = from_row; r < rows_.size(); ++r)
+      if (!cached_label_row(r, c0)) c = count(cell_text(rows_[r], col), c);
+    return c;
+  }
+  // label_row, remembered per c0: column scans ask it for every row, and a
+  // hostile sheet may have thousands of rows and columns.
+  bool cached_label_row(std::size_t r, std::size_t c0) const {
+    if (cache_c0_ != c0) {
+      label_rows_.assign(rows_.size(), -1);
+      cache_c0_ = c0;
+    }
+    if (label_rows_[r] < 0) label_rows_[r] = label_row(r, c0) ? 1 : 0;
+    return label_rows_[r] == 1;
+  }
+  // A row or column of the corner block that reaches into the data: axis labels
+  // (left of, or above, the data) and at most one mark-like token besides, such
+  // as a lone `N` in the corner.
+  bool label_row(std::size_t r, std::size_t c0) const {
+    int labels = 0, other = 0;
+    for (std::size_t i = 0; i < rows_[r].fields.size(); ++i) {
+      const std::string t = cell_text(rows_[r], i);
+      if (i < c0 && corner_label_like(t)) ++labels;
+      else if (!t.empty()) other += parse_mark(t) ? 1 : 2;
+    }
+    return labels > 0 && other <= 1;
+  }
+  bool label_column(std::size_t col, std::size_t r0) const {
+    int labels = 0, other = 0;
+    for (std::size_t r = 0; r < rows_.size(); ++r) {
+      const std::string t = cell_text(rows_[r], col);
+      if (r < r0 && corner_label_like(t)) ++labels;
+      else if (!t.empty()) other += parse_mark(t) ? 1 : 2;
+    }
+    return labels > 0 && other <= 1;
+  }
+
+  enum class Round { NoGrid, Moved, Settled };
+
+  // One round: the header rows from the current label columns (the last row with
+  // text over the data columns above the first row of marks is the id row), then
+  // the label columns from those rows in the same way.
+  Round settle(std::size_t& r0, std::size_t& c0) const {
+    const std::size_t old_r0 = r0, old_c0 = c0;
+    std::optional<std::size_t> marked_row;
+    for (std::size_t r = 1; r < rows_.size() && !marked_row; ++r)
+      if (row_cells(r, c0).marks > 0 && !label_row(r, c0)) marked_row = r;
+    if (!marked_row) return Round::NoGrid;
+    std::optional<std::size_t> id_row;
+    for (std::size_t r = 0; r < *marked_row; ++r)
+      if (row_cells(r, c0).non_blank() > 0 && !label_row(r, c0)) id_row = r;
+    if (!id_row) return Round::NoGrid;
+    r0 = *id_row + 1;
+    while (r0 < rows_.size() && (label_row(r0, c0) || blank(rows_[r0]))) ++r0;
+
+    std::optional<std::size_t> marked_column;
+    for (std::size_t col = 1; col < width_ && !marked_column; ++col)
+      if (column_cells(col, r0, c0).marks > 0 && !label_column(col, r0)) marked_column = col;
+    if (!marked_column) return Round::NoGrid;
+    // Left of the first marked column, a column with an id in the id row is still
+    // an element (one never marked, or holding only stray values).
+    c0 = *marked_column;
+    while (c0 > 1) {
+      const std::string id = cell_text(rows_[*id_row], c0 - 1);
+      if (id.empty() || corner_label_like(id)) break;
+      --c0;
+    }
+    while (c0 < width_ && label_column(c0, r0)) ++c0;
+    return r0 != old_r0 || c0 != old_c0 ? Round::Moved : Round::Settled;
+  }
+
+ private:
+  const std::vector<CsvRecord>& rows_;
+  std::size_t width_ = 0;
+  mutable std::vector<signed char> label_rows_;
+  mutable std::size_t cache_c0_ = static_cast<std::size_t>(-1);
+};
+
+// The description row and the id row must cover the same columns: a row one
+// field short (its leading empty field lost) or one field long puts every
+// description over the wrong id.
+void check_alignment(const Sheet& sheet, const Shape& shape, const std::string& source) {
+  if (shape.description_row == shape.id_row) return;
+  const CsvRecord& d = sheet.rows[shape.description_row];
+  const CsvRecord& ids = sheet.rows[shape.id_row];
+  auto end_of_text = [](const CsvRecord& r) {
+    std::size_t end = 0;
+    for (std::size_t i = 0; i < r.fields.size(); ++i)
+      if (!cell_text(r, i).empty()) end = i + 1;
+    return end;
+  };
+  const std::size_t d_end = end_of_text(d), id_end = end_of_text(ids);
+  if (d_end == id_end || d.fields.size() == ids.fields.size()) return;
+  // What the first data column would read: its id under someone else's description.
+  std::string example;
+  const std::size_t c0 = shape.first_data_column;
+  if (!cell_text(ids, c0).empty() && !cell_text(d, c0).empty())
+    example = " (column " + std::to_string(sheet.column_of(c0)) + ": id " +
+              model::in_quotes(cell_text(ids, c0)) + " under " + model::in_quotes(cell_text(d, c0)) + ")";
+  auto fields = [&](const CsvRecord& r) {
+    return std::to_string(r.fields.size() + sheet.empty_columns_skipped) + " fields";
+  };
+  throw LoadError({{where_of(source, d.line),
+                    "the description row (line " + std::to_string(d.line) + ", " + fields(d) +
+                        ", text up to column " + std::to_string(sheet.column_of(d_end - 1)) +
+                        ") and the id row (line " + std::to_string(ids.line) + ", " + fields(ids) +
+                        ", ids up to column " + std::to_string(sheet.column_of(id_end - 1)) +
+                        ") do not cover the same columns: the descriptions would be misaligned "
+                        "with their ids and cells" + example +
+                        "; give both rows the same leading and trailing fields (docs/csv.md "
+                        "\"Header alignment\")"}});
+}
+
+}  // namespace
+
+std::string cell_text(const CsvRecord& row, std::size_t index) {
+  return index < row.fields.size() ? one_line(trim(row.fields[index].text)) : std::string();
+}
+
+Sheet read_sheet(std::string_view text, char separator, const std::string& source) {
+  Sheet sheet;
+  sheet.rows = parse_csv(text, separator ? separator : detect_separator(text), false, source);
+  while (!sheet.rows.empty() && blank(sheet.rows.back())) sheet.rows.pop_back();
+  while (!sheet.rows.empty() && blank(sheet.rows.front())) {
+    sheet.rows.erase(sheet.rows.begin());
+    ++sheet.empty_rows_skipped;
+  }
+  std::size_t skip = std::string::npos;
+  for (const auto& r : sheet.rows)
+    if (!blank(r)) skip = std::min(skip, leading_blank_fields(r));
+  if (skip == std::string::npos) skip = 0;
+  sheet.empty_columns_skipped = skip;
+  static const std::regex legend_key(R"(^\(\s*\d+\s*\)$)");
+  std::vector<CsvRecord> grid_rows;
+  for (auto& r : sheet.rows) {
+    r.fields.erase(r.fields.begin(), r.fields.begin() + static_cast<long>(std::min(skip, r.fields.size())));
+    if (!grid_rows.empty() && std::regex_match(cell_text(r, 0), legend_key)) sheet.legend.push_back(std::move(r));
+    else grid_rows.push_back(std::move(r));
+  }
+  sheet.rows = std::move(grid_rows);
+  return sheet;
+}
+
+Shape find_shape(const Sheet& sheet, const std::string& source) {
+  const auto& rows = sheet.rows;
+  auto refuse = [&](int line, const std::string& what) {
+    throw LoadError({{where_of(source, line), "not a C&E grid: " + what + " (docs/csv.md)"}});
+  };
+  if (rows.size() < 2)
+    refuse(rows.empty() ? 1 : rows.back().line,
+           "expected header rows (descriptions, ids) above rows of marks N, S, V, R, X or *");
+  ShapeFinder finder(sheet);
+  std::size_t r0 = 1, c0 = finder.width() >= 3 ? 2 : 1;
+  auto round = ShapeFinder::Round::Moved;
+  for (int k = 0; k < 6 && round == ShapeFinder::Round::Moved; ++k) round = finder.settle(r0, c0);
+  const bool found = round != ShapeFinder::Round::NoGrid;
+  Shape shape;
+  shape.first_data_row = r0;
+  shape.first_data_column = c0;
+  bool any_header = false;
+  for (std::size_t r = 0; r < r0; ++r) {
+    if (finder.row_cells(r, c0).non_blank() == 0 || finder.label_row(r, c0)) continue;
+    if (!any_header) shape.description_row = r;
+    shape.id_row = r;
+    any_header = true;
+  }
+  if (!found || !any_header || r0 >= rows.size())
+    refuse(rows.back().line,
+           any_header ? "no rows of marks N, S, V, R, X or * below the header rows"
+                      : "no header row of ids above rows of marks N, S, V, R, X or *");
+  for (std::size_t r = 0; r < r0; ++r)
+    if (r != shape.description_row && r != shape.id_row && finder.row_cells(r, c0).non_blank() > 0 &&
+        !finder.label_row(r, c0))
+      shape.extra_rows.push_back(r);
+  for (std::size_t col = 0; col < c0; ++col) {
+    if (finder.column_cells(col, r0, c0).non_blank() == 0 || finder.label_column(col, r0)) continue;
+    if (!shape.description_column) shape.description_column = col;
+    else if (*shape.id_column != *shape.description_column) shape.extra_columns.push_back(*shape.id_column);
+    shape.id_column = col;
+  }
+  std::size_t end = 0;
+  for (std::size_t r : {shape.description_row, shape.id_row})
+    for (std::size_t i = c0; i < rows[r].fields.size(); ++i)
+      if (!cell_text(rows[r], i).empty()) end = i + 1;
+  shape.column_end = end;
+  check_alignment(sheet, shape, source);
+  return shape;
+}
+
+std::string row_label(const Sheet& sheet, const Shape& shape, std::size_t row) {
+  std::string label;
+  for (std::size_t i = 0; i < shape.first_data_column; ++i)
+    if (auto t = cell_text(sheet.rows[row], i); !t.empty()) join_to(label, " ", t);
+  return label;
+}
+
+std::string column_label(const Sheet& sheet, const Shape& shape, std::size_t column) {
+  std::string label;
+  for (std::size_t r = 0; r < shape.first_data_row; ++r)
+    if (auto t = cell_text(sheet.rows[r], column); !t.empty()) join_to(label, " ", t);
+  return label;
+}
+
+std::optional<int> trailing_number(std::string_view s) {
+  std::size_t i = s.size();
+  while (i > 0 && s[i - 1] >= '0' && s[i - 1] <= '9') --i;
+  if (i == s.size() || s.size() - i > 6) return std::nullopt;
+  return std::stoi(std::string(s.substr(i)));
+}
+
+std::optional<Mark> parse_mark(std::string_view t) {
+  if (t.empty() || std::string_view("NSVRXnsvrx*").find(t[0]) == std::string_view::npos)
+    return std::nullopt;
+  Mark mark{t[0], {}};
+  std::size_t i = 1;
+  auto skip_blanks = [&] {
+    while (i < t.size() && (t[i] == ' ' || t[i] == '\t')) ++i;
+  };
+  skip_blanks();
+  while (i < t.size()) {
+    if (t[i] != '(') return std::nullopt;
+    ++i;
+    skip_blanks();
+    std::size_t start = i;
+    while (i < t.size() && t[i] >= '0' && t[i] <= '9') ++i;
+    if (i == start) return std::nullopt;
+    std::string number(t.substr(start, i - start));
+    skip_blanks();
+    if (i >= t.size() || t[i] != ')') return std::nullopt;
+    ++i;
+    skip_blanks();
+    mark.footnotes.push_back(std::move(number));
+  }
+  return mark;
+}
+
+}  // namespace cemv::formats::grid
