@@ -1,0 +1,58 @@
+// The checker's public API: one function. Given a validated matrix and its
+// properties, decide every property and check every answer before reporting
+// it (docs/checker.md):
+//   1. encode the property's cone of influence and compile its monitor;
+//   2. decide vacuity (assumptions satisfiable, antecedent reachable);
+//   3. run the engine portfolio (BMC, k-induction, PDR, relational invariants);
+//   4. re-check the answer: a counterexample is replayed on the reference
+//      runtime and judged by the concrete property evaluator; an invariant or
+//      induction step is re-proved by a fresh solver;
+//   5. for a proof, find its support (the matrix elements it needs).
+// A check that fails throws InternalError (exit 4), never a silent pass.
+#pragma once
+
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "checker/result.hpp"
+#include "model/matrix.hpp"
+#include "properties/ast.hpp"
+
+namespace cemv::checker {
+
+// A claim of the tool that its own independent check refuted (a counterexample
+// the runtime does not reproduce, an invariant a fresh solver does not accept).
+// `details` holds both sides (e.g. the two traces) for the bug report.
+class InternalError : public std::runtime_error {
+ public:
+  InternalError(const std::string& what, std::string details = "")
+      : std::runtime_error(what), details_(std::move(details)) {}
+  const std::string& details() const { return details_; }
+
+ private:
+  std::string details_;
+};
+
+struct CheckOptions {
+  double property_timeout_s = 0.0;  // per property wall clock; 0 = none
+  double total_timeout_s = 0.0;     // whole run; 0 = none
+  int jobs = 1;                     // worker threads over properties
+  int shard_index = 1;              // --shard i/n: 1-based i
+  int shard_count = 1;
+  std::string out_dir;              // counterexample scenarios go here ("" = nowhere)
+  bool support = true;              // compute the support of proofs
+  bool standard = false;            // the properties are the standard set
+  // Called once per finished property (any thread, serialised by the checker).
+  std::function<void(const PropertyResult&)> on_result;
+};
+
+CheckResult check(const model::Matrix& m, const std::vector<properties::PropertyFile>& files,
+                  const CheckOptions& options);
+
+// The properties of `files` that shard i of n checks: a deterministic split by
+// position in the concatenated list (property k goes to shard k mod n + 1).
+bool in_shard(std::size_t index, int shard_index, int shard_count);
+
+}  // namespace cemv::checker

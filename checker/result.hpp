@@ -1,0 +1,78 @@
+// What `cemv check` found: one verdict per property, each already checked
+// independently (counterexamples replayed on the reference runtime and judged
+// by the concrete property evaluator; invariants and induction steps re-proved
+// by a fresh solver). Data only: the printers in reports/ turn it into text,
+// cemv-result/1 JSON, JUnit XML and SARIF (docs/checker.md).
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "model/io.hpp"
+
+namespace cemv::checker {
+
+// The verdicts of docs/checker.md. Invariant, Never and Response end Proved or
+// Falsified; Reachable ends Reachable or Unreachable. Vacuous: the assumptions
+// cannot hold together, or the antecedent of an implication or the trigger of
+// a response can never hold. Unknown carries its reason.
+enum class Verdict { Proved, Falsified, Reachable, Unreachable, Vacuous, Unknown };
+const char* to_string(Verdict);
+
+// Exit status of `cemv check` for a set of verdicts: 0 all proved/reachable,
+// 1 something falsified, unreachable or vacuous, 3 some unknown and nothing
+// falsified. (2 invalid input and 4 internal error never come from verdicts.)
+int exit_code(const std::vector<Verdict>& verdicts);
+
+// One matrix element a proof depends on (its support, an inductive validity
+// core over matrix elements): "intersection[3,2]", "cause[1].bypass_tag", ...
+struct SupportElement {
+  std::string key;
+  std::string description;
+};
+
+// A concrete run: the cycle inputs and the runtime's observables (in
+// model::observables order) after each cycle.
+struct ConcreteTrace {
+  std::vector<model::CycleInput> inputs;
+  std::vector<std::vector<int>> observables;
+};
+
+struct PropertyResult {
+  std::string name;
+  std::string description;
+  std::string kind;            // "invariant", "never", "reachable", "response"
+  int line = 0;                // of the property in its file (0 = generated)
+  int column = 0;
+  std::string file;            // the property file ("" for --standard)
+  Verdict verdict = Verdict::Unknown;
+  std::string method;          // "k-induction", "pdr", "bmc", "invariants+induction", ...
+  int depth = 0;               // k of the proof, or length of the trace in cycles
+  std::string reason;          // Unknown: "time limit", "bound reached", ...; Vacuous: why
+  std::string invariant;       // the proof's strengthening invariant (SMT-LIB text), if any
+  std::vector<std::string> notes;  // e.g. duration rounding
+  std::vector<SupportElement> support;  // Proved: the elements the proof needs
+  bool support_minimal = false;         // support reduced to a minimal set by re-proving
+  std::optional<ConcreteTrace> trace;   // Falsified / Reachable: the replayed run
+  int violation_cycle = -1;             // 0-based cycle of the violation / witness
+  std::string scenario_file;            // the trace as cemv-scenario/1 (under --out)
+  std::string timing_table;             // readable table of the signals that matter
+  double seconds = 0.0;                 // wall time (not in deterministic outputs)
+  std::vector<std::string> matters;     // observable keys the property reads (for tables)
+};
+
+struct CheckResult {
+  std::string matrix_name;
+  std::string matrix_signature;
+  std::string tool_version;
+  std::vector<std::string> property_files;
+  bool standard = false;
+  std::string shard;                  // "i/n" or ""
+  std::vector<PropertyResult> properties;
+  std::vector<SupportElement> unsupported;  // --standard: elements no property depends on
+  bool interrupted = false;           // the overall time limit ended the run
+};
+
+}  // namespace cemv::checker
