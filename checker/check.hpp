@@ -8,11 +8,11 @@
 //      runtime and judged by the concrete property evaluator; an invariant or
 //      induction step is re-proved by a fresh solver;
 //   5. for a proof, find its support (the matrix elements it needs).
-// A check that fails throws InternalError (exit 4), never a silent pass.
+// A check that fails throws checker::InternalError (checker/prover.hpp, exit 4),
+// never a silent pass.
 #pragma once
 
 #include <functional>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -21,19 +21,6 @@
 #include "properties/ast.hpp"
 
 namespace cemv::checker {
-
-// A claim of the tool that its own independent check refuted (a counterexample
-// the runtime does not reproduce, an invariant a fresh solver does not accept).
-// `details` holds both sides (e.g. the two traces) for the bug report.
-class InternalError : public std::runtime_error {
- public:
-  InternalError(const std::string& what, std::string details = "")
-      : std::runtime_error(what), details_(std::move(details)) {}
-  const std::string& details() const { return details_; }
-
- private:
-  std::string details_;
-};
 
 struct CheckOptions {
   double property_timeout_s = 0.0;  // per property wall clock; 0 = none

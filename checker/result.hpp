@@ -18,13 +18,13 @@ namespace cemv::checker {
 // Falsified; Reachable ends Reachable or Unreachable. Vacuous: the assumptions
 // cannot hold together, or the antecedent of an implication or the trigger of
 // a response can never hold. Unknown carries its reason.
-enum class Verdict { Proved, Falsified, Reachable, Unreachable, Vacuous, Unknown };
-const char* to_string(Verdict);
+enum class PropertyVerdict { Proved, Falsified, Reachable, Unreachable, Vacuous, Unknown };
+const char* to_string(PropertyVerdict);
 
 // Exit status of `cemv check` for a set of verdicts: 0 all proved/reachable,
 // 1 something falsified, unreachable or vacuous, 3 some unknown and nothing
 // falsified. (2 invalid input and 4 internal error never come from verdicts.)
-int exit_code(const std::vector<Verdict>& verdicts);
+int exit_code(const std::vector<PropertyVerdict>& verdicts);
 
 // One matrix element a proof depends on (its support, an inductive validity
 // core over matrix elements): "intersection[3,2]", "cause[1].bypass_tag", ...
@@ -47,7 +47,7 @@ struct PropertyResult {
   int line = 0;                // of the property in its file (0 = generated)
   int column = 0;
   std::string file;            // the property file ("" for --standard)
-  Verdict verdict = Verdict::Unknown;
+  PropertyVerdict verdict = PropertyVerdict::Unknown;
   std::string method;          // "k-induction", "pdr", "bmc", "invariants+induction", ...
   int depth = 0;               // k of the proof, or length of the trace in cycles
   std::string reason;          // Unknown: "time limit", "bound reached", ...; Vacuous: why
