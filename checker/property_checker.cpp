@@ -112,11 +112,16 @@ struct Judgement {
 };
 Judgement judge(const model::Matrix& m, const properties::PropertyFile& f, const properties::Property& p,
                 const ConcreteTrace& t) {
-  properties::Evaluation ev = properties::evaluate(m, p, f.assumptions, t.inputs, t.observables);
+  properties::Trace trace;
+  for (std::size_t k = 0; k < t.inputs.size(); ++k) trace.push_back({t.inputs[k], t.observables[k]});
+  properties::Evaluation ev = properties::Evaluator(m).evaluate(p, f.assumptions, trace);
   Judgement j;
-  if (!ev.assumptions_held) return j;
-  j.violated = p.kind == PropertyKind::Reachable ? ev.witnessed : !ev.holds;
-  j.cycle = ev.cycle;
+  // Only the judged prefix counts: the cycles in which every assumption held.
+  bool found = p.kind == PropertyKind::Reachable ? ev.holds : !ev.holds;
+  if (found && ev.cycle) {
+    j.violated = true;
+    j.cycle = static_cast<int>(*ev.cycle);
+  }
   return j;
 }
 
@@ -160,7 +165,7 @@ ProverResult PropertyChecker::decide(const model::Matrix& m, Goal goal, bool sli
     z3::context ctx;
     OwnedProblem op = factory(m, goal, sliced)(ctx);
     limits.max_depth = 0;
-    return make_bmc_prover()->prove(op.problem, limits);
+    return Bmc{}.prove(op.problem, limits);
   }
   return prove_portfolio(factory(m, goal, sliced), limits);
 }
@@ -202,11 +207,10 @@ bool PropertyChecker::confirm_trace(const ProverResult& r, bool sliced, Property
   return true;
 }
 
-void PropertyChecker::recheck_proof(const ProverResult& r) const {
-  // A fresh context and solver: nothing of the engine's state is reused.
-  z3::context ctx;
-  OwnedProblem op = factory(m_, Goal::Property, true)(ctx);
-  recheck_proved(op.problem, r);  // throws InternalError when the proof does not check
+void PropertyChecker::recheck_proof(const ProverResult& r, Goal goal, bool sliced) const {
+  // The factory builds the problem again in a fresh context for a fresh
+  // solver: nothing of the engine's state takes part. Throws InternalError.
+  check::recheck_proof(factory(m_, goal, sliced), r);
 }
 
 std::optional<std::string> PropertyChecker::vacuity() const {
@@ -215,7 +219,7 @@ std::optional<std::string> PropertyChecker::vacuity() const {
   if (has_antecedent_) {
     ProverResult t = decide(m_, Goal::Antecedent, true, deadline_);
     if (t.verdict == Verdict::Proved) {
-      recheck_proof(t);
+      recheck_proof(t, Goal::Antecedent, true);
       return p_.kind == PropertyKind::Response ? "the trigger can never hold" : "the antecedent can never hold";
     }
   }
@@ -249,12 +253,16 @@ PropertyResult PropertyChecker::run() {
 
   ProverResult r = decide(m_, Goal::Property, true, deadline_);
   bool sliced = true;
+  // The engine's own trace first re-simulated on the encoding (an engine
+  // bug shows here), then replayed on the runtime (an encoder bug shows there).
+  if (r.verdict == Verdict::Falsified) check::replay_counterexample(factory(m_, Goal::Property, true), r.cex);
   if (r.verdict == Verdict::Falsified && !confirm_trace(r, true, out)) {
     // A slice over-approximates what lies outside the cone (first-out groups,
     // mutual locks: docs/encoding.md "Slices"), so a slice's trace may not be a
     // run of the whole matrix. The full encoding is exact: its trace must replay.
     sliced = false;
     r = decide(m_, Goal::Property, false, deadline_);
+    if (r.verdict == Verdict::Falsified) check::replay_counterexample(factory(m_, Goal::Property, false), r.cex);
     if (r.verdict == Verdict::Falsified && !confirm_trace(r, false, out))
       throw InternalError("the runtime does not reproduce the counterexample to property " + p_.name +
                           " (" + file_.file_name + ")\n" + out.reason);
@@ -266,7 +274,7 @@ PropertyResult PropertyChecker::run() {
       out.verdict = p_.kind == PropertyKind::Reachable ? PropertyVerdict::Reachable : PropertyVerdict::Falsified;
       break;
     case Verdict::Proved: {
-      recheck_proof(r);
+      recheck_proof(r, Goal::Property, sliced);
       out.invariant = r.invariant.text();
       if (auto why = vacuity()) {
         out.verdict = PropertyVerdict::Vacuous;

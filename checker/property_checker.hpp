@@ -42,7 +42,7 @@ class PropertyChecker {
   // Replays `r.cex`; fills the trace fields of `out`. False when the runtime
   // does not reproduce it.
   bool confirm_trace(const ProverResult& r, bool sliced, PropertyResult& out) const;
-  void recheck_proof(const ProverResult& r) const;
+  void recheck_proof(const ProverResult& r, Goal goal, bool sliced) const;
   std::optional<std::string> vacuity() const;
   void find_support(PropertyResult& out) const;
 
