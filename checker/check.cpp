@@ -44,8 +44,8 @@ bool in_shard(std::size_t index, int shard_index, int shard_count) {
   return static_cast<int>(index % static_cast<std::size_t>(shard_count)) + 1 == shard_index;
 }
 
-CheckResult check(const model::Matrix& m, const std::vector<properties::PropertyFile>& files,
-                  const CheckOptions& options) {
+CheckResult check_properties(const model::Matrix& m, const std::vector<properties::PropertyFile>& files,
+                             const CheckOptions& options) {
   using Clock = std::chrono::steady_clock;
   const auto start = Clock::now();
   const auto total_deadline =

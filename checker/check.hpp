@@ -1,4 +1,4 @@
-// The checker's public API: one function. Given a validated matrix and its
+// The checker's public API: one function, check_properties. Given a validated matrix and its
 // properties, decide every property and check every answer before reporting
 // it (docs/checker.md):
 //   1. encode the property's cone of influence and compile its monitor;
@@ -35,8 +35,8 @@ struct CheckOptions {
   std::function<void(const PropertyResult&)> on_result;
 };
 
-CheckResult check(const model::Matrix& m, const std::vector<properties::PropertyFile>& files,
-                  const CheckOptions& options);
+CheckResult check_properties(const model::Matrix& m, const std::vector<properties::PropertyFile>& files,
+                             const CheckOptions& options);
 
 // The properties of `files` that shard i of n checks: a deterministic split by
 // position in the concatenated list (property k goes to shard k mod n + 1).

@@ -12,6 +12,7 @@
 #include "checker/replay.hpp"
 #include "checker/support.hpp"
 #include "encoder/encode.hpp"
+#include "model/format.hpp"
 #include "properties/evaluator.hpp"
 #include "properties/monitor.hpp"
 
