@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "checker/result.hpp"
+#include "encoder/encode.hpp"
 #include "model/matrix.hpp"
 #include "properties/ast.hpp"
 
@@ -33,6 +34,10 @@ struct CheckOptions {
   bool standard = false;            // the properties are the standard set
   // Called once per finished property (any thread, serialised by the checker).
   std::function<void(const PropertyResult&)> on_result;
+  // A modifier of every encoding the checker builds, applied before the
+  // property's monitor is compiled into it (Pono's modifiers/). Tests use it
+  // to plant a wrong rule and see the runtime replay catch it.
+  std::function<void(encoder::Encoding&)> modify_encoding;
 };
 
 CheckResult check_properties(const model::Matrix& m, const std::vector<properties::PropertyFile>& files,

@@ -145,8 +145,10 @@ ProblemFactory PropertyChecker::factory(const model::Matrix& m, Goal goal, bool 
                                           : std::vector<model::Node>{};
   const properties::Property* p = &p_;
   const properties::PropertyFile* f = &file_;
-  return [m, roots, p, f, goal](z3::context& ctx) {
+  auto modify = options_.modify_encoding;
+  return [m, roots, p, f, goal, modify](z3::context& ctx) {
     std::shared_ptr<encoder::Encoding> enc = encoder::encode(ctx, m, roots);
+    if (modify) modify(*enc);
     properties::Monitor mon = properties::compile_monitor(*enc, *p, f->assumptions);
     z3::expr good = mon.good;
     if (goal == Goal::Antecedent) good = mon.antecedent ? !*mon.antecedent : ctx.bool_val(true);

@@ -37,6 +37,9 @@ std::vector<Case> all_cases() {
   return out;
 }
 
+// Test names and failure messages show the example and the property.
+void PrintTo(const Case& c, std::ostream* os) { *os << c.example << " " << c.property; }
+
 class ExampleRequirement : public ::testing::TestWithParam<Case> {};
 
 TEST_P(ExampleRequirement, ReachesItsExpectedVerdict) {
