@@ -18,7 +18,7 @@
 
 #include "checker/check.hpp"
 #include "checker/engines/bmc.hpp"
-#include "model/format.hpp"
+#include "formats/matrix_json.hpp"
 #include "properties/monitor.hpp"
 #include "properties/parser.hpp"
 #include "properties/standard.hpp"
@@ -49,7 +49,7 @@ void count_verdicts(benchmark::State& state, const checker::CheckResult& r) {
 
 // One example requirement, by example and property name.
 void BM_ExampleRequirement(benchmark::State& state, const std::string& ex, const std::string& property) {
-  model::Matrix m = model::load_matrix(example(ex) / "matrix.json");
+  model::Matrix m = formats::load_matrix(example(ex) / "matrix.json");
   auto file = properties::load_properties(example(ex) / "requirements.props", m);
   std::erase_if(file.properties, [&](const properties::Property& p) { return p.name != property; });
   checker::CheckResult r;
@@ -60,7 +60,7 @@ void BM_ExampleRequirement(benchmark::State& state, const std::string& ex, const
 
 // Requirement 4 beside plain BMC of the same property to the timer's depth.
 void BM_Req4PlainBmcToTimerDepth(benchmark::State& state) {
-  model::Matrix m = model::load_matrix(example("pipeline-hipps") / "matrix.json");
+  model::Matrix m = formats::load_matrix(example("pipeline-hipps") / "matrix.json");
   auto file = properties::load_properties(example("pipeline-hipps") / "requirements.props", m);
   const properties::Property* req4 = nullptr;
   for (const auto& p : file.properties) if (p.name.rfind("req4", 0) == 0) req4 = &p;
@@ -108,7 +108,7 @@ BENCHMARK(BM_StandardSet)->Arg(8)->Arg(16)->Arg(32)->Arg(64)->Arg(128)
 // Registers one benchmark per example requirement, in file order.
 int register_requirements() {
   for (const char* ex : {"tank-overfill", "burner-management", "pipeline-hipps", "compressor"}) {
-    model::Matrix m = model::load_matrix(example(ex) / "matrix.json");
+    model::Matrix m = formats::load_matrix(example(ex) / "matrix.json");
     auto file = properties::load_properties(example(ex) / "requirements.props", m);
     for (const auto& p : file.properties)
       benchmark::RegisterBenchmark(("BM_ExampleRequirement/" + std::string(ex) + "/" + p.name).c_str(),

@@ -9,7 +9,7 @@
 #include <thread>
 
 #include "checker/property_checker.hpp"
-#include "model/format.hpp"
+#include "formats/matrix_json.hpp"
 
 #ifndef CEMV_VERSION
 #define CEMV_VERSION "0"
@@ -55,7 +55,7 @@ CheckResult check_properties(const model::Matrix& m, const std::vector<propertie
 
   CheckResult result;
   result.matrix_name = m.name;
-  result.matrix_signature = model::signature(m);
+  result.matrix_signature = formats::signature(m);
   result.tool_version = CEMV_VERSION;
   result.standard = options.standard;
   if (options.shard_count > 1)

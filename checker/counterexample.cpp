@@ -5,8 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "model/format.hpp"
-#include "model/scenario.hpp"
+#include "formats/scenario.hpp"
+#include "model/text.hpp"
 
 namespace cemv::checker {
 
@@ -83,7 +83,7 @@ std::string scenario_json(const model::Matrix& m, const std::vector<model::Cycle
   model::InputTable table(m);
   std::vector<model::TagValue> current = model::default_cycle_input(m).tags;
   ordered_json doc;
-  doc["format"] = model::kScenarioFormat;
+  doc["format"] = formats::kScenarioFormat;
   doc["description"] = description;
   ordered_json steps = ordered_json::array();
   // A new step starts where inputs change or commands are issued (a step's

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "model/io.hpp"
+#include "model/vocabulary.hpp"
 #include "model/matrix.hpp"
 
 namespace cemv::checker {

@@ -8,11 +8,11 @@
 #include "checker/counterexample.hpp"
 #include "checker/engines/bmc.hpp"
 #include "checker/engines/portfolio.hpp"
-#include "checker/check/recheck.hpp"
 #include "checker/replay.hpp"
 #include "checker/support.hpp"
 #include "encoder/encode.hpp"
-#include "model/format.hpp"
+#include "formats/matrix_json.hpp"
+#include "model/text.hpp"
 #include "properties/evaluator.hpp"
 #include "properties/monitor.hpp"
 
@@ -170,7 +170,7 @@ ProverResult PropertyChecker::decide(const model::Matrix& m, Goal goal, bool sli
     limits.max_depth = 0;
     return Bmc{}.prove(op.problem, limits);
   }
-  return prove_portfolio(factory(m, goal, sliced), limits);
+  return Portfolio(factory(m, goal, sliced)).run(limits);
 }
 
 bool PropertyChecker::confirm_trace(const ProverResult& r, bool sliced, PropertyResult& out) const {
@@ -210,21 +210,13 @@ bool PropertyChecker::confirm_trace(const ProverResult& r, bool sliced, Property
   return true;
 }
 
-void PropertyChecker::recheck_proof(const ProverResult& r, Goal goal, bool sliced) const {
-  // The factory builds the problem again in a fresh context for a fresh
-  // solver: nothing of the engine's state takes part. Throws InternalError.
-  check::recheck_proof(factory(m_, goal, sliced), r);
-}
-
 std::optional<std::string> PropertyChecker::vacuity() const {
   ProverResult a = decide(m_, Goal::Assumptions, true, deadline_);
   if (a.verdict != Verdict::Falsified) return "the assumptions cannot hold in the first cycle";
   if (has_antecedent_) {
     ProverResult t = decide(m_, Goal::Antecedent, true, deadline_);
-    if (t.verdict == Verdict::Proved) {
-      recheck_proof(t, Goal::Antecedent, true);
+    if (t.verdict == Verdict::Proved)
       return p_.kind == PropertyKind::Response ? "the trigger can never hold" : "the antecedent can never hold";
-    }
   }
   return std::nullopt;
 }
@@ -235,7 +227,7 @@ void PropertyChecker::find_support(PropertyResult& out) const {
     if (Clock::now() >= deadline_) return ReproveOutcome::Undecided;
     Limits limits;
     limits.deadline = deadline_;
-    ProverResult r = prove_portfolio(factory(trial, Goal::Property, true), limits);
+    ProverResult r = Portfolio(factory(trial, Goal::Property, true)).run(limits);
     if (r.verdict == Verdict::Proved) return ReproveOutcome::Proved;
     if (r.verdict == Verdict::Falsified) return ReproveOutcome::NotProved;
     return ReproveOutcome::Undecided;
@@ -256,16 +248,15 @@ PropertyResult PropertyChecker::run() {
 
   ProverResult r = decide(m_, Goal::Property, true, deadline_);
   bool sliced = true;
-  // The engine's own trace first re-simulated on the encoding (an engine
-  // bug shows here), then replayed on the runtime (an encoder bug shows there).
-  if (r.verdict == Verdict::Falsified) check::replay_counterexample(factory(m_, Goal::Property, true), r.cex);
+  // The portfolio has re-checked its answer in a fresh context (a proof's
+  // invariant and step re-proved, a trace re-simulated on the encoding): an
+  // engine bug stops there. The runtime replay below catches encoder bugs.
   if (r.verdict == Verdict::Falsified && !confirm_trace(r, true, out)) {
     // A slice over-approximates what lies outside the cone (first-out groups,
     // mutual locks: docs/encoding.md "Slices"), so a slice's trace may not be a
     // run of the whole matrix. The full encoding is exact: its trace must replay.
     sliced = false;
     r = decide(m_, Goal::Property, false, deadline_);
-    if (r.verdict == Verdict::Falsified) check::replay_counterexample(factory(m_, Goal::Property, false), r.cex);
     if (r.verdict == Verdict::Falsified && !confirm_trace(r, false, out))
       throw InternalError("the runtime does not reproduce the counterexample to property " + p_.name +
                           " (" + file_.file_name + ")\n" + out.reason);
@@ -277,7 +268,6 @@ PropertyResult PropertyChecker::run() {
       out.verdict = p_.kind == PropertyKind::Reachable ? PropertyVerdict::Reachable : PropertyVerdict::Falsified;
       break;
     case Verdict::Proved: {
-      recheck_proof(r, Goal::Property, sliced);
       out.invariant = r.invariant.text();
       if (auto why = vacuity()) {
         out.verdict = PropertyVerdict::Vacuous;

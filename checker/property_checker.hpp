@@ -4,8 +4,8 @@
 //   confirm_trace a counterexample or witness replayed on the reference
 //                 runtime and judged by the concrete evaluator (on failure the
 //                 full, unsliced encoding is tried, then InternalError);
-//   recheck_proof the proof's invariant and induction step re-proved by a
-//                 fresh solver in a fresh context;
+//   (re-check)    done by the portfolio: the proof's invariant and induction
+//                 step re-proved, a trace re-simulated, in a fresh context;
 //   vacuity       assumptions satisfiable, antecedent reachable;
 //   support       the matrix elements the proof needs.
 #pragma once
@@ -42,7 +42,6 @@ class PropertyChecker {
   // Replays `r.cex`; fills the trace fields of `out`. False when the runtime
   // does not reproduce it.
   bool confirm_trace(const ProverResult& r, bool sliced, PropertyResult& out) const;
-  void recheck_proof(const ProverResult& r, Goal goal, bool sliced) const;
   std::optional<std::string> vacuity() const;
   void find_support(PropertyResult& out) const;
 

@@ -5,7 +5,7 @@
 #include <unordered_map>
 
 #include "encoder/evaluate.hpp"
-#include "model/scenario.hpp"
+#include "formats/scenario.hpp"
 #include "runtime/runtime.hpp"
 
 namespace cemv::checker {

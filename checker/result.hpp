@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "model/io.hpp"
+#include "model/vocabulary.hpp"
 
 namespace cemv::checker {
 

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "checker/check.hpp"
-#include "model/format.hpp"
+#include "formats/matrix_json.hpp"
 #include "properties/parser.hpp"
 
 namespace {
@@ -30,7 +30,7 @@ std::vector<Case> all_cases() {
     if (std::filesystem::exists(d.path() / "requirements.props")) dirs.push_back(d.path());
   std::sort(dirs.begin(), dirs.end());
   for (const auto& d : dirs) {
-    model::Matrix m = model::load_matrix(d / "matrix.json");
+    model::Matrix m = formats::load_matrix(d / "matrix.json");
     auto file = properties::load_properties(d / "requirements.props", m);
     for (const auto& p : file.properties) out.push_back({d.filename().string(), p.name});
   }
@@ -45,7 +45,7 @@ class ExampleRequirement : public ::testing::TestWithParam<Case> {};
 TEST_P(ExampleRequirement, ReachesItsExpectedVerdict) {
   const Case& c = GetParam();
   auto dir = examples_dir() / c.example;
-  model::Matrix m = model::load_matrix(dir / "matrix.json");
+  model::Matrix m = formats::load_matrix(dir / "matrix.json");
   auto file = properties::load_properties(dir / "requirements.props", m);
   std::erase_if(file.properties, [&](const properties::Property& p) { return p.name != c.property; });
   ASSERT_EQ(file.properties.size(), 1u);

@@ -9,7 +9,7 @@
 
 #include "checker/check.hpp"
 #include "checker/prover.hpp"
-#include "model/format.hpp"
+#include "formats/matrix_json.hpp"
 #include "properties/parser.hpp"
 
 namespace {
@@ -17,7 +17,7 @@ namespace {
 using namespace cemv;
 
 model::Matrix tank() {
-  return model::load_matrix(std::filesystem::path(CEMV_SOURCE_DIR) / "examples/tank-overfill/matrix.json");
+  return formats::load_matrix(std::filesystem::path(CEMV_SOURCE_DIR) / "examples/tank-overfill/matrix.json");
 }
 
 // With the hard bypass key off and no soft bypass, cause 1 is never bypassed.
