@@ -210,15 +210,28 @@ bool PropertyChecker::confirm_trace(const ProverResult& r, bool sliced, Property
   return true;
 }
 
-std::optional<std::string> PropertyChecker::vacuity() const {
+PropertyChecker::Vacuity PropertyChecker::vacuity() const {
+  Vacuity v;
+  // Plain BMC to depth 0 answers "bound reached" exactly when no first cycle
+  // satisfies the assumptions; any other unknown leaves the question open.
   ProverResult a = decide(m_, Goal::Assumptions, true, deadline_);
-  if (a.verdict != Verdict::Falsified) return "the assumptions cannot hold in the first cycle";
-  if (has_antecedent_) {
-    ProverResult t = decide(m_, Goal::Antecedent, true, deadline_);
-    if (t.verdict == Verdict::Proved)
-      return p_.kind == PropertyKind::Response ? "the trigger can never hold" : "the antecedent can never hold";
+  if (a.verdict == Verdict::Unknown && a.reason == "bound reached") {
+    v.vacuous = "the assumptions cannot hold in the first cycle";
+    return v;
   }
-  return std::nullopt;
+  if (a.verdict != Verdict::Falsified) {
+    v.undecided = "vacuity not decided (" + a.reason + ")";
+    return v;
+  }
+  if (!has_antecedent_) return v;
+  ProverResult t = decide(m_, Goal::Antecedent, true, deadline_);
+  if (t.verdict == Verdict::Proved)
+    v.vacuous = p_.kind == PropertyKind::Response ? "the trigger can never hold" : "the antecedent can never hold";
+  else if (t.verdict == Verdict::Unknown)
+    v.undecided = "vacuity not decided: whether the " +
+                  std::string(p_.kind == PropertyKind::Response ? "trigger" : "antecedent") +
+                  " can hold (" + t.reason + ")";
+  return v;
 }
 
 void PropertyChecker::find_support(PropertyResult& out) const {
@@ -269,11 +282,13 @@ PropertyResult PropertyChecker::run() {
       break;
     case Verdict::Proved: {
       out.invariant = r.invariant.text();
-      if (auto why = vacuity()) {
+      Vacuity v = vacuity();
+      if (v.vacuous) {
         out.verdict = PropertyVerdict::Vacuous;
-        out.reason = *why;
+        out.reason = *v.vacuous;
         break;
       }
+      if (v.undecided) out.notes.push_back(*v.undecided);
       out.verdict = p_.kind == PropertyKind::Reachable ? PropertyVerdict::Unreachable : PropertyVerdict::Proved;
       if (out.verdict == PropertyVerdict::Proved && options_.support && sliced) find_support(out);
       break;

@@ -42,7 +42,13 @@ class PropertyChecker {
   // Replays `r.cex`; fills the trace fields of `out`. False when the runtime
   // does not reproduce it.
   bool confirm_trace(const ProverResult& r, bool sliced, PropertyResult& out) const;
-  std::optional<std::string> vacuity() const;
+  // Vacuous with the reason, or not vacuous; `undecided` when a limit left
+  // the question open (the proof stands, with a note saying so).
+  struct Vacuity {
+    std::optional<std::string> vacuous;
+    std::optional<std::string> undecided;
+  };
+  Vacuity vacuity() const;
   void find_support(PropertyResult& out) const;
 
   const model::Matrix& m_;
