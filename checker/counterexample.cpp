@@ -123,6 +123,8 @@ std::string scenario_json(const model::Matrix& m, const std::vector<model::Cycle
   return doc.dump(1) + "\n";
 }
 
+std::string command_text(const model::Matrix& m, const model::Command& c) { return command_json(m, c).dump(); }
+
 void write_text_atomically(const std::filesystem::path& path, const std::string& text) {
   std::filesystem::path tmp = path;
   tmp += ".tmp";

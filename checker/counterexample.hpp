@@ -26,6 +26,10 @@ std::string scenario_json(const model::Matrix& m, const std::vector<model::Cycle
                           const std::string& description,
                           const std::vector<ScenarioExpectation>& expect);
 
+// One command as the scenario format writes it, on one line:
+// {"op":"soft_bypass_tag","cause":1,"tag":2,"on":true}.
+std::string command_text(const model::Matrix& m, const model::Command& c);
+
 // Writes `text` to a temporary file beside `path` and renames it into place,
 // so an interrupted run leaves the old file or none, never half of one.
 // Throws std::runtime_error naming the file when a write fails.

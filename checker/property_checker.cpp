@@ -4,11 +4,13 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <unordered_map>
 
 #include "checker/counterexample.hpp"
 #include "checker/engines/bmc.hpp"
 #include "checker/engines/portfolio.hpp"
 #include "checker/replay.hpp"
+#include "checker/shrink.hpp"
 #include "checker/support.hpp"
 #include "encoder/encode.hpp"
 #include "formats/matrix_json.hpp"
@@ -93,7 +95,7 @@ std::string timing_table(const model::Matrix& m, const ConcreteTrace& t,
   }
   for (std::size_t k = 0; k < t.inputs.size(); ++k)
     for (const auto& c : t.inputs[k].commands)
-      out << "  command in cycle " << k + 1 << ": " << model::to_string(c.op) << "\n";
+      out << "  command in cycle " << k + 1 << ": " << command_text(m, c) << "\n";
   const auto all = model::observables(m);
   for (const auto& o : shown)
     for (std::size_t i = 0; i < all.size(); ++i)
@@ -104,6 +106,34 @@ std::string timing_table(const model::Matrix& m, const ConcreteTrace& t,
                                                      : std::to_string(v);
         });
   return out.str();
+}
+
+// What each input of an encoding should read when the violation does not
+// need otherwise: the scenario defaults (the plant at rest), good quality, no
+// operator command (docs/checker.md, "Readable counterexamples").
+PreferredValue plant_at_rest(const encoder::Encoding& enc, const model::Matrix& m) {
+  auto preferred = std::make_shared<std::unordered_map<std::string, Value>>();
+  const model::CycleInput defaults = model::default_cycle_input(m);
+  auto name = [](const z3::expr& v) { return v.decl().name().str(); };
+  for (std::size_t i = 0; i < enc.tag_value.size() && i < defaults.tags.size(); ++i) {
+    if (enc.tag_value[i]) {
+      Value v;
+      if (enc.tag_value[i]->is_fpa()) {
+        v.is_float = true;
+        v.f = defaults.tags[i].value;
+      } else {
+        v.i = defaults.tags[i].value != 0.0f ? 1 : 0;
+      }
+      (*preferred)[name(*enc.tag_value[i])] = v;
+    }
+    if (enc.tag_bad[i]) (*preferred)[name(*enc.tag_bad[i])] = Value{};
+  }
+  for (const auto& c : enc.commands) (*preferred)[name(c.var)] = Value{};
+  return [preferred](const std::string& input) -> std::optional<Value> {
+    auto it = preferred->find(input);
+    if (it == preferred->end()) return std::nullopt;
+    return it->second;
+  };
 }
 
 // The concrete evaluator's judgement of a replayed run (properties/evaluator.hpp).
@@ -177,7 +207,10 @@ bool PropertyChecker::confirm_trace(const ProverResult& r, bool sliced, Property
   z3::context ctx;
   OwnedProblem op = factory(m_, Goal::Property, sliced)(ctx);
   const auto& enc = *std::static_pointer_cast<encoder::Encoding>(op.owner);
-  std::vector<model::CycleInput> inputs = cycle_inputs(r.cex, enc, m_);
+  Limits limits;
+  limits.deadline = std::min(deadline_, Clock::now() + std::chrono::seconds(10));
+  Trace readable = shrink_trace(op.problem, r.cex, plant_at_rest(enc, m_), limits);
+  std::vector<model::CycleInput> inputs = cycle_inputs(readable, enc, m_);
   ConcreteTrace runtime_trace = run_on_runtime(m_, inputs);
   Judgement j = judge(m_, file_, p_, runtime_trace);
   if (!j.violated) {
