@@ -180,10 +180,17 @@ ProblemFactory PropertyChecker::factory(const model::Matrix& m, Goal goal, bool 
     std::shared_ptr<encoder::Encoding> enc = encoder::encode(ctx, m, roots);
     if (modify) modify(*enc);
     properties::Monitor mon = properties::compile_monitor(*enc, *p, f->assumptions);
+    // Analog inputs range over the finite single-precision values: what a
+    // scenario can write (docs/scenario.md), so every trace the checker finds
+    // can be replayed and handed over as a file. The encoder already excludes
+    // NaN; the infinities go here.
+    z3::expr assumption = mon.assumption;
+    for (const auto& in : enc->ts.inputvars())
+      if (in.var.is_fpa()) assumption = assumption && !z3::expr(ctx, Z3_mk_fpa_is_infinite(ctx, in.var));
     z3::expr good = mon.good;
     if (goal == Goal::Antecedent) good = mon.antecedent ? !*mon.antecedent : ctx.bool_val(true);
     if (goal == Goal::Assumptions) good = ctx.bool_val(false);
-    OwnedProblem op{enc, SafetyProblem{&enc->ts, good, mon.assumption}};
+    OwnedProblem op{enc, SafetyProblem{&enc->ts, good, assumption}};
     return op;
   };
 }
