@@ -1,6 +1,7 @@
 #include "checker/property_checker.hpp"
 
 #include <filesystem>
+#include <limits>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -185,8 +186,14 @@ ProblemFactory PropertyChecker::factory(const model::Matrix& m, Goal goal, bool 
     // can be replayed and handed over as a file. The encoder already excludes
     // NaN; the infinities go here.
     z3::expr assumption = mon.assumption;
+    // (As comparisons with the largest float, which every consumer of the
+    // encoding's terms already interprets.)
+    const z3::expr max = enc->ts.float_const(std::numeric_limits<float>::max());
+    const z3::expr min = enc->ts.float_const(-std::numeric_limits<float>::max());
     for (const auto& in : enc->ts.inputvars())
-      if (in.var.is_fpa()) assumption = assumption && !z3::expr(ctx, Z3_mk_fpa_is_infinite(ctx, in.var));
+      if (in.var.is_fpa())
+        assumption = assumption && z3::expr(ctx, Z3_mk_fpa_geq(ctx, in.var, min)) &&
+                     z3::expr(ctx, Z3_mk_fpa_leq(ctx, in.var, max));
     z3::expr good = mon.good;
     if (goal == Goal::Antecedent) good = mon.antecedent ? !*mon.antecedent : ctx.bool_val(true);
     if (goal == Goal::Assumptions) good = ctx.bool_val(false);
