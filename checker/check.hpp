@@ -1,4 +1,4 @@
-// The checker's public API: one function. Given a validated matrix and its
+// The checker's public API: one function, check_properties. Given a validated matrix and its
 // properties, decide every property and check every answer before reporting
 // it (docs/checker.md):
 //   1. encode the property's cone of influence and compile its monitor;
@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "checker/result.hpp"
+#include "encoder/encode.hpp"
 #include "model/matrix.hpp"
 #include "properties/ast.hpp"
 
@@ -33,10 +34,14 @@ struct CheckOptions {
   bool standard = false;            // the properties are the standard set
   // Called once per finished property (any thread, serialised by the checker).
   std::function<void(const PropertyResult&)> on_result;
+  // A modifier of every encoding the checker builds, applied before the
+  // property's monitor is compiled into it (Pono's modifiers/). Tests use it
+  // to plant a wrong rule and see the runtime replay catch it.
+  std::function<void(encoder::Encoding&)> modify_encoding;
 };
 
-CheckResult check(const model::Matrix& m, const std::vector<properties::PropertyFile>& files,
-                  const CheckOptions& options);
+CheckResult check_properties(const model::Matrix& m, const std::vector<properties::PropertyFile>& files,
+                             const CheckOptions& options);
 
 // The properties of `files` that shard i of n checks: a deterministic split by
 // position in the concatenated list (property k goes to shard k mod n + 1).

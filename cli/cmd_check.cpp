@@ -271,7 +271,7 @@ int run_check(const CheckArgs& a) {
 
   checker::CheckResult result;
   try {
-    result = checker::check(m, files, options);
+    result = checker::check_properties(m, files, options);
   } catch (const std::exception& e) {
     // Inputs were checked above, so anything the checker throws is cemv's
     // fault: a re-check that refuted an answer (InternalError, whose message

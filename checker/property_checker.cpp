@@ -1,0 +1,366 @@
+#include "checker/property_checker.hpp"
+
+#include <filesystem>
+#include <limits>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <unordered_map>
+
+#include "checker/counterexample.hpp"
+#include "checker/engines/bmc.hpp"
+#include "checker/engines/portfolio.hpp"
+#include "checker/replay.hpp"
+#include "checker/shrink.hpp"
+#include "checker/support.hpp"
+#include "encoder/encode.hpp"
+#include "formats/matrix_json.hpp"
+#include "model/text.hpp"
+#include "properties/evaluator.hpp"
+#include "properties/monitor.hpp"
+
+namespace cemv::checker {
+
+namespace {
+
+using properties::Expr;
+using properties::PropertyKind;
+
+const char* kind_text(PropertyKind k) {
+  switch (k) {
+    case PropertyKind::Invariant: return "invariant";
+    case PropertyKind::Never: return "never";
+    case PropertyKind::Reachable: return "reachable";
+    case PropertyKind::Response: return "response";
+  }
+  return "invariant";
+}
+
+// The observables a property reads, in first-use order: what its
+// counterexample's scenario expects and its timing table shows.
+void collect_observables(const Expr& e, std::vector<model::Observable>& out) {
+  if (e.kind == Expr::Kind::Observable) {
+    for (const auto& o : out) if (o.key == e.observable.key) return;
+    out.push_back(e.observable);
+  }
+  for (const auto& a : e.args) collect_observables(a, out);
+}
+
+std::vector<model::Observable> observables_read(const properties::PropertyFile& f, const properties::Property& p) {
+  std::vector<model::Observable> out;
+  collect_observables(p.body, out);
+  collect_observables(p.trigger, out);
+  collect_observables(p.response, out);
+  for (const auto& a : p.assumptions) collect_observables(a.expr, out);
+  for (const auto& a : f.assumptions) collect_observables(a.expr, out);
+  return out;
+}
+
+// A file name for a property's scenario: its name with anything outside
+// [A-Za-z0-9._-] replaced, so every property name maps to a safe file.
+std::string file_stem(const std::string& name) {
+  std::string s;
+  for (char c : name) s += (std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '_') ? c : '_';
+  return s.empty() ? "property" : s;
+}
+
+// The readable table of a replayed run: the inputs that change and the
+// property's observables, their value in the first cycle and wherever they
+// change ("cycle:value").
+std::string timing_table(const model::Matrix& m, const ConcreteTrace& t,
+                         const std::vector<model::Observable>& shown) {
+  std::ostringstream out;
+  model::InputTable table(m);
+  auto row = [&](const std::string& label, auto value_at) {
+    std::string line = "  " + label + ":";
+    std::string last;
+    for (std::size_t k = 0; k < t.inputs.size(); ++k) {
+      std::string v = value_at(k);
+      if (k == 0 || v != last) line += " " + std::to_string(k + 1) + ":" + v;
+      last = v;
+    }
+    out << line << "\n";
+  };
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    bool changes = false;
+    for (std::size_t k = 1; k < t.inputs.size(); ++k)
+      changes |= t.inputs[k].tags[i].value != t.inputs[0].tags[i].value ||
+                 t.inputs[k].tags[i].bad_quality != t.inputs[0].tags[i].bad_quality;
+    if (!changes) continue;
+    const auto& tag = table.tags()[i];
+    row(tag.name, [&](std::size_t k) {
+      const auto& v = t.inputs[k].tags[i];
+      std::string s = tag.kind == model::TagKind::Bool ? (v.value != 0.0f ? "1" : "0") : model::float_text(v.value);
+      return v.bad_quality ? s + "(bad)" : s;
+    });
+  }
+  for (std::size_t k = 0; k < t.inputs.size(); ++k)
+    for (const auto& c : t.inputs[k].commands)
+      out << "  command in cycle " << k + 1 << ": " << command_text(m, c) << "\n";
+  const auto all = model::observables(m);
+  for (const auto& o : shown)
+    for (std::size_t i = 0; i < all.size(); ++i)
+      if (all[i].key == o.key)
+        row(o.key, [&](std::size_t k) {
+          int v = t.observables[k][i];
+          return o.type == model::FieldType::Voting ? std::string(model::to_string(static_cast<model::Voting>(v)))
+                                                     : std::to_string(v);
+        });
+  return out.str();
+}
+
+// What each input of an encoding should read when the violation does not
+// need otherwise: the scenario defaults (the plant at rest), good quality, no
+// operator command (docs/checker.md, "Readable counterexamples").
+PreferredValue plant_at_rest(const encoder::Encoding& enc, const model::Matrix& m) {
+  auto preferred = std::make_shared<std::unordered_map<std::string, Value>>();
+  const model::CycleInput defaults = model::default_cycle_input(m);
+  auto name = [](const z3::expr& v) { return v.decl().name().str(); };
+  for (std::size_t i = 0; i < enc.tag_value.size() && i < defaults.tags.size(); ++i) {
+    if (enc.tag_value[i]) {
+      Value v;
+      if (enc.tag_value[i]->is_fpa()) {
+        v.is_float = true;
+        v.f = defaults.tags[i].value;
+      } else {
+        v.i = defaults.tags[i].value != 0.0f ? 1 : 0;
+      }
+      (*preferred)[name(*enc.tag_value[i])] = v;
+    }
+    if (enc.tag_bad[i]) (*preferred)[name(*enc.tag_bad[i])] = Value{};
+  }
+  for (const auto& c : enc.commands) (*preferred)[name(c.var)] = Value{};
+  return [preferred](const std::string& input) -> std::optional<Value> {
+    auto it = preferred->find(input);
+    if (it == preferred->end()) return std::nullopt;
+    return it->second;
+  };
+}
+
+// The concrete evaluator's judgement of a replayed run (properties/evaluator.hpp).
+struct Judgement {
+  bool violated = false;   // Invariant/Never/Response: violated; Reachable: witnessed
+  int cycle = -1;          // 0-based cycle of the violation or witness
+};
+Judgement judge(const model::Matrix& m, const properties::PropertyFile& f, const properties::Property& p,
+                const ConcreteTrace& t) {
+  properties::Trace trace;
+  for (std::size_t k = 0; k < t.inputs.size(); ++k) trace.push_back({t.inputs[k], t.observables[k]});
+  properties::Evaluation ev = properties::Evaluator(m).evaluate(p, f.assumptions, trace);
+  Judgement j;
+  // Only the judged prefix counts: the cycles in which every assumption held.
+  bool found = p.kind == PropertyKind::Reachable ? ev.holds : !ev.holds;
+  if (found && ev.cycle) {
+    j.violated = true;
+    j.cycle = static_cast<int>(*ev.cycle);
+  }
+  return j;
+}
+
+}  // namespace
+
+PropertyChecker::PropertyChecker(const model::Matrix& m, const properties::PropertyFile& file,
+                                 const properties::Property& p, const CheckOptions& options,
+                                 Clock::time_point deadline)
+    : m_(m), file_(file), p_(p), options_(options), deadline_(deadline),
+      roots_(properties::property_roots(p, file.assumptions, m)) {
+  // Whether the monitor has an antecedent (a trigger, the left side of an
+  // implication) is the monitor's to say: ask it once, in a scratch context.
+  z3::context ctx;
+  auto enc = encoder::encode(ctx, m_, roots_);
+  has_antecedent_ = properties::compile_monitor(*enc, p_, file_.assumptions).antecedent.has_value();
+}
+
+ProblemFactory PropertyChecker::factory(const model::Matrix& m, Goal goal, bool sliced) const {
+  std::vector<model::Node> roots = sliced ? properties::property_roots(p_, file_.assumptions, m)
+                                          : std::vector<model::Node>{};
+  const properties::Property* p = &p_;
+  const properties::PropertyFile* f = &file_;
+  auto modify = options_.modify_encoding;
+  return [m, roots, p, f, goal, modify](z3::context& ctx) {
+    std::shared_ptr<encoder::Encoding> enc = encoder::encode(ctx, m, roots);
+    if (modify) modify(*enc);
+    properties::Monitor mon = properties::compile_monitor(*enc, *p, f->assumptions);
+    // Analog inputs range over the finite single-precision values: what a
+    // scenario can write (docs/scenario.md), so every trace the checker finds
+    // can be replayed and handed over as a file. The encoder already excludes
+    // NaN; the infinities go here.
+    z3::expr assumption = mon.assumption;
+    // (As comparisons with the largest float, which every consumer of the
+    // encoding's terms already interprets.)
+    const z3::expr max = enc->ts.float_const(std::numeric_limits<float>::max());
+    const z3::expr min = enc->ts.float_const(-std::numeric_limits<float>::max());
+    for (const auto& in : enc->ts.inputvars())
+      if (in.var.is_fpa())
+        assumption = assumption && z3::expr(ctx, Z3_mk_fpa_geq(ctx, in.var, min)) &&
+                     z3::expr(ctx, Z3_mk_fpa_leq(ctx, in.var, max));
+    z3::expr good = mon.good;
+    if (goal == Goal::Antecedent) good = mon.antecedent ? !*mon.antecedent : ctx.bool_val(true);
+    if (goal == Goal::Assumptions) good = ctx.bool_val(false);
+    OwnedProblem op{enc, SafetyProblem{&enc->ts, good, assumption}};
+    return op;
+  };
+}
+
+ProverResult PropertyChecker::decide(const model::Matrix& m, Goal goal, bool sliced,
+                                     Clock::time_point deadline) const {
+  Limits limits;
+  limits.deadline = deadline;
+  if (goal == Goal::Assumptions) {
+    // One cycle decides it: a run either starts with the assumptions holding
+    // or there is none. Plain BMC to depth 0.
+    z3::context ctx;
+    OwnedProblem op = factory(m, goal, sliced)(ctx);
+    limits.max_depth = 0;
+    return Bmc{}.prove(op.problem, limits);
+  }
+  return Portfolio(factory(m, goal, sliced)).run(limits);
+}
+
+bool PropertyChecker::confirm_trace(const ProverResult& r, bool sliced, PropertyResult& out) const {
+  z3::context ctx;
+  OwnedProblem op = factory(m_, Goal::Property, sliced)(ctx);
+  const auto& enc = *std::static_pointer_cast<encoder::Encoding>(op.owner);
+  Limits limits;
+  limits.deadline = std::min(deadline_, Clock::now() + std::chrono::seconds(10));
+  Trace readable = shrink_trace(op.problem, r.cex, plant_at_rest(enc, m_), limits);
+  std::vector<model::CycleInput> inputs = cycle_inputs(readable, enc, m_);
+  ConcreteTrace runtime_trace = run_on_runtime(m_, inputs);
+  Judgement j = judge(m_, file_, p_, runtime_trace);
+  if (!j.violated) {
+    out.reason = describe_disagreement(m_, runtime_trace, run_on_encoding(enc, m_, inputs));
+    return false;
+  }
+  // The evaluator's first violation ends the run: cut what follows it.
+  std::size_t length = static_cast<std::size_t>(j.cycle) + 1;
+  runtime_trace.inputs.resize(length);
+  runtime_trace.observables.resize(length);
+  inputs.resize(length);
+  out.violation_cycle = j.cycle;
+  out.depth = static_cast<int>(length);
+  const auto shown = observables_read(file_, p_);
+  for (const auto& o : shown) out.matters.push_back(o.key);
+  out.timing_table = timing_table(m_, runtime_trace, shown);
+  if (!options_.out_dir.empty()) {
+    std::vector<ScenarioExpectation> expect;
+    const auto all = model::observables(m_);
+    for (const auto& o : shown)
+      for (std::size_t i = 0; i < all.size(); ++i)
+        if (all[i].key == o.key) expect.push_back({o.key, o.type, runtime_trace.observables.back()[i]});
+    std::string what = p_.kind == PropertyKind::Reachable ? "Witness of" : "Counterexample to";
+    std::string text = scenario_json(m_, inputs, what + " property " + p_.name + " (" + file_.file_name + ")", expect);
+    std::filesystem::path path = std::filesystem::path(options_.out_dir) / (file_stem(p_.name) + ".scenario.json");
+    write_text_atomically(path, text);
+    out.scenario_file = path.string();
+  }
+  out.trace = std::move(runtime_trace);
+  return true;
+}
+
+PropertyChecker::Vacuity PropertyChecker::vacuity() const {
+  Vacuity v;
+  // Plain BMC to depth 0 answers "bound reached" exactly when no first cycle
+  // satisfies the assumptions; any other unknown leaves the question open.
+  ProverResult a = decide(m_, Goal::Assumptions, true, deadline_);
+  if (a.verdict == Verdict::Unknown && a.reason == "bound reached") {
+    v.vacuous = "the assumptions cannot hold in the first cycle";
+    return v;
+  }
+  if (a.verdict != Verdict::Falsified) {
+    v.undecided = "vacuity not decided (" + a.reason + ")";
+    return v;
+  }
+  if (!has_antecedent_) return v;
+  ProverResult t = decide(m_, Goal::Antecedent, true, deadline_);
+  if (t.verdict == Verdict::Proved)
+    v.vacuous = p_.kind == PropertyKind::Response ? "the trigger can never hold" : "the antecedent can never hold";
+  else if (t.verdict == Verdict::Unknown)
+    v.undecided = "vacuity not decided: whether the " +
+                  std::string(p_.kind == PropertyKind::Response ? "trigger" : "antecedent") +
+                  " can hold (" + t.reason + ")";
+  return v;
+}
+
+void PropertyChecker::find_support(PropertyResult& out) const {
+  std::vector<Deletion> candidates = candidate_deletions(m_, roots_);
+  auto reprove = [&](const model::Matrix& trial) {
+    if (Clock::now() >= deadline_) return ReproveOutcome::Undecided;
+    Limits limits;
+    limits.deadline = deadline_;
+    ProverResult r = Portfolio(factory(trial, Goal::Property, true)).run(limits);
+    if (r.verdict == Verdict::Proved) return ReproveOutcome::Proved;
+    if (r.verdict == Verdict::Falsified) return ReproveOutcome::NotProved;
+    return ReproveOutcome::Undecided;
+  };
+  out.support = minimal_support(m_, candidates, reprove, out.support_minimal);
+}
+
+PropertyResult PropertyChecker::run() {
+  PropertyResult out;
+  const auto start = Clock::now();
+  out.name = p_.name;
+  out.description = p_.description;
+  out.kind = kind_text(p_.kind);
+  out.line = p_.loc.line;
+  out.column = p_.loc.column;
+  out.file = file_.file_name;
+  out.notes = p_.notes;
+
+  ProverResult r = decide(m_, Goal::Property, true, deadline_);
+  bool sliced = true;
+  // The portfolio has re-checked its answer in a fresh context (a proof's
+  // invariant and step re-proved, a trace re-simulated on the encoding): an
+  // engine bug stops there. The runtime replay below catches encoder bugs.
+  if (r.verdict == Verdict::Falsified && !confirm_trace(r, true, out)) {
+    // A slice over-approximates what lies outside the cone (first-out groups,
+    // mutual locks: docs/encoding.md "Slices"), so a slice's trace may not be a
+    // run of the whole matrix. The full encoding is exact: its trace must replay.
+    sliced = false;
+    r = decide(m_, Goal::Property, false, deadline_);
+    if (r.verdict == Verdict::Falsified && !confirm_trace(r, false, out))
+      throw InternalError("the runtime does not reproduce the counterexample to property " + p_.name +
+                          " (" + file_.file_name + ")\n" + out.reason);
+  }
+  out.method = r.method;
+  out.depth = r.verdict == Verdict::Falsified ? out.depth : r.k;
+  switch (r.verdict) {
+    case Verdict::Falsified:
+      out.verdict = p_.kind == PropertyKind::Reachable ? PropertyVerdict::Reachable : PropertyVerdict::Falsified;
+      break;
+    case Verdict::Proved: {
+      out.invariant = r.invariant.text();
+      Vacuity v = vacuity();
+      if (v.vacuous) {
+        out.verdict = PropertyVerdict::Vacuous;
+        out.reason = *v.vacuous;
+        break;
+      }
+      if (v.undecided) out.notes.push_back(*v.undecided);
+      out.verdict = p_.kind == PropertyKind::Reachable ? PropertyVerdict::Unreachable : PropertyVerdict::Proved;
+      if (out.verdict == PropertyVerdict::Proved && options_.support && sliced) find_support(out);
+      break;
+    }
+    case Verdict::Unknown:
+      out.verdict = PropertyVerdict::Unknown;
+      out.reason = r.reason;
+      break;
+  }
+  out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return out;
+}
+
+std::vector<SupportElement> unsupported_elements(const model::Matrix& m,
+                                                 const std::vector<PropertyResult>& results) {
+  std::set<std::string> supported;
+  for (const auto& r : results)
+    for (const auto& e : r.support) supported.insert(e.key);
+  std::vector<model::Node> everything;
+  for (const auto& c : m.causes) everything.push_back({model::Node::Kind::Cause, c.id});
+  for (const auto& e : m.effects) everything.push_back({model::Node::Kind::Effect, e.id});
+  std::vector<SupportElement> out;
+  for (const auto& d : candidate_deletions(m, everything))
+    if (!supported.count(d.element.key)) out.push_back(d.element);
+  return out;
+}
+
+}  // namespace cemv::checker

@@ -1,0 +1,68 @@
+// Decides one property and checks the answer before it is reported
+// (docs/checker.md). The steps, in the order run() takes them:
+//   decide        the engine portfolio on the property's cone of influence;
+//   confirm_trace a counterexample or witness replayed on the reference
+//                 runtime and judged by the concrete evaluator (on failure the
+//                 full, unsliced encoding is tried, then InternalError);
+//   (re-check)    done by the portfolio: the proof's invariant and induction
+//                 step re-proved, a trace re-simulated, in a fresh context;
+//   vacuity       assumptions satisfiable, antecedent reachable;
+//   support       the matrix elements the proof needs.
+#pragma once
+
+#include <chrono>
+#include <optional>
+#include <vector>
+
+#include "checker/check.hpp"
+#include "checker/prover.hpp"
+#include "checker/result.hpp"
+#include "model/graph.hpp"
+#include "properties/ast.hpp"
+
+namespace cemv::checker {
+
+class PropertyChecker {
+ public:
+  using Clock = std::chrono::steady_clock;
+  PropertyChecker(const model::Matrix& m, const properties::PropertyFile& file,
+                  const properties::Property& p, const CheckOptions& options, Clock::time_point deadline);
+
+  PropertyResult run();
+
+ private:
+  // What a problem asks of the property's monitor.
+  enum class Goal {
+    Property,     // `good` in every cycle
+    Antecedent,   // never the antecedent (falsified = the antecedent is reachable)
+    Assumptions,  // never any cycle at all (falsified = the assumptions can hold)
+  };
+  ProblemFactory factory(const model::Matrix& m, Goal goal, bool sliced) const;
+  ProverResult decide(const model::Matrix& m, Goal goal, bool sliced, Clock::time_point deadline) const;
+  // Replays `r.cex`; fills the trace fields of `out`. False when the runtime
+  // does not reproduce it.
+  bool confirm_trace(const ProverResult& r, bool sliced, PropertyResult& out) const;
+  // Vacuous with the reason, or not vacuous; `undecided` when a limit left
+  // the question open (the proof stands, with a note saying so).
+  struct Vacuity {
+    std::optional<std::string> vacuous;
+    std::optional<std::string> undecided;
+  };
+  Vacuity vacuity() const;
+  void find_support(PropertyResult& out) const;
+
+  const model::Matrix& m_;
+  const properties::PropertyFile& file_;
+  const properties::Property& p_;
+  const CheckOptions& options_;
+  Clock::time_point deadline_;
+  std::vector<model::Node> roots_;
+  bool has_antecedent_ = false;
+};
+
+// --standard: the candidate elements of the whole matrix that no proved
+// property's support contains.
+std::vector<SupportElement> unsupported_elements(const model::Matrix& m,
+                                                 const std::vector<PropertyResult>& results);
+
+}  // namespace cemv::checker

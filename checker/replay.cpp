@@ -1,0 +1,105 @@
+#include "checker/replay.hpp"
+
+#include <climits>
+#include <sstream>
+#include <unordered_map>
+
+#include "encoder/evaluate.hpp"
+#include "formats/scenario.hpp"
+#include "runtime/runtime.hpp"
+
+namespace cemv::checker {
+
+namespace {
+
+constexpr int kNotEncoded = INT_MIN;
+
+std::string name_of(const z3::expr& var) { return var.decl().name().str(); }
+
+float number_of(const Value& v) { return v.is_float ? v.f : static_cast<float>(v.i); }
+
+}  // namespace
+
+std::vector<model::CycleInput> cycle_inputs(const Trace& trace, const encoder::Encoding& enc,
+                                            const model::Matrix& m) {
+  const model::CycleInput defaults = model::default_cycle_input(m);
+  std::vector<model::CycleInput> out;
+  out.reserve(trace.length());
+  for (std::size_t k = 0; k < trace.length(); ++k) {
+    model::CycleInput in;
+    in.tags = defaults.tags;
+    for (std::size_t i = 0; i < enc.tag_value.size() && i < in.tags.size(); ++i) {
+      if (enc.tag_value[i]) in.tags[i].value = number_of(trace.input(k, name_of(*enc.tag_value[i])));
+      if (enc.tag_bad[i]) in.tags[i].bad_quality = trace.input(k, name_of(*enc.tag_bad[i])).i != 0;
+    }
+    // enc.commands is in the encoding's processing order (docs/encoding.md,
+    // "Operator commands"), which is the order the runtime must be given.
+    for (const auto& ci : enc.commands) {
+      if (trace.input(k, name_of(ci.var)).i == 0) continue;
+      model::Command c;
+      c.op = ci.op;
+      c.cause = ci.cause;
+      c.effect = ci.effect;
+      c.tag = ci.tag;
+      c.group = ci.group;
+      c.on = ci.on;
+      c.tag_name = ci.tag_name;
+      if (ci.value) c.value = number_of(trace.input(k, name_of(*ci.value)));
+      in.commands.push_back(c);
+    }
+    out.push_back(std::move(in));
+  }
+  return out;
+}
+
+ConcreteTrace run_on_runtime(const model::Matrix& m, const std::vector<model::CycleInput>& inputs) {
+  runtime::Runtime rt(m);
+  ConcreteTrace t;
+  t.inputs = inputs;
+  std::vector<int> snap;
+  for (const auto& in : inputs) {
+    rt.step(in);
+    rt.snapshot(snap);
+    t.observables.push_back(snap);
+  }
+  return t;
+}
+
+ConcreteTrace run_on_encoding(const encoder::Encoding& enc, const model::Matrix& m,
+                              const std::vector<model::CycleInput>& inputs) {
+  const auto all = model::observables(m);
+  std::unordered_map<std::string, std::size_t> position;
+  for (std::size_t i = 0; i < all.size(); ++i) position[all[i].key] = i;
+  encoder::Evaluator ev(enc);
+  ConcreteTrace t;
+  t.inputs = inputs;
+  std::vector<int> cone;
+  for (const auto& in : inputs) {
+    ev.step(in);
+    ev.snapshot(cone);
+    std::vector<int> row(all.size(), kNotEncoded);
+    for (std::size_t i = 0; i < enc.observables.size(); ++i) row[position.at(enc.observables[i].key)] = cone[i];
+    t.observables.push_back(std::move(row));
+  }
+  return t;
+}
+
+std::string describe_disagreement(const model::Matrix& m, const ConcreteTrace& runtime,
+                                  const ConcreteTrace& encoding) {
+  const auto all = model::observables(m);
+  std::ostringstream out;
+  std::size_t cycles = std::min(runtime.observables.size(), encoding.observables.size());
+  int shown = 0;
+  for (std::size_t k = 0; k < cycles && shown < 20; ++k)
+    for (std::size_t i = 0; i < all.size() && shown < 20; ++i) {
+      int e = encoding.observables[k][i];
+      if (e == kNotEncoded || e == runtime.observables[k][i]) continue;
+      out << "cycle " << k + 1 << ": " << all[i].key << " runtime " << runtime.observables[k][i]
+          << ", encoding " << e << "\n";
+      ++shown;
+    }
+  if (shown == 0) out << "runtime and encoding agree on every encoded observable in all " << cycles << " cycles\n";
+  return out.str();
+}
+
+}  // namespace cemv::checker

@@ -1,0 +1,37 @@
+// The independent check of every counterexample and witness (docs/checker.md,
+// "Checking the answers"): the engine's trace, which lives in the encoder's
+// variables, becomes plain cycle inputs; the reference runtime executes them;
+// the concrete property evaluator judges the runtime's own observables. Only
+// a run that the runtime reproduces is ever reported.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "checker/prover.hpp"
+#include "checker/result.hpp"
+#include "encoder/encode.hpp"
+#include "model/matrix.hpp"
+
+namespace cemv::checker {
+
+// The cycle inputs of an engine's trace: each encoded tag's value and quality
+// (tags outside the encoding keep the scenario defaults, which nothing encoded
+// reads), and the commands issued, in the encoding's canonical order.
+std::vector<model::CycleInput> cycle_inputs(const Trace& trace, const encoder::Encoding& enc,
+                                            const model::Matrix& m);
+
+// Runs the inputs on a fresh reference runtime.
+ConcreteTrace run_on_runtime(const model::Matrix& m, const std::vector<model::CycleInput>& inputs);
+
+// Runs the inputs on the encoding's concrete evaluator (the encoder's side of
+// a disagreement, for the internal-error report).
+ConcreteTrace run_on_encoding(const encoder::Encoding& enc, const model::Matrix& m,
+                              const std::vector<model::CycleInput>& inputs);
+
+// Both traces side by side from the first cycle where an observable differs:
+// what an internal error shows.
+std::string describe_disagreement(const model::Matrix& m, const ConcreteTrace& runtime,
+                                  const ConcreteTrace& encoding);
+
+}  // namespace cemv::checker

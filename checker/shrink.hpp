@@ -1,0 +1,31 @@
+// Counterexamples people can read. An engine's trace is whatever model the
+// solver found: analog inputs at 4.9e-32, tags in bad quality and operator
+// commands that play no part in the violation. shrink_trace looks for a trace
+// of the same length, violating in the same last cycle, in which as many
+// inputs as possible keep a preferred value (the plant at rest: scenario
+// defaults, good quality, no command). It asks the solver with one assumption
+// literal per (cycle, input) and drops the literals of each unsat core until
+// the query is satisfiable: a few solver calls, and what remains differs from
+// the plant at rest only where the violation needs it.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "checker/prover.hpp"
+
+namespace cemv::checker {
+
+// The value an input should keep when nothing requires otherwise; nullopt
+// leaves the input free.
+using PreferredValue = std::function<std::optional<Value>(const std::string& input_name)>;
+
+// A trace of cex.length() cycles violating `good` in its last cycle, as close
+// to the preferred values as the core-guided search gets; `cex` itself when
+// the search does not finish within the limits or the trace is longer than
+// `max_cycles` (a long accelerated trace is already mostly held inputs).
+Trace shrink_trace(const SafetyProblem& problem, const Trace& cex, const PreferredValue& preferred,
+                   const Limits& limits, std::size_t max_cycles = 400);
+
+}  // namespace cemv::checker
