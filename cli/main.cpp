@@ -1,4 +1,5 @@
 // cemv: formal verification and test generation for cause & effect matrices.
+#include <cctype>
 #include <exception>
 #include <string>
 #include <iostream>
@@ -6,6 +7,23 @@
 #include "cli/commands.hpp"
 #include "cli/output.hpp"
 #include "formats/diagnostics.hpp"
+
+namespace {
+
+// "FILE:LINE:COL": ends in two colon-separated runs of digits after a name.
+bool has_file_line_column(const std::string& where) {
+  auto digits_before = [&](std::size_t end) {
+    std::size_t i = end;
+    while (i > 0 && std::isdigit(static_cast<unsigned char>(where[i - 1]))) --i;
+    return i < end && i > 0 && where[i - 1] == ':' ? i - 1 : std::string::npos;
+  };
+  std::size_t col = digits_before(where.size());
+  if (col == std::string::npos) return false;
+  std::size_t line = digits_before(col);
+  return line != std::string::npos && line > 0;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"cemv: verification and acceptance tests for safety cause & effect matrices"};
@@ -31,7 +49,15 @@ int main(int argc, char** argv) {
     // of a process that SIGPIPE killed.
     return 128 + 13;
   } catch (const cemv::formats::LoadError& e) {
-    for (const auto& issue : e.issues()) std::cerr << "error: " << issue.str() << "\n";
+    for (const auto& issue : e.issues()) {
+      // A place of the form FILE:LINE:COL leads its line, as compilers write
+      // it (editors and CI log views jump there); other places keep the
+      // "error: PLACE: message" form of the matrix and scenario loaders.
+      if (has_file_line_column(issue.where))
+        std::cerr << issue.where << ": error: " << issue.what << "\n";
+      else
+        std::cerr << "error: " << issue.str() << "\n";
+    }
     return 2;
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";
