@@ -175,6 +175,17 @@ class Builder {
 
   void build_matrix_level();
   void build_commands();
+  // The steps of build_commands, in the order the encoding processes them.
+  void collect_simulations();
+  void make_tag_soft_bypass_states();
+  void command_simulate_tag();        // O.8
+  void command_stop_simulation();     // O.8
+  void command_soft_bypass_cause();   // O.5
+  void command_soft_bypass_tag();     // O.6
+  void command_soft_bypass_effect();  // O.7
+  void commands_without_interplay();  // O.9, O.10, O.1, O.2, O.3
+  expr sim_on(const std::string& name);
+  expr cause_locked_except(const model::Cause* cz, const std::string& key);
   void build_cause(const model::Cause& cz);
   void build_first_out();
   void build_effect(const model::Effect& ef);
@@ -196,6 +207,10 @@ class Builder {
   std::map<std::size_t, expr> raw_value_, raw_bad_;
   std::map<std::string, Simulation> sims_;     // by tag_key
   std::vector<std::string> sim_order_;         // tag keys in processing order
+  std::map<std::string, std::vector<const model::Cause*>> readers_;   // tag key -> locked causes (O.6, O.8)
+  std::map<std::string, std::vector<const model::Effect*>> writers_;  // tag key -> locked effects (O.8)
+  std::map<int, std::vector<expr>> tag_sb_prev_;  // tag soft bypass (O.6): previous cycle, by cause
+  std::map<int, std::vector<expr>> tag_sb_;       // ... and at this point of the command sequence
 
   // After phase 2 (commands).
   struct CauseCommands {
@@ -327,17 +342,29 @@ void Builder::build_matrix_level() {
 
 // ---- Phase 2: operator commands, in the encoding's fixed order ------------------
 
+// Phase 2 of M.1: the operator commands as per-cycle inputs, processed as a set
+// in the encoding's fixed order (docs/encoding.md "Operator commands"); the
+// creation order of the command inputs is that order.
 void Builder::build_commands() {
-  // The simulatable tags of the cone (O.8): external cause input tags in
-  // InputTable order, then output tags by effect id and position.
-  std::map<std::string, std::vector<const model::Cause*>> readers;   // tag key -> locked causes
-  std::map<std::string, std::vector<const model::Effect*>> writers;  // tag key -> locked effects
+  collect_simulations();
+  make_tag_soft_bypass_states();
+  command_simulate_tag();
+  command_stop_simulation();
+  command_soft_bypass_cause();
+  command_soft_bypass_tag();
+  command_soft_bypass_effect();
+  commands_without_interplay();
+}
+
+// The simulatable tags of the cone (O.8): external cause input tags in
+// InputTable order, then output tags by effect id and position.
+void Builder::collect_simulations() {
   std::vector<std::pair<std::size_t, std::string>> inputs;
   for (const auto* cz : causes_)
     for (const auto& t : cz->tags) {
       if (model::parse_internal_ref(t.name)) continue;
       std::string key = model::tag_key(t.name);
-      if (cz->mutually_locked_maintenance) readers[key].push_back(cz);
+      if (cz->mutually_locked_maintenance) readers_[key].push_back(cz);
       auto idx = *enc_.inputs.find(t.name);
       if (std::find_if(inputs.begin(), inputs.end(), [&](auto& p) { return p.first == idx; }) ==
           inputs.end())
@@ -362,38 +389,25 @@ void Builder::build_commands() {
   for (const auto* ef : effects_)
     for (const auto& t : ef->tags) {
       std::string key = model::tag_key(t.name);
-      if (ef->mutually_locked_maintenance) writers[key].push_back(ef);
+      if (ef->mutually_locked_maintenance) writers_[key].push_back(ef);
       add_sim(key, t.name, false, true);
     }
+}
 
-  // Tag soft bypass states before the commands (M.2 ends them first).
-  std::map<int, std::vector<expr>> tag_sb_prev;
-  std::map<int, std::vector<expr>> tag_sb;
+// Tag soft bypass states before the commands (M.2 ends them first).
+void Builder::make_tag_soft_bypass_states() {
   for (const auto* cz : causes_) {
     for (std::size_t t = 0; t < cz->tags.size(); ++t) {
       expr v = bool_state(cause_prefix(cz->id) + ".tag[" + std::to_string(t + 1) + "].soft_bypass",
                           false);
-      tag_sb_prev[cz->id].push_back(v);
-      tag_sb[cz->id].push_back(v && !gd_);
+      tag_sb_prev_[cz->id].push_back(v);
+      tag_sb_[cz->id].push_back(v && !gd_);
     }
   }
-  auto sim_on = [&](const std::string& name) -> expr {
-    auto it = sims_.find(model::tag_key(name));
-    return it == sims_.end() ? B(false) : it->second.on;
-  };
-  // O.6/O.8 mutual lock: another tag (different name) of a locked cause is
-  // simulated or soft-bypassed at this point of the command sequence.
-  auto cause_locked_except = [&](const model::Cause* cz, const std::string& key) -> expr {
-    std::vector<expr> busy;
-    for (std::size_t u = 0; u < cz->tags.size(); ++u) {
-      if (model::tag_key(cz->tags[u].name) == key) continue;
-      busy.push_back(tag_sb[cz->id][u]);
-      if (!model::parse_internal_ref(cz->tags[u].name)) busy.push_back(sim_on(cz->tags[u].name));
-    }
-    return any(busy);
-  };
+}
 
-  // 1. simulate_tag, in tag order.
+// 1. simulate_tag, in tag order.
+void Builder::command_simulate_tag() {
   for (const auto& key : sim_order_) {
     Simulation& s = sims_.at(key);
     CommandInput ci = cmd_of(model::CommandOp::SimulateTag);
@@ -404,8 +418,8 @@ void Builder::build_commands() {
     ci.value = value_in;
     expr accepted = command(ci, n);
     std::vector<expr> locks;
-    for (const auto* cz : readers[key]) locks.push_back(cause_locked_except(cz, key));
-    for (const auto* ef : writers[key]) {
+    for (const auto* cz : readers_[key]) locks.push_back(cause_locked_except(cz, key));
+    for (const auto* ef : writers_[key]) {
       for (const auto& t : ef->tags)
         if (model::tag_key(t.name) != key) locks.push_back(sim_on(t.name));
     }
@@ -413,7 +427,10 @@ void Builder::build_commands() {
     s.value = z3::ite(accepted, value_in, s.value);
     s.on = s.on || accepted;
   }
-  // 2. stop_simulation per tag, then for every tag.
+}
+
+// 2. stop_simulation per tag, then for every tag.
+void Builder::command_stop_simulation() {
   for (const auto& key : sim_order_) {
     Simulation& s = sims_.at(key);
     CommandInput ci = cmd_of(model::CommandOp::StopSimulation);
@@ -431,8 +448,10 @@ void Builder::build_commands() {
     ts_.assign_next(s.on_prev, s.on);
     ts_.assign_next(s.value_prev, s.value);
   }
+}
 
-  // 3. soft_bypass_cause (O.5): on, then off.
+// 3. soft_bypass_cause (O.5): on, then off.
+void Builder::command_soft_bypass_cause() {
   for (const auto* cz : causes_) {
     const std::string P = cause_prefix(cz->id);
     const std::string id = std::to_string(cz->id);
@@ -451,9 +470,12 @@ void Builder::build_commands() {
     }
     cause_cmds_.emplace(cz->id, CauseCommands{now, start, prev, {}, B(false), B(false)});
   }
-  // 4. soft_bypass_tag (O.6): per cause, per position: on, then off.
+}
+
+// 4. soft_bypass_tag (O.6): per cause, per position: on, then off.
+void Builder::command_soft_bypass_tag() {
   for (const auto* cz : causes_) {
-    auto& sb = tag_sb[cz->id];
+    auto& sb = tag_sb_[cz->id];
     for (std::size_t t = 0; t < cz->tags.size(); ++t) {
       const auto& tag = cz->tags[t];
       if (!tag.soft_bypass_allowed) continue;
@@ -471,10 +493,13 @@ void Builder::build_commands() {
       expr do_off = command(off, n + ".off");
       sb[t] = sb[t] && !do_off;
     }
-    for (std::size_t t = 0; t < cz->tags.size(); ++t) ts_.assign_next(tag_sb_prev[cz->id][t], sb[t]);
+    for (std::size_t t = 0; t < cz->tags.size(); ++t) ts_.assign_next(tag_sb_prev_[cz->id][t], sb[t]);
     cause_cmds_.at(cz->id).tag_sb = sb;
   }
-  // 5. soft_bypass_effect (O.7): on, then off.
+}
+
+// 5. soft_bypass_effect (O.7): on, then off.
+void Builder::command_soft_bypass_effect() {
   for (const auto* ef : effects_) {
     const std::string E = std::to_string(ef->id);
     expr prev = bool_state(effect_prefix(ef->id) + ".soft_bypass", false);
@@ -491,8 +516,11 @@ void Builder::build_commands() {
     ts_.assign_next(prev, now);
     effect_cmds_.emplace(ef->id, EffectCommands{now, B(false), B(false), B(false)});
   }
-  // 6. Commands without interplay: clear_first_out, clear_alarms, ack_cause,
-  // reset_effect, override_effect / stop_override.
+}
+
+// 6. Commands without interplay: clear_first_out, clear_alarms, ack_cause,
+// reset_effect, override_effect / stop_override.
+void Builder::commands_without_interplay() {
   std::set<int> groups;
   for (const auto* cz : causes_)
     if (cz->first_out_group >= 1 && cz->first_out_group <= model::kMaxFirstOutGroup)
@@ -550,6 +578,24 @@ void Builder::build_commands() {
       effect_cmds_.at(ef->id).toggle = a || b;  // O.3: two count as one
     }
   }
+}
+
+// A tag's simulation state at this point of the command sequence (O.8).
+expr Builder::sim_on(const std::string& name) {
+  auto it = sims_.find(model::tag_key(name));
+  return it == sims_.end() ? B(false) : it->second.on;
+}
+
+// O.6/O.8 mutual lock: another tag (different name) of a locked cause is
+// simulated or soft-bypassed at this point of the command sequence.
+expr Builder::cause_locked_except(const model::Cause* cz, const std::string& key) {
+  std::vector<expr> busy;
+  for (std::size_t u = 0; u < cz->tags.size(); ++u) {
+    if (model::tag_key(cz->tags[u].name) == key) continue;
+    busy.push_back(tag_sb_[cz->id][u]);
+    if (!model::parse_internal_ref(cz->tags[u].name)) busy.push_back(sim_on(cz->tags[u].name));
+  }
+  return any(busy);
 }
 
 // ---- Phase 3: causes -------------------------------------------------------------

@@ -5,10 +5,13 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include <nlohmann/json.hpp>
 
 namespace cemv::formats {
 
@@ -35,6 +38,24 @@ class LoadError : public std::runtime_error {
 // hostile inputs (a matrix of the 3.4 limits is well under 1 MiB).
 inline constexpr std::size_t kMaxFileBytes = 16u << 20;
 inline constexpr int kMaxJsonDepth = 64;
+
+// Beyond this many issues a file is clearly not what it should be: stop listing.
+inline constexpr std::size_t kMaxIssues = 100;
+
+// JSON paths as messages give them, jq-like: `causes[3].tags[1].name`; a key
+// that is not an identifier is written as `['key']`, quoted (model::in_quotes).
+std::string member_path(const std::string& parent, std::string_view key);
+std::string element_path(const std::string& parent, std::size_t index);
+
+// The guarded JSON parse of the loaders: a lexical pre-scan first gives a
+// position (FILE: line L, column C) for nesting deeper than kMaxJsonDepth,
+// objects with more than 256 members, numbers that overflow a double and the
+// non-JSON words NaN / Infinity, so hostile input never reaches the parser;
+// then an insertion-ordered DOM is built (issues come out in file order), and
+// a key repeated within one object is an issue (the parse goes on). Returns
+// nullopt, with the reasons in `issues`, when the text is not JSON.
+std::optional<nlohmann::ordered_json> parse_guarded_json(std::string_view text, const std::string& source_name,
+                                                         std::vector<LoadIssue>& issues);
 
 // "line L, column C": 1-based line and column (in bytes) of a 0-based byte index.
 std::string line_column(std::string_view text, std::size_t index);

@@ -1,0 +1,20 @@
+# The direction of every dependency (docs/architecture.md): model/ includes
+# nothing of cemv but model/; runtime/ and encoder/ include only model/ (and
+# themselves); formats/ only model/; reports/ only model/ and formats/.
+# grep exits 1 when no include breaks the rule.
+set(_cemv_inc "#include *[<\"](\\.\\./)*")
+cemv_cli_test(NAME layout_model_includes_only_model EXIT 1
+  COMMAND grep -rnE "${_cemv_inc}(formats|reports|runtime|encoder|properties|checker|testgen|cli)/"
+          ${PROJECT_SOURCE_DIR}/model)
+cemv_cli_test(NAME layout_runtime_includes_only_model EXIT 1
+  COMMAND grep -rnE "${_cemv_inc}(formats|reports|encoder|properties|checker|testgen|cli)/"
+          ${PROJECT_SOURCE_DIR}/runtime)
+cemv_cli_test(NAME layout_encoder_includes_only_model EXIT 1
+  COMMAND grep -rnE "${_cemv_inc}(formats|reports|runtime|properties|checker|testgen|cli)/"
+          ${PROJECT_SOURCE_DIR}/encoder)
+cemv_cli_test(NAME layout_formats_includes_only_model EXIT 1
+  COMMAND grep -rnE "${_cemv_inc}(reports|runtime|encoder|properties|checker|testgen|cli)/"
+          ${PROJECT_SOURCE_DIR}/formats)
+cemv_cli_test(NAME layout_reports_includes_only_model_and_formats EXIT 1
+  COMMAND grep -rnE "${_cemv_inc}(runtime|encoder|properties|checker|testgen|cli)/"
+          ${PROJECT_SOURCE_DIR}/reports)
