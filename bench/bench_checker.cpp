@@ -120,3 +120,4 @@ int register_requirements() {
 const int registered = register_requirements();
 
 }  // namespace
+BENCHMARK_MAIN();

@@ -1,4 +1,4 @@
-// TEST DOUBLE of checker::check and of the property parser (see README.md).
+// TEST DOUBLE of checker::check_properties and of the property parser (see README.md).
 // in_shard and exit_code follow the contract of checker/check.hpp and
 // checker/result.hpp word for word.
 #include <chrono>
@@ -84,7 +84,7 @@ PropertyResult decide(const properties::PropertyFile& f, const properties::Prope
 
 }  // namespace
 
-CheckResult check(const model::Matrix& m, const std::vector<properties::PropertyFile>& files,
+CheckResult check_properties(const model::Matrix& m, const std::vector<properties::PropertyFile>& files,
                   const CheckOptions& options) {
   CheckResult result;
   result.matrix_name = m.name;
