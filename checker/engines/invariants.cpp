@@ -1,6 +1,7 @@
 #include "checker/engines/invariants.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -76,6 +77,7 @@ std::vector<Sample> simulate(const SafetyProblem& p, const MiningOptions& opt) {
   const double command_p[] = {0.3, 0.05, 0.01, 0.002};
   const int hold_max[] = {1, 8, 60, 600};
   for (int run = 0; run < opt.runs; ++run) {
+    if (opt.limits && opt.limits->over()) break;
     ev.reset();
     const double pc = command_p[run % 4];
     const int hm = hold_max[(run / 4 + run) % 4];
@@ -134,6 +136,7 @@ class CandidateMiner {
   void add(const z3::expr& e) {
     if (out_.size() < opt_.max_candidates) out_.push_back(e);
   }
+  bool stop() const { return out_.size() >= opt_.max_candidates || (opt_.limits && opt_.limits->over()); }
 
   void unary() {
     for (std::size_t x : ints_) {
@@ -176,7 +179,7 @@ class CandidateMiner {
   }
 
   void pairs() {
-    for (std::size_t a = 0; a < ints_.size(); ++a)
+    for (std::size_t a = 0; a < ints_.size() && !stop(); ++a)
       for (std::size_t b = a + 1; b < ints_.size(); ++b) {
         std::size_t x = ints_[a], y = ints_[b];
         if (auto d = constant_difference(x, y, [](const Sample&) { return true; })) {
@@ -195,7 +198,7 @@ class CandidateMiner {
 
   void guarded() {
     for (std::size_t g : bools_)
-      for (int pol = 1; pol >= 0; --pol) {
+      for (int pol = 1; pol >= 0 && !stop(); --pol) {
         auto keep = [&](const Sample& s) { return s[g].i == pol; };
         if (std::none_of(samples_.begin(), samples_.end(), keep)) continue;
         z3::expr guard = pol ? var(g) : !var(g);
@@ -214,7 +217,7 @@ class CandidateMiner {
   }
 
   void bool_implications() {
-    for (std::size_t a = 0; a < bools_.size(); ++a)
+    for (std::size_t a = 0; a < bools_.size() && !stop(); ++a)
       for (std::size_t b = a + 1; b < bools_.size(); ++b)
         for (int pa = 0; pa < 2; ++pa)
           for (int pb = 0; pb < 2; ++pb) {
@@ -316,6 +319,22 @@ class FloatAbstraction {
   std::unordered_map<unsigned, z3::expr> memo_;
 };
 
+// Distinct states only: held inputs repeat a state for hundreds of cycles.
+std::vector<Sample> distinct(std::vector<Sample> samples) {
+  std::set<std::vector<std::int64_t>> seen;
+  std::vector<Sample> out;
+  for (auto& s : samples) {
+    std::vector<std::int64_t> key;
+    key.reserve(s.size() * 2);
+    for (const auto& v : s) {
+      key.push_back(v.i);
+      key.push_back(std::bit_cast<std::uint32_t>(v.f));
+    }
+    if (seen.insert(std::move(key)).second) out.push_back(std::move(s));
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<z3::expr> mine_candidates(const SafetyProblem& problem, const MiningOptions& options) {
@@ -325,7 +344,7 @@ std::vector<z3::expr> mine_candidates(const SafetyProblem& problem, const Mining
   } catch (const std::logic_error&) {
     return {};  // an operator the Evaluator does not interpret: no samples, no candidates
   }
-  return CandidateMiner(problem, std::move(samples), options).mine();
+  return CandidateMiner(problem, distinct(std::move(samples)), options).mine();
 }
 
 std::vector<z3::expr> houdini(const SafetyProblem& problem, std::vector<z3::expr> candidates,
@@ -361,24 +380,28 @@ std::vector<z3::expr> houdini(const SafetyProblem& problem, std::vector<z3::expr
 
 namespace {
 
-// Two rounds: the counter relations alone (cheap: few candidates), and only
-// if induction fails with them, the Bool clauses as well.
+// Three rounds, cheapest first: the encoder's lemmas alone (many properties of
+// a matrix need nothing more, and mining costs seconds on a big cone), then
+// the counter relations, and only if induction still fails, the Bool clauses.
 class InvariantProver : public Prover {
  public:
   std::string name() const override { return "invariants+induction"; }
   ProverResult prove(const SafetyProblem& problem, const Limits& limits) override {
     KInductionOptions o;
-    o.mine_invariants = true;
     o.simple_path = false;
     o.max_k = 1;
     o.method = name();
-    o.bool_implications = false;
-    ProverResult r = KInduction(o).prove(problem, limits);
-    if (r.verdict != Verdict::Unknown || r.reason != "bound reached") return r;
-    o.bool_implications = true;
-    ProverResult second = KInduction(o).prove(problem, limits);
-    second.seconds += r.seconds;
-    return second;
+    double seconds = 0.0;
+    ProverResult r;
+    for (int round = 0; round < 3; ++round) {
+      o.mine_invariants = round > 0;
+      o.bool_implications = round > 1;
+      r = KInduction(o).prove(problem, limits);
+      seconds += r.seconds;
+      r.seconds = seconds;
+      if (r.verdict != Verdict::Unknown || r.reason != "bound reached") return r;
+    }
+    return r;
   }
 };
 

@@ -30,6 +30,8 @@ struct MiningOptions {
   // Houdini round costs a solver call, so engines that need speed over
   // strength leave them out.
   bool bool_implications = true;
+  // Mining stops early (with what it has) when these run out.
+  const Limits* limits = nullptr;
 };
 
 // Candidate invariants over the state variables, true in every sampled state.

@@ -45,6 +45,7 @@ std::vector<z3::expr> KInduction::strengthening(const SafetyProblem& problem, co
   if (options_.mine_invariants) {
     MiningOptions mining;
     mining.bool_implications = options_.bool_implications;
+    mining.limits = &limits;
     for (const auto& c : mine_candidates(problem, mining)) add(c);
   }
   if (candidates.empty()) return candidates;
