@@ -23,28 +23,42 @@ class MacroUnrolling {
 
   z3::expr length(int j) { return ctx_.int_const(("macro.length@" + std::to_string(j)).c_str()); }
 
-  // `e` over state and inputs, with the state replaced by `state` and the
-  // inputs by the copies of macro step j.
-  z3::expr with_state(const z3::expr& e, const std::vector<z3::expr>& state, int j) {
+  // The next-state terms of every state variable (and the cycle's facts, last)
+  // with the state replaced by `state` and the inputs by the copies of macro
+  // step j: one substitution of one term holding them all, since a
+  // substitution per variable is quadratic on a big cone.
+  std::vector<z3::expr> nexts_and_facts(const std::vector<z3::expr>& state, int j) {
+    z3::expr_vector parts(ctx_);
+    z3::sort_vector sorts(ctx_);
+    for (const auto& s : ts_.statevars()) {
+      parts.push_back(s.next);
+      sorts.push_back(s.next.get_sort());
+    }
+    parts.push_back(ts_.constraint_formula() && p_.assumption);
+    sorts.push_back(ctx_.bool_sort());
+    z3::func_decl bundle = ctx_.function("macro.bundle", sorts, ctx_.bool_sort());
     z3::expr_vector to(ctx_);
     for (const auto& s : state) to.push_back(s);
     for (const auto& i : ts_.inputvars()) to.push_back(u_.var_at(i.var, j));
-    z3::expr copy = e;
-    return copy.substitute(from_, to);
+    z3::expr all = bundle(parts).substitute(from_, to);
+    std::vector<z3::expr> out;
+    for (unsigned i = 0; i < all.num_args(); ++i) out.push_back(all.arg(i));
+    return out;
   }
 
   // Macro step j: from state@j with inputs@j to state@(j+1).
   z3::expr step(int j) {
     const z3::expr n = length(j);
-    const z3::expr facts = ts_.constraint_formula() && p_.assumption;
+    const std::size_t count = ts_.statevars().size();
     z3::expr_vector single(ctx_), stretch(ctx_);
     std::vector<z3::expr> start, last;
     for (const auto& s : ts_.statevars()) start.push_back(u_.var_at(s.var, j));
-    for (std::size_t v = 0; v < ts_.statevars().size(); ++v) {
+    const std::vector<z3::expr> first = nexts_and_facts(start, j);
+    for (std::size_t v = 0; v < count; ++v) {
       const auto& s = ts_.statevars()[v];
       z3::expr now = start[v];
       z3::expr after = u_.var_at(s.var, j + 1);
-      z3::expr next_now = with_state(s.next, start, j);
+      const z3::expr& next_now = first[v];
       single.push_back(after == next_now);
       if (s.var.is_int()) {
         z3::expr counts = ctx_.bool_const(("macro.counts." + s.name + "@" + std::to_string(j)).c_str());
@@ -58,11 +72,11 @@ class MacroUnrolling {
       }
     }
     // The last cycle of the stretch, from its own start state, ends where the
-    // stretch ends.
-    for (std::size_t v = 0; v < ts_.statevars().size(); ++v)
-      stretch.push_back(u_.var_at(ts_.statevars()[v].var, j + 1) == with_state(ts_.statevars()[v].next, last, j));
-    stretch.push_back(with_state(facts, last, j));
-    return n >= 1 && u_.at(facts, j) && z3::ite(n == 1, z3::mk_and(single), z3::mk_and(stretch));
+    // stretch ends, under the cycle's facts.
+    const std::vector<z3::expr> final_cycle = nexts_and_facts(last, j);
+    for (std::size_t v = 0; v < count; ++v) stretch.push_back(u_.var_at(ts_.statevars()[v].var, j + 1) == final_cycle[v]);
+    stretch.push_back(final_cycle[count]);
+    return n >= 1 && first[count] && z3::ite(n == 1, z3::mk_and(single), z3::mk_and(stretch));
   }
 
   z3::expr init() { return u_.at(ts_.init_formula(), 0); }
@@ -132,6 +146,7 @@ ProverResult AcceleratedBmc::prove(const SafetyProblem& problem, const Limits& l
     z3::solver s(ctx);
     s.add(m.init());
     for (int J = 0; J <= max_steps; ++J) {
+      if (limits.over()) return finish("time limit");
       if (J > 0) s.add(m.step(J - 1));
       z3::expr violated = ctx.bool_const(("macro.violated@" + std::to_string(J)).c_str());
       s.add(z3::implies(violated, m.violation(J)));
