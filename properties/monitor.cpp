@@ -568,6 +568,8 @@ Monitor compile_monitor(encoder::Encoding& enc, const Property& p,
     }
   }
   if (!good) throw std::logic_error("monitor: unknown property kind");
+  // Every monitor variable has its initial value and next-state function.
+  enc.ts.check_complete();
   return Monitor{*good, assumption, antecedent, b.added()};
 }
 
