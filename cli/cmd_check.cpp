@@ -7,10 +7,15 @@
 #include <charconv>
 #include <chrono>
 #include <condition_variable>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <mutex>
+#include <optional>
+#include <stdexcept>
+#include <string>
 #include <thread>
+#include <vector>
 
 #include <unistd.h>
 
@@ -23,10 +28,6 @@
 #include "properties/parser.hpp"
 #include "properties/standard.hpp"
 #include "reports/check_report.hpp"
-
-#ifndef CEMV_VERSION
-#define CEMV_VERSION "0"
-#endif
 
 namespace cemv::cli {
 
