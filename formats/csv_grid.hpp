@@ -11,6 +11,7 @@
 //    and names and csv_grid_cells.cpp for the intersections.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <map>
 #include <utility>
@@ -122,9 +123,19 @@ class GridWarnings {
     issues_.push_back({{line, column}, LoadIssue{csv_text::where_of(source_, line, column), std::move(what)}});
   }
   // At "line L, columns 3-12, 14".
-  void at_columns(int line, const std::vector<int>& columns, std::string what);
+  void at_columns(int line, const std::vector<int>& columns, std::string what) {
+    issues_.push_back({{line, 0},
+                       LoadIssue{csv_text::where_of(source_, line) + ", columns " + csv_text::number_ranges(columns),
+                                 std::move(what)}});
+  }
   void add(int line, LoadIssue issue) { issues_.push_back({{line, 0}, std::move(issue)}); }
-  std::vector<LoadIssue> in_file_order();
+  std::vector<LoadIssue> in_file_order() {
+    std::stable_sort(issues_.begin(), issues_.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<LoadIssue> out;
+    for (auto& [order, issue] : issues_) out.push_back(std::move(issue));
+    return out;
+  }
 
  private:
   std::string source_;

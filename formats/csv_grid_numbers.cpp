@@ -137,17 +137,4 @@ void number_elements(std::vector<SheetElement>& elements, const char* kind, cons
   if (by_sheet) report_out_of_order(elements, first_by_number, kind, warnings);
 }
 
-void GridWarnings::at_columns(int line, const std::vector<int>& columns, std::string what) {
-  issues_.push_back({{line, 0},
-                     LoadIssue{where_of(source_, line) + ", columns " + number_ranges(columns), std::move(what)}});
-}
-
-std::vector<LoadIssue> GridWarnings::in_file_order() {
-  std::stable_sort(issues_.begin(), issues_.end(),
-                   [](const auto& a, const auto& b) { return a.first < b.first; });
-  std::vector<LoadIssue> out;
-  for (auto& [order, issue] : issues_) out.push_back(std::move(issue));
-  return out;
-}
-
 }  // namespace cemv::formats::grid
