@@ -17,18 +17,6 @@
 
 namespace cemv::checker {
 
-const char* to_string(PropertyVerdict v) {
-  switch (v) {
-    case PropertyVerdict::Proved: return "proved";
-    case PropertyVerdict::Falsified: return "falsified";
-    case PropertyVerdict::Reachable: return "reachable";
-    case PropertyVerdict::Unreachable: return "unreachable";
-    case PropertyVerdict::Vacuous: return "vacuous";
-    case PropertyVerdict::Unknown: return "unknown";
-  }
-  return "unknown";
-}
-
 int exit_code(const std::vector<PropertyVerdict>& verdicts) {
   bool unknown = false;
   for (auto v : verdicts) {

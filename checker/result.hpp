@@ -19,7 +19,18 @@ namespace cemv::checker {
 // cannot hold together, or the antecedent of an implication or the trigger of
 // a response can never hold. Unknown carries its reason.
 enum class PropertyVerdict { Proved, Falsified, Reachable, Unreachable, Vacuous, Unknown };
-const char* to_string(PropertyVerdict);
+// The verdict's word, as every output writes it (cemv-result/1, docs/checker.md).
+inline const char* to_string(PropertyVerdict v) {
+  switch (v) {
+    case PropertyVerdict::Proved: return "proved";
+    case PropertyVerdict::Falsified: return "falsified";
+    case PropertyVerdict::Reachable: return "reachable";
+    case PropertyVerdict::Unreachable: return "unreachable";
+    case PropertyVerdict::Vacuous: return "vacuous";
+    case PropertyVerdict::Unknown: return "unknown";
+  }
+  return "unknown";
+}
 
 // Exit status of `cemv check` for a set of verdicts: 0 all proved/reachable,
 // 1 something falsified, unreachable or vacuous, 3 some unknown and nothing

@@ -31,17 +31,7 @@ std::string check_report(const checker::CheckResult& r, const CheckReportInputs&
   return {};
 }
 
-const char* verdict_name(PropertyVerdict v) {
-  switch (v) {
-    case PropertyVerdict::Proved: return "proved";
-    case PropertyVerdict::Falsified: return "falsified";
-    case PropertyVerdict::Reachable: return "reachable";
-    case PropertyVerdict::Unreachable: return "unreachable";
-    case PropertyVerdict::Vacuous: return "vacuous";
-    case PropertyVerdict::Unknown: return "unknown";
-  }
-  return "unknown";
-}
+const char* verdict_name(PropertyVerdict v) { return checker::to_string(v); }
 
 bool is_failure(PropertyVerdict v) {
   return v == PropertyVerdict::Falsified || v == PropertyVerdict::Unreachable || v == PropertyVerdict::Vacuous;

@@ -21,7 +21,6 @@ bool in_shard(std::size_t index, int shard_index, int shard_count) {
   return shard_count <= 1 || static_cast<int>(index % static_cast<std::size_t>(shard_count)) + 1 == shard_index;
 }
 
-const char* to_string(PropertyVerdict) { return "double"; }
 
 int exit_code(const std::vector<PropertyVerdict>& verdicts) {
   bool unknown = false;
