@@ -105,8 +105,10 @@ void BM_StandardSet(benchmark::State& state) {
 BENCHMARK(BM_StandardSet)->Arg(8)->Arg(16)->Arg(32)->Arg(64)->Arg(128)
     ->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 
-// Registers one benchmark per example requirement, in file order.
-int register_requirements() {
+// Registers one benchmark per example requirement, in file order. Called from
+// main, not at static initialisation: loading a matrix needs the format's
+// tables, which other translation units construct.
+void register_requirements() {
   for (const char* ex : {"tank-overfill", "burner-management", "pipeline-hipps", "compressor"}) {
     model::Matrix m = formats::load_matrix(example(ex) / "matrix.json");
     auto file = properties::load_properties(example(ex) / "requirements.props", m);
@@ -115,9 +117,15 @@ int register_requirements() {
                                    BM_ExampleRequirement, std::string(ex), p.name)
           ->Unit(benchmark::kMillisecond)->Iterations(1)->UseRealTime();
   }
-  return 0;
 }
-const int registered = register_requirements();
 
 }  // namespace
-BENCHMARK_MAIN();
+
+int main(int argc, char** argv) {
+  register_requirements();
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
