@@ -17,21 +17,6 @@
 
 namespace cemv::checker {
 
-int exit_code(const std::vector<PropertyVerdict>& verdicts) {
-  bool unknown = false;
-  for (auto v : verdicts) {
-    if (v == PropertyVerdict::Falsified || v == PropertyVerdict::Unreachable || v == PropertyVerdict::Vacuous)
-      return 1;
-    if (v == PropertyVerdict::Unknown) unknown = true;
-  }
-  return unknown ? 3 : 0;
-}
-
-bool in_shard(std::size_t index, int shard_index, int shard_count) {
-  if (shard_count <= 1) return true;
-  return static_cast<int>(index % static_cast<std::size_t>(shard_count)) + 1 == shard_index;
-}
-
 CheckResult check_properties(const model::Matrix& m, const std::vector<properties::PropertyFile>& files,
                              const CheckOptions& options) {
   using Clock = std::chrono::steady_clock;

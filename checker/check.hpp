@@ -45,6 +45,8 @@ CheckResult check_properties(const model::Matrix& m, const std::vector<propertie
 
 // The properties of `files` that shard i of n checks: a deterministic split by
 // position in the concatenated list (property k goes to shard k mod n + 1).
-bool in_shard(std::size_t index, int shard_index, int shard_count);
+inline bool in_shard(std::size_t index, int shard_index, int shard_count) {
+  return shard_count <= 1 || static_cast<int>(index % static_cast<std::size_t>(shard_count)) + 1 == shard_index;
+}
 
 }  // namespace cemv::checker

@@ -35,7 +35,15 @@ inline const char* to_string(PropertyVerdict v) {
 // Exit status of `cemv check` for a set of verdicts: 0 all proved/reachable,
 // 1 something falsified, unreachable or vacuous, 3 some unknown and nothing
 // falsified. (2 invalid input and 4 internal error never come from verdicts.)
-int exit_code(const std::vector<PropertyVerdict>& verdicts);
+inline int exit_code(const std::vector<PropertyVerdict>& verdicts) {
+  bool unknown = false;
+  for (auto v : verdicts) {
+    if (v == PropertyVerdict::Falsified || v == PropertyVerdict::Unreachable || v == PropertyVerdict::Vacuous)
+      return 1;
+    if (v == PropertyVerdict::Unknown) unknown = true;
+  }
+  return unknown ? 3 : 0;
+}
 
 // One matrix element a proof depends on (its support, an inductive validity
 // core over matrix elements): "intersection[3,2]", "cause[1].bypass_tag", ...
