@@ -289,23 +289,46 @@ PropertyChecker::Vacuity PropertyChecker::vacuity() const {
 void PropertyChecker::find_support(PropertyResult& out) const {
   std::vector<Deletion> candidates = candidate_deletions(m_, roots_);
   const model::InputTable table(m_);
-  auto reprove = [&](const model::Matrix& trial) {
-    if (Clock::now() >= deadline_) return ReproveOutcome::Undecided;
-    properties::PropertyFile file = file_;
-    properties::Property property = p_;
-    if (!remap_inputs(file, property, table, model::InputTable(trial))) return ReproveOutcome::NotProved;
+  // The problem of the property on an edited matrix, its input tags found
+  // again there; nullopt when a tag it reads is gone.
+  struct Trial {
+    properties::PropertyFile file;
+    properties::Property property;
+  };
+  auto prove = [&](const model::Matrix& trial, bool checked) -> std::optional<ProverResult> {
+    auto t = std::make_shared<Trial>(Trial{file_, p_});
+    if (!remap_inputs(t->file, t->property, table, model::InputTable(trial))) return std::nullopt;
     Limits limits;
     limits.deadline = deadline_;
     ProblemOptions o;
     o.modify_encoding = options_.modify_encoding;
     PortfolioOptions po;
     po.preferred = preferred_;
-    ProverResult r = Portfolio(property_problem(trial, file, property, o), po).run(limits);
-    if (r.verdict == Verdict::Proved) return ReproveOutcome::Proved;
-    if (r.verdict == Verdict::Falsified) return ReproveOutcome::NotProved;
-    return ReproveOutcome::Undecided;
+    // A trial only steers the search: its answer is not reported, so it
+    // skips the re-check and the readable counterexample. The support found
+    // is proved once more below, checked.
+    po.recheck = checked;
+    po.shrink_budget = std::chrono::milliseconds(0);
+    return Portfolio(property_problem(trial, t->file, t->property, o), po).run(limits);
   };
-  out.support = minimal_support(m_, candidates, reprove, out.support_minimal);
+  auto reprove = [&](const model::Matrix& trial) {
+    if (Clock::now() >= deadline_) return ReproveOutcome::Undecided;
+    std::optional<ProverResult> r = prove(trial, false);
+    if (!r || r->verdict == Verdict::Falsified) return ReproveOutcome::NotProved;
+    return r->verdict == Verdict::Proved ? ReproveOutcome::Proved : ReproveOutcome::Undecided;
+  };
+  model::Matrix reduced = m_;
+  out.support = minimal_support(m_, candidates, reprove, out.support_minimal, &reduced);
+  if (out.support.size() == candidates.size()) return;  // nothing deleted: the proof above stands
+  std::optional<ProverResult> r = prove(reduced, true);
+  if (r && r->verdict == Verdict::Proved) return;
+  if (r && r->verdict == Verdict::Falsified)
+    throw InternalError("the support of property " + p_.name + " does not carry its proof: a trial was proved, " +
+                        "its re-proof is falsified");
+  // Undecided within the limits: claim nothing smaller than the whole cone.
+  out.support.clear();
+  for (const auto& d : candidates) out.support.push_back(d.element);
+  out.support_minimal = false;
 }
 
 PropertyResult PropertyChecker::run() {
