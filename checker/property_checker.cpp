@@ -193,9 +193,10 @@ PropertyChecker::PropertyChecker(const model::Matrix& m, const properties::Prope
   z3::context ctx;
   auto enc = encoder::encode(ctx, m_, roots_);
   has_antecedent_ = properties::compile_monitor(*enc, p_, file_.assumptions).antecedent.has_value();
-  // Input names are the same in every encoding of this matrix, sliced or not.
-  z3::context whole_ctx;
-  preferred_ = plant_at_rest(*encoder::encode(whole_ctx, m_, {}), m_);
+  // Input names are the same in every encoding of this matrix: the cone's
+  // (with the inputs the monitor added) names every input a sliced problem
+  // has; the unsliced retry leaves the others free.
+  preferred_ = plant_at_rest(*enc, m_);
 }
 
 ProblemFactory PropertyChecker::factory(const model::Matrix& m, Goal goal, bool sliced) const {
