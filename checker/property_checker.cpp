@@ -221,6 +221,9 @@ ProverResult PropertyChecker::decide(const model::Matrix& m, Goal goal, bool sli
   }
   PortfolioOptions o;
   o.preferred = preferred_;
+  // Only the property's own counterexample is shown; the witness that an
+  // antecedent can hold needs no readable form.
+  if (goal != Goal::Property) o.shrink_budget = std::chrono::milliseconds(0);
   return Portfolio(factory(m, goal, sliced), o).run(limits);
 }
 
