@@ -6,6 +6,7 @@
 // Exit status: 0 every objective covered or proved infeasible; 2 invalid
 // input or an unwritable destination; 3 some objective undecided (a limit);
 // 4 internal error (a generated test that does not replay green).
+#include <cstdio>
 #include <filesystem>
 #include <iostream>
 
@@ -29,6 +30,7 @@ struct TestgenArgs {
   double proof_s = 3.0;
   bool mutation_report = false;
   bool quiet = false;
+  bool verbose = false;
 };
 
 int run_testgen(const TestgenArgs& a) {
@@ -45,6 +47,13 @@ int run_testgen(const TestgenArgs& a) {
                                          std::filesystem::absolute(a.out_dir), ec);
     o.matrix_ref = ec ? std::filesystem::absolute(a.matrix_file).string() : rel.generic_string();
   }
+  if (a.verbose)
+    o.on_decided = [](const testgen::ObjectiveResult& r) {
+      char t[32];
+      std::snprintf(t, sizeof t, "%.2f s", r.seconds);
+      std::cerr << testgen::to_string(r.status) << " " << r.objective.id << " [" << r.method << ", " << t << "]"
+                << (r.reason.empty() ? "" : " " + r.reason) << "\n";
+    };
   testgen::TestSuite suite;
   try {
     suite = testgen::generate_tests(m, o);
@@ -95,6 +104,7 @@ void add_testgen_commands(CLI::App& app, Context& ctx) {
   cmd->add_flag("--mutation-report", a.mutation_report,
                 "also decide, for every single-point mutant, equivalence and detection by the suite");
   cmd->add_flag("-q,--quiet", a.quiet, "print nothing but errors");
+  cmd->add_flag("-v,--verbose", a.verbose, "print each objective as it is decided (standard error)");
   cmd->footer(
       "Exit status: 0 every objective covered or proved infeasible; 2 invalid input or unwritable\n"
       "destination; 3 some objective undecided (a limit was reached); 4 internal error.\n");

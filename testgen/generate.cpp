@@ -9,6 +9,7 @@
 // and the result does not depend on the number of jobs.
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <map>
 #include <mutex>
 #include <set>
@@ -56,6 +57,7 @@ class GroupRun {
     for (std::size_t i : members_) {
       if (results_[i].status == ObjectiveStatus::Covered) continue;
       const properties::Property& p = file_.properties[i];
+      t0_ = std::chrono::steady_clock::now();
       Goal g{&file_, &p, properties::property_roots(p, file_.assumptions, m_), results_[i].objective.horizon};
       if (open_ && drafts_.back().inputs.size() < options_.max_test_cycles && extend(i, g)) continue;
       SearchResult r = search_.find(g, {}, options_.objective_budget_s);
@@ -142,7 +144,8 @@ class GroupRun {
     return false;
   }
 
-  void announce(const ObjectiveResult& r) {
+  void announce(ObjectiveResult& r) {
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
     if (!options_.on_decided) return;
     std::lock_guard<std::mutex> lock(report_);
     options_.on_decided(r);
@@ -157,6 +160,7 @@ class GroupRun {
   detail::Searcher search_;
   std::vector<Draft> drafts_;
   bool open_ = false;
+  std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();
 };
 
 std::string slug(const std::string& s) {

@@ -1,6 +1,8 @@
 #include "testgen/search.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <unordered_map>
@@ -26,24 +28,77 @@ using checker::Verdict;
 // Longest trace BMC unrolls cycle by cycle; beyond it only accelerated BMC
 // (macro steps of held inputs) is asked.
 constexpr int kMaxUnrolled = 400;
+constexpr float kAnalogRange = 1e9f;
+constexpr int kLongHorizon = 8;
 
 std::string name_of(const z3::expr& v) { return v.decl().name().str(); }
+
+// Values an engineer would set on an analog input, for every cause reading
+// it (docs/semantics.md C.3-C.5): at rest, at the limit and the next float on
+// the safe side, the hysteresis threshold and the next float beyond it, the
+// prewarning, clearly tripped; plus the value the test holds. A search
+// restricted to them is fast and its steps read like a test sheet; only when
+// it fails are all floats allowed.
+std::vector<float> engineer_values(const model::Matrix& m, const model::InputTag& tag, float hold) {
+  std::vector<float> v{hold, model::default_tag_value(m, tag).value, 0.0f};
+  const float inf = std::numeric_limits<float>::infinity();
+  for (const auto& c : m.causes) {
+    if (c.input != model::InputKind::Analog || !c.analog) continue;
+    bool reads = false;
+    for (const auto& t : c.tags) reads |= model::tag_key(t.name) == model::tag_key(tag.name);
+    if (!reads) continue;
+    const auto& a = *c.analog;
+    const bool high = a.limit_type == model::LimitType::High;
+    const float safe = high ? -inf : inf;
+    const float thr = high ? a.limit - a.hysteresis : a.limit + a.hysteresis;
+    const float margin = std::max(1.0f, a.hysteresis);
+    v.push_back(a.limit);
+    v.push_back(std::nextafter(a.limit, safe));
+    v.push_back(thr);
+    v.push_back(std::nextafter(thr, safe));
+    v.push_back(high ? a.limit + 2 * margin : a.limit - 2 * margin);
+    v.push_back(high ? thr - margin : thr + margin);
+    if (a.prewarning) {
+      v.push_back(*a.prewarning);
+      v.push_back(std::nextafter(*a.prewarning, safe));
+    }
+    if (a.delta > 0.0f) {
+      v.push_back(a.limit + a.delta);
+      v.push_back(a.limit - a.delta);
+    }
+  }
+  std::sort(v.begin(), v.end());
+  v.erase(std::unique(v.begin(), v.end()), v.end());
+  return v;
+}
 
 // The goal's safety problem in `ctx`; with a prefix, the initial state is the
 // state after the prefix (the encoding's own Evaluator runs it, monitor
 // included, so the past-time operators see the whole test).
 OwnedProblem build(z3::context& ctx, const model::Matrix& m, const Goal& g,
-                   const std::vector<model::CycleInput>& prefix) {
+                   const std::vector<model::CycleInput>& prefix, bool engineer = false) {
   std::shared_ptr<encoder::Encoding> enc = encoder::encode(ctx, m, g.roots);
   properties::Monitor mon = properties::compile_monitor(*enc, *g.property, g.file->assumptions);
-  // Finite analog values only: what a scenario can write (as the checker does).
+  // Analog values a transmitter can deliver: within +/- 1e9 (a field test sets
+  // no value near the float range's end, whose shortest text some readers
+  // round beyond it).
   z3::expr assumption = mon.assumption;
-  const z3::expr max = enc->ts.float_const(std::numeric_limits<float>::max());
-  const z3::expr min = enc->ts.float_const(-std::numeric_limits<float>::max());
+  const z3::expr max = enc->ts.float_const(kAnalogRange);
+  const z3::expr min = enc->ts.float_const(-kAnalogRange);
   for (const auto& in : enc->ts.inputvars())
     if (in.var.is_fpa())
       assumption = assumption && z3::expr(ctx, Z3_mk_fpa_geq(ctx, in.var, min)) &&
                    z3::expr(ctx, Z3_mk_fpa_leq(ctx, in.var, max));
+  if (engineer) {
+    const model::CycleInput hold = prefix.empty() ? model::default_cycle_input(m) : prefix.back();
+    for (std::size_t i = 0; i < enc->tag_value.size(); ++i) {
+      if (!enc->tag_value[i] || !enc->tag_value[i]->is_fpa()) continue;
+      z3::expr any = ctx.bool_val(false);
+      for (float v : engineer_values(m, enc->inputs.tags()[i], hold.tags[i].value))
+        any = any || z3::expr(ctx, Z3_mk_fpa_eq(ctx, *enc->tag_value[i], enc->ts.float_const(v)));
+      assumption = assumption && any;
+    }
+  }
   if (!prefix.empty()) {
     encoder::Evaluator ev(*enc);
     for (const auto& in : prefix) ev.step(in);
@@ -97,25 +152,37 @@ Limits within(double seconds, int depth) {
 }  // namespace
 
 SearchResult Searcher::find(const Goal& g, const std::vector<model::CycleInput>& prefix, double budget_s) const {
+  // First with the values an engineer sets (fast, readable), then any float.
+  SearchResult first = find_once(g, prefix, budget_s * 0.5, true);
+  if (first.kind == SearchResult::Kind::Found) return first;
+  SearchResult second = find_once(g, prefix, budget_s * 0.5, false);
+  if (second.kind != SearchResult::Kind::Found) second.reason = first.reason + "; " + second.reason;
+  return second;
+}
+
+SearchResult Searcher::find_once(const Goal& g, const std::vector<model::CycleInput>& prefix, double budget_s,
+                                 bool engineer) const {
   SearchResult out;
   z3::context ctx;
-  OwnedProblem op = build(ctx, m_, g, prefix);
+  OwnedProblem op = build(ctx, m_, g, prefix, engineer);
   const auto& enc = *std::static_pointer_cast<encoder::Encoding>(op.owner);
   const int depth = g.horizon + options_.max_depth;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(static_cast<long long>(budget_s * 1000));
   ProverResult r;
-  if (depth <= kMaxUnrolled) {
+  // A witness that needs a timer to run (a horizon of many cycles) holds its
+  // inputs for most of them: accelerated BMC's macro steps find it at once,
+  // where plain BMC unrolls every cycle of the analog arithmetic.
+  if (g.horizon >= kLongHorizon) {
+    Limits limits = within(budget_s, checker::AcceleratedBmc::kMaxMacroSteps);
+    limits.deadline = depth <= kMaxUnrolled ? std::chrono::steady_clock::now() +
+                                                  std::chrono::milliseconds(static_cast<long long>(budget_s * 500))
+                                            : deadline;
+    r = checker::AcceleratedBmc{}.prove(op.problem, limits);
+  }
+  if (r.verdict != Verdict::Falsified && depth <= kMaxUnrolled) {
     Limits limits = within(budget_s, depth);
     limits.deadline = deadline;
-    r = checker::Bmc{}.prove(op.problem, limits);
-  }
-  if (r.verdict != Verdict::Falsified && g.horizon > 20) {
-    Limits limits = within(budget_s, checker::AcceleratedBmc::kMaxMacroSteps);
-    limits.deadline = deadline;
-    if (!limits.over()) {
-      ProverResult a = checker::AcceleratedBmc{}.prove(op.problem, limits);
-      if (a.verdict == Verdict::Falsified || r.reason.empty()) r = a;
-    }
+    if (!limits.over()) r = checker::Bmc{}.prove(op.problem, limits);
   }
   if (r.verdict != Verdict::Falsified) {
     out.reason = (r.reason.empty() ? "not found" : r.reason) + " (" + r.method + ", depth " + std::to_string(r.k) + ")";
@@ -128,6 +195,7 @@ SearchResult Searcher::find(const Goal& g, const std::vector<model::CycleInput>&
   // sets them to the defaults, which nothing encoded reads).
   for (auto& in : out.cycles)
     for (std::size_t i = 0; i < in.tags.size() && i < enc.tag_value.size(); ++i) {
+      if (in.tags[i].value == 0.0f) in.tags[i].value = 0.0f;  // -0 reads as 0 in every comparison (C.3)
       if (!enc.tag_value[i]) in.tags[i].value = hold.tags[i].value;
       if (!enc.tag_bad[i]) in.tags[i].bad_quality = hold.tags[i].bad_quality;
     }

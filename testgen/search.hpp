@@ -44,6 +44,8 @@ class Searcher {
   SearchResult prove_unreachable(const Goal& g) const;
 
  private:
+  SearchResult find_once(const Goal& g, const std::vector<model::CycleInput>& prefix, double budget_s,
+                         bool engineer) const;
   const model::Matrix& m_;
   const TestgenOptions& options_;
 };

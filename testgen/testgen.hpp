@@ -48,6 +48,7 @@ struct ObjectiveResult {
   int cycle = -1;        // 0-based cycle of the witness in that test
   std::string method;    // "bmc", "accelerated-bmc", a proving engine, or "replay"
   std::string reason;    // infeasible: the proof; undecided: the limit reached
+  double seconds = 0.0;  // time spent on it (not in deterministic outputs)
 };
 
 // One step of a test as the checklist prints it: what the engineer does,
