@@ -178,6 +178,15 @@ SearchResult Searcher::find_once(const Goal& g, const std::vector<model::CycleIn
                                                   std::chrono::milliseconds(static_cast<long long>(budget_s * 500))
                                             : deadline;
     r = checker::AcceleratedBmc{}.prove(op.problem, limits);
+    // Macro steps may hold inputs far longer than the objective needs (any
+    // n satisfies a saturated timer): such a run is no field test, and every
+    // later replay of the test would pay for it. Plain BMC then decides.
+    if (r.verdict == Verdict::Falsified &&
+        static_cast<int>(r.cex.length()) > std::max(2 * g.horizon, g.horizon + options_.max_depth)) {
+      r = ProverResult{};
+      r.method = "accelerated-bmc";
+      r.reason = "witness longer than the objective needs";
+    }
   }
   if (r.verdict != Verdict::Falsified && depth <= kMaxUnrolled) {
     Limits limits = within(budget_s, depth);
