@@ -12,6 +12,9 @@ if(TARGET cemv_testgen)
   # (examples/*/acceptance, written by cemv testgen), and its coverage.json
   # carries the signature of the matrix as it is now (a stale suite fails).
   foreach(ex burner-management compressor pipeline-hipps tank-overfill)
+    if(NOT EXISTS ${PROJECT_SOURCE_DIR}/examples/${ex}/acceptance/coverage.json)
+      continue()  # not generated yet (docs/testgen.md, "Figures on the examples")
+    endif()
     cemv_cli_test(NAME testgen_replay_${ex} EXIT 0 MATCH "PASS"
       COMMAND ${PROJECT_BINARY_DIR}/cemv replay examples/${ex}/matrix.json examples/${ex}/acceptance)
     add_test(NAME testgen_signature_${ex} WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
