@@ -5,7 +5,12 @@
 // `check` adds 3 (undecided) and 4 (internal error), docs/checker.md.
 #pragma once
 
+#include <string>
+
 #include <CLI/CLI.hpp>
+
+namespace cemv::model { struct Matrix; }
+namespace cemv::testgen { struct TestSuite; }
 
 namespace cemv::cli {
 
@@ -20,5 +25,11 @@ void add_csv_commands(CLI::App& app, Context& ctx);       // export-csv, import-
 void add_simulate_commands(CLI::App& app, Context& ctx);  // simulate
 void add_smt_commands(CLI::App& app, Context& ctx);       // export-smt
 void add_check_commands(CLI::App& app, Context& ctx);     // check
+void add_testgen_commands(CLI::App& app, Context& ctx);   // testgen
+void add_replay_commands(CLI::App& app, Context& ctx);    // replay
+
+// `cemv testgen --mutation-report`: after the suite is written to `out_dir`,
+// the mutation adequacy report (docs/testgen.md); returns an exit status.
+int mutation_report(const model::Matrix& m, const testgen::TestSuite& suite, const std::string& out_dir);
 
 }  // namespace cemv::cli

@@ -39,6 +39,10 @@ int main(int argc, char** argv) {
 #ifdef CEMV_WITH_CHECK  // defined when the checker and the property language are built
   cemv::cli::add_check_commands(app, ctx);
 #endif
+#ifdef CEMV_WITH_TESTGEN
+  cemv::cli::add_testgen_commands(app, ctx);
+  cemv::cli::add_replay_commands(app, ctx);
+#endif
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,114 @@
+// `cemv testgen MATRIX --out DIR [--sif N] [--jobs N]` (docs/testgen.md):
+// the acceptance tests of a matrix as cemv-scenario/1 files, coverage.json
+// and the checklist (Markdown, HTML, CSV), every file written atomically
+// through cli/output.hpp.
+//
+// Exit status: 0 every objective covered or proved infeasible; 2 invalid
+// input or an unwritable destination; 3 some objective undecided (a limit);
+// 4 internal error (a generated test that does not replay green).
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+
+#include "checker/prover.hpp"
+#include "cli/commands.hpp"
+#include "cli/matrix_input.hpp"
+#include "cli/output.hpp"
+#include "testgen/checklist.hpp"
+#include "testgen/testgen.hpp"
+
+namespace cemv::cli {
+
+namespace {
+
+struct TestgenArgs {
+  std::string matrix_file;
+  std::string out_dir;
+  int sif = 0;
+  int jobs = 1;
+  double budget_s = 20.0;
+  double proof_s = 3.0;
+  bool mutation_report = false;
+  bool quiet = false;
+  bool verbose = false;
+};
+
+int run_testgen(const TestgenArgs& a) {
+  model::Matrix m = load_valid_matrix(a.matrix_file, "tested");
+  check_writable_directory(a.out_dir);
+  testgen::TestgenOptions o;
+  if (a.sif > 0) o.sif = a.sif;
+  o.jobs = a.jobs;
+  o.objective_budget_s = a.budget_s;
+  o.proof_budget_s = a.proof_s;
+  if (a.matrix_file != "-") {
+    std::error_code ec;
+    auto rel = std::filesystem::relative(std::filesystem::absolute(a.matrix_file),
+                                         std::filesystem::absolute(a.out_dir), ec);
+    o.matrix_ref = ec ? std::filesystem::absolute(a.matrix_file).string() : rel.generic_string();
+  }
+  if (a.verbose)
+    o.on_decided = [](const testgen::ObjectiveResult& r) {
+      char t[32];
+      std::snprintf(t, sizeof t, "%.2f s", r.seconds);
+      std::cerr << testgen::to_string(r.status) << " " << r.objective.id << " [" << r.method << ", " << t << "]"
+                << (r.reason.empty() ? "" : " " + r.reason) << "\n";
+    };
+  testgen::TestSuite suite;
+  try {
+    suite = testgen::generate_tests(m, o);
+  } catch (const checker::InternalError& e) {
+    std::cerr << "internal error: " << e.what() << "\n(a bug in cemv: please report it with the matrix)\n";
+    return 4;
+  }
+  const std::string tool = std::string("cemv ") + CEMV_VERSION;
+  const std::filesystem::path dir(a.out_dir);
+  for (const auto& t : suite.tests) write_output((dir / t.file_name).string(), t.scenario_json);
+  const auto header = testgen::checklist_header(m, suite, tool);
+  write_output((dir / "coverage.json").string(), testgen::coverage_json(suite, tool));
+  write_output((dir / "checklist.md").string(), testgen::checklist_markdown(m, suite, header));
+  write_output((dir / "checklist.html").string(), testgen::checklist_html(m, suite, header));
+  write_output((dir / "checklist.csv").string(), testgen::checklist_csv(m, suite, header));
+  if (!a.quiet) {
+    std::string text = "matrix " + suite.matrix_name + " signature " + suite.signature + "\n" +
+                       std::to_string(suite.objectives.size()) + " objectives: " + std::to_string(suite.covered) +
+                       " covered, " + std::to_string(suite.infeasible) + " infeasible, " +
+                       std::to_string(suite.undecided) + " undecided\n" + std::to_string(suite.tests.size()) +
+                       " tests, " + std::to_string(suite.total_steps) + " steps, " +
+                       std::to_string(suite.total_cycles) + " scan cycles; every test replays green\n";
+    for (const auto& r : suite.objectives)
+      if (r.status != testgen::ObjectiveStatus::Covered)
+        text += std::string(testgen::to_string(r.status)) + " " + r.objective.id + ": " + r.objective.text + " (" +
+                r.reason + ")\n";
+    write_output("-", text);
+  }
+  int code = suite.undecided > 0 ? 3 : 0;
+  if (a.mutation_report) code = std::max(code, mutation_report(m, suite, a.out_dir));
+  return code;
+}
+
+}  // namespace
+
+void add_testgen_commands(CLI::App& app, Context& ctx) {
+  auto* cmd = app.add_subcommand("testgen", "Generate the acceptance tests and checklist of a matrix (docs/testgen.md)");
+  static TestgenArgs a;
+  cmd->add_option("MATRIX", a.matrix_file, "cemv-matrix/1 file ('-' = standard input)")->required();
+  cmd->add_option("--out", a.out_dir, "folder for the tests, coverage.json and the checklists (created if missing)")
+      ->type_name("DIR")
+      ->required();
+  cmd->add_option("--sif", a.sif, "only the objectives of SIF group N")->type_name("N");
+  cmd->add_option("--jobs", a.jobs, "SIF groups searched in parallel")->capture_default_str();
+  cmd->add_option("--budget", a.budget_s, "search time per objective, seconds")->capture_default_str();
+  cmd->add_option("--proof-budget", a.proof_s, "infeasibility proof time per objective, seconds")
+      ->capture_default_str();
+  cmd->add_flag("--mutation-report", a.mutation_report,
+                "also decide, for every single-point mutant, equivalence and detection by the suite");
+  cmd->add_flag("-q,--quiet", a.quiet, "print nothing but errors");
+  cmd->add_flag("-v,--verbose", a.verbose, "print each objective as it is decided (standard error)");
+  cmd->footer(
+      "Exit status: 0 every objective covered or proved infeasible; 2 invalid input or unwritable\n"
+      "destination; 3 some objective undecided (a limit was reached); 4 internal error.\n");
+  cmd->callback([&ctx]() { ctx.exit_code = run_testgen(a); });
+}
+
+}  // namespace cemv::cli

@@ -1,0 +1,280 @@
+// The suite (docs/testgen.md, "Synthesis and minimisation"). Per SIF group,
+// objectives are taken in catalogue order; each is first tried as an
+// extension of the group's open test (BMC from the state the test leaves),
+// else searched from start-up (a new test), else proved unreachable, else
+// left undecided. After every change to a test, the runtime replays it and
+// the concrete property evaluator marks every objective of the group it
+// witnesses as covered, so an objective covered by an earlier test is never
+// searched again. Groups are independent, so --jobs searches them in parallel
+// and the result does not depend on the number of jobs.
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <map>
+#include <mutex>
+#include <set>
+#include <thread>
+
+#include "checker/prover.hpp"
+#include "checker/replay.hpp"
+#include "formats/matrix_json.hpp"
+#include "properties/evaluator.hpp"
+#include "properties/monitor.hpp"
+#include "properties/parser.hpp"
+#include "testgen/scenario_writer.hpp"
+#include "testgen/search.hpp"
+#include "testgen/testgen.hpp"
+
+namespace cemv::testgen {
+
+namespace {
+
+using detail::Goal;
+using detail::SearchResult;
+
+struct Draft {
+  int sif = 0;
+  std::vector<model::CycleInput> inputs;
+  std::vector<model::Node> roots;
+  checker::ConcreteTrace trace;
+  std::vector<std::pair<std::size_t, std::size_t>> witnesses;  // (cycle, objective index)
+};
+
+std::vector<model::Node> merge(std::vector<model::Node> a, const std::vector<model::Node>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  std::sort(a.begin(), a.end());
+  a.erase(std::unique(a.begin(), a.end()), a.end());
+  return a;
+}
+
+class GroupRun {
+ public:
+  GroupRun(const model::Matrix& m, const TestgenOptions& o, const properties::PropertyFile& file,
+           std::vector<ObjectiveResult>& results, const std::vector<std::size_t>& members, std::mutex& report)
+      : m_(m), options_(o), file_(file), results_(results), members_(members), report_(report), search_(m, o) {}
+
+  std::vector<Draft> run() {
+    for (std::size_t i : members_) {
+      if (results_[i].status == ObjectiveStatus::Covered) continue;
+      const properties::Property& p = file_.properties[i];
+      t0_ = std::chrono::steady_clock::now();
+      Goal g{&file_, &p, properties::property_roots(p, file_.assumptions, m_), results_[i].objective.horizon};
+      if (open_ && drafts_.back().inputs.size() < options_.max_test_cycles && extend(i, g)) continue;
+      SearchResult r = search_.find(g, {}, options_.objective_budget_s);
+      if (r.kind == SearchResult::Kind::Found && start(i, g, r)) continue;
+      if (r.kind == SearchResult::Kind::Found) {
+        // A slice over-approximates what lies outside its cone
+        // (docs/encoding.md "Slices"): the whole matrix is exact.
+        Goal full = g;
+        full.roots.clear();
+        SearchResult again = search_.find(full, {}, options_.objective_budget_s);
+        if (again.kind == SearchResult::Kind::Found && start(i, full, again)) continue;
+        throw checker::InternalError("the runtime does not reproduce the witness of objective " +
+                                     results_[i].objective.id);
+      }
+      SearchResult proof = search_.prove_unreachable(g);
+      ObjectiveResult& res = results_[i];
+      if (proof.kind == SearchResult::Kind::Infeasible) {
+        res.status = ObjectiveStatus::Infeasible;
+        res.method = proof.method;
+        res.reason = proof.reason;
+      } else {
+        res.status = ObjectiveStatus::Undecided;
+        res.reason = "search: " + r.reason + "; proof: " + proof.reason;
+      }
+      announce(res);
+    }
+    return std::move(drafts_);
+  }
+
+ private:
+  // Replays `inputs` and marks what they witness; false when `target` is not witnessed.
+  bool adopt(Draft& d, std::vector<model::CycleInput> inputs, std::size_t target, const std::string& method) {
+    checker::ConcreteTrace t = checker::run_on_runtime(m_, inputs);
+    properties::Trace trace;
+    trace.reserve(t.inputs.size());
+    for (std::size_t k = 0; k < t.inputs.size(); ++k) trace.push_back({t.inputs[k], t.observables[k]});
+    properties::Evaluator ev(m_);
+    auto witness = [&](std::size_t i) -> std::optional<std::size_t> {
+      auto e = ev.evaluate(file_.properties[i], file_.assumptions, trace);
+      if (e.holds && e.cycle) return *e.cycle;
+      return std::nullopt;
+    };
+    auto w = witness(target);
+    if (!w) return false;
+    d.inputs = std::move(inputs);
+    d.trace = std::move(t);
+    for (std::size_t i : members_) {
+      ObjectiveResult& r = results_[i];
+      if (r.status == ObjectiveStatus::Covered || r.status == ObjectiveStatus::Infeasible) continue;
+      auto c = i == target ? w : witness(i);
+      if (!c) continue;
+      r.status = ObjectiveStatus::Covered;
+      r.test = -1;  // numbered when the suite is assembled
+      r.cycle = static_cast<int>(*c);
+      r.method = i == target ? method : "replay";
+      r.reason.clear();
+      d.witnesses.push_back({*c, i});
+      announce(r);
+    }
+    return true;
+  }
+
+  bool extend(std::size_t i, const Goal& g) {
+    Draft& d = drafts_.back();
+    Goal eg = g;
+    eg.roots = merge(d.roots, g.roots);
+    SearchResult r = search_.find(eg, d.inputs, options_.objective_budget_s / 2);
+    if (r.kind != SearchResult::Kind::Found) return false;
+    std::vector<model::CycleInput> all = d.inputs;
+    all.insert(all.end(), r.cycles.begin(), r.cycles.end());
+    if (!adopt(d, std::move(all), i, r.method)) return false;
+    d.roots = eg.roots;
+    return true;
+  }
+
+  bool start(std::size_t i, const Goal& g, const SearchResult& r) {
+    Draft d;
+    d.sif = results_[i].objective.sif;
+    d.roots = g.roots;
+    drafts_.push_back(std::move(d));
+    open_ = true;
+    if (adopt(drafts_.back(), r.cycles, i, r.method)) return true;
+    drafts_.pop_back();
+    return false;
+  }
+
+  void announce(ObjectiveResult& r) {
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0_).count();
+    if (!options_.on_decided) return;
+    std::lock_guard<std::mutex> lock(report_);
+    options_.on_decided(r);
+  }
+
+  const model::Matrix& m_;
+  const TestgenOptions& options_;
+  const properties::PropertyFile& file_;
+  std::vector<ObjectiveResult>& results_;
+  const std::vector<std::size_t>& members_;
+  std::mutex& report_;
+  detail::Searcher search_;
+  std::vector<Draft> drafts_;
+  bool open_ = false;
+  std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();
+};
+
+std::string slug(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (std::isalnum(static_cast<unsigned char>(c))) out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    else if (!out.empty() && out.back() != '-') out += '-';
+  }
+  while (!out.empty() && out.back() == '-') out.pop_back();
+  return out.substr(0, 40);
+}
+
+// SIF groups in ascending order, objectives without a group last.
+int group_rank(int sif) { return sif == 0 ? 1 << 30 : sif; }
+
+}  // namespace
+
+TestSuite generate_tests(const model::Matrix& m, const TestgenOptions& options) {
+  TestSuite suite;
+  suite.matrix_name = m.name;
+  suite.signature = formats::signature(m);
+  std::vector<Objective> all = derive_objectives(m);
+  std::vector<Objective> chosen;
+  for (auto& o : all)
+    if (!options.sif || o.sif == *options.sif) chosen.push_back(std::move(o));
+  const properties::PropertyFile file = properties::parse_properties(objectives_file_text(chosen), m, "objectives");
+  for (auto& o : chosen) {
+    ObjectiveResult r;
+    r.objective = std::move(o);
+    suite.objectives.push_back(std::move(r));
+  }
+
+  std::map<int, std::vector<std::size_t>> groups;  // by rank
+  for (std::size_t i = 0; i < suite.objectives.size(); ++i)
+    groups[group_rank(suite.objectives[i].objective.sif)].push_back(i);
+  std::vector<const std::vector<std::size_t>*> order;
+  for (const auto& [rank, members] : groups) order.push_back(&members);
+  std::vector<std::vector<Draft>> drafts(order.size());
+  std::mutex report;
+  std::atomic<std::size_t> next{0};
+  std::exception_ptr error;
+  std::mutex error_mutex;
+  auto worker = [&] {
+    for (std::size_t g; (g = next++) < order.size();) {
+      try {
+        drafts[g] = GroupRun(m, options, file, suite.objectives, *order[g], report).run();
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(error_mutex);
+        if (!error) error = std::current_exception();
+      }
+    }
+  };
+  const int jobs = std::max(1, std::min<int>(options.jobs, static_cast<int>(order.size())));
+  std::vector<std::thread> threads;
+  for (int j = 1; j < jobs; ++j) threads.emplace_back(worker);
+  worker();
+  for (auto& t : threads) t.join();
+  if (error) std::rethrow_exception(error);
+
+  // Assemble: tests in group order, then creation order; objective results
+  // point at the final test numbers.
+  std::map<std::pair<std::size_t, int>, int> number;  // (group, draft) -> test index
+  for (std::size_t g = 0; g < order.size(); ++g)
+    for (std::size_t d = 0; d < drafts[g].size(); ++d) {
+      Draft& dr = drafts[g][d];
+      if (dr.witnesses.empty()) continue;
+      const int index = static_cast<int>(suite.tests.size());
+      number[{g, static_cast<int>(d)}] = index;
+      std::sort(dr.witnesses.begin(), dr.witnesses.end());
+      Test t;
+      char id[16];
+      std::snprintf(id, sizeof id, "T%03d", index + 1);
+      t.id = id;
+      t.sif = dr.sif;
+      const Objective& first = suite.objectives[dr.witnesses.front().second].objective;
+      const auto sif_name = m.sif_groups.find(dr.sif);
+      t.description = std::string(id) + (dr.sif ? " (SIF " + std::to_string(dr.sif) +
+                                                      (sif_name != m.sif_groups.end() ? " " + sif_name->second : "") + ")"
+                                                : "") + ": " + first.text;
+      t.file_name = t.id + "-" + slug(first.id) + ".scenario.json";
+      std::vector<detail::Checkpoint> cps;
+      for (const auto& [cycle, oi] : dr.witnesses) {
+        ObjectiveResult& r = suite.objectives[oi];
+        r.test = index;
+        if (cps.empty() || cps.back().cycle != cycle) cps.push_back({cycle, {}, {}});
+        cps.back().descriptions.push_back(r.objective.id + ": " + r.objective.text);
+        for (const auto& k : r.objective.observe) cps.back().observe.push_back(k);
+        t.objectives.push_back(r.objective.id);
+      }
+      for (const auto& c : cps) t.checkpoints.push_back(c.cycle);
+      t.inputs = dr.inputs;
+      t.scenario_json = detail::test_scenario_json(m, options.matrix_ref, t.description, dr.inputs,
+                                                   dr.trace.observables, cps, t.steps, t.field_steps);
+      suite.total_steps += t.steps;
+      suite.total_cycles += t.inputs.size();
+      suite.tests.push_back(std::move(t));
+    }
+  for (const auto& r : suite.objectives) {
+    suite.covered += r.status == ObjectiveStatus::Covered;
+    suite.infeasible += r.status == ObjectiveStatus::Infeasible;
+    suite.undecided += r.status == ObjectiveStatus::Undecided;
+  }
+  // Never an unchecked answer: the files as written replay green.
+  ReplayResult replay = replay_suite(m, suite);
+  for (const auto& t : replay.tests)
+    if (!t.passed)
+      throw checker::InternalError("generated test " + t.name + " does not replay green: " +
+                                   (t.load_error.empty() ? (t.steps.empty() ? std::string("?") : [&] {
+                                     for (const auto& s : t.steps)
+                                       if (!s.failures.empty()) return s.failures.front();
+                                     return std::string("?");
+                                   }())
+                                                         : t.load_error));
+  return suite;
+}
+
+}  // namespace cemv::testgen

@@ -1,0 +1,41 @@
+// The catalogue of coverage objectives (docs/testgen.md, "Objectives"): each
+// a `reachable` property with a stable id and a sentence, derived from the
+// matrix alone, in a fixed order (causes by id, then per effect by id its
+// intersections and its own behaviour, then matrix-level functions).
+#include "testgen/objective_builder.hpp"
+
+namespace cemv::testgen {
+
+const char* to_string(ObjectiveStatus s) {
+  switch (s) {
+    case ObjectiveStatus::Covered: return "covered";
+    case ObjectiveStatus::Infeasible: return "infeasible";
+    case ObjectiveStatus::Undecided: return "undecided";
+  }
+  return "undecided";
+}
+
+std::vector<Objective> derive_objectives(const model::Matrix& m) {
+  std::vector<Objective> out;
+  detail::ObjectiveBuilder b(m, out);
+  for (const auto& c : m.causes)
+    if (c.function != model::CauseFunction::Comment) detail::cause_objectives(b, c);
+  for (const auto& e : m.effects)
+    if (e.function != model::EffectFunction::Comment) {
+      detail::intersection_objectives(b, e);
+      detail::effect_objectives(b, e);
+    }
+  detail::matrix_objectives(b);
+  return out;
+}
+
+// Tests act like a field engineer: no simulation of tags (a simulated value
+// would reach any objective without exercising the logic, docs/semantics.md O.8).
+std::string objectives_file_text(const std::vector<Objective>& objectives) {
+  std::string s = "# Coverage objectives (cemv testgen, docs/testgen.md)\n"
+                  "assume not issued(simulate_tag)\nassume not issued(stop_simulation)\n\n";
+  for (const auto& o : objectives) s += "# " + o.text + "\n" + o.property + "\n";
+  return s;
+}
+
+}  // namespace cemv::testgen

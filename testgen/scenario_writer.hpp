@@ -1,0 +1,36 @@
+// Internal to testgen/: a test as a cemv-scenario/1 file (docs/scenario.md).
+// Unlike a checker counterexample (one expectation block at the end), a test
+// checks at every checkpoint: each cycle where it witnesses an objective ends
+// a step whose `expect` lists what an engineer can observe there (output
+// tags, cause and effect active, trip requests, latches, alarms) and the
+// signals of the objectives witnessed. Durations are written in ms.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "model/matrix.hpp"
+#include "model/vocabulary.hpp"
+#include "testgen/testgen.hpp"
+
+namespace cemv::testgen::detail {
+
+struct Checkpoint {
+  std::size_t cycle = 0;                 // 0-based
+  std::vector<std::string> descriptions; // the objectives witnessed here
+  std::vector<std::string> observe;      // their keys, shown first
+};
+
+// The observable keys a checkpoint expects, in a fixed order, besides the
+// objectives' own: what can be seen in the field.
+std::vector<model::Observable> field_observables(const model::Matrix& m);
+
+// `observables`: the runtime's snapshot (model::observables order) per cycle.
+// Returns the file text and the number of steps.
+std::string test_scenario_json(const model::Matrix& m, const std::string& matrix_ref, const std::string& description,
+                               const std::vector<model::CycleInput>& inputs,
+                               const std::vector<std::vector<int>>& observables,
+                               const std::vector<Checkpoint>& checkpoints, std::size_t& steps,
+                               std::vector<FieldStep>& field);
+
+}  // namespace cemv::testgen::detail

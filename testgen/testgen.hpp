@@ -1,0 +1,130 @@
+// Acceptance-test generation (docs/testgen.md): coverage objectives derived
+// from the matrix, tests found by the checker's BMC engine on each
+// objective's cone of influence (the objective is a `reachable` cover of the
+// property language, so its witness is a checker counterexample), objectives
+// no run can reach proved so by the checker's proving engines, tests extended
+// and combined greedily, every test replayed on the reference runtime, and
+// the suite written as cemv-scenario/1 files.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "model/matrix.hpp"
+#include "model/node.hpp"
+#include "model/vocabulary.hpp"
+
+namespace cemv::testgen {
+
+enum class ObjectiveStatus { Covered, Infeasible, Undecided };
+const char* to_string(ObjectiveStatus s);
+
+struct Objective {
+  std::string id;        // stable: "cause.1.vote.1oo2.k1", "intersection.c1.e2.alone", ...
+  std::string kind;      // "voting-row", "mcdc", "limit", "hysteresis", "timer", ...
+  std::string text;      // the sentence an engineer reads
+  model::Node element;   // the cause or effect it is about (matrix level: the first element it names)
+  int sif = 0;           // the SIF group the test of this objective is filed under (0 = none)
+  std::string property;  // the objective as a property: "property ID { reachable EXPR }"
+  int horizon = 0;       // cycles a witness needs at least (timers): a search hint
+  std::vector<std::string> observe;  // observable keys its checkpoint shows first (checklist)
+};
+// Every objective of the matrix, in a fixed order (element, then kind).
+std::vector<Objective> derive_objectives(const model::Matrix& m);
+// The objectives as one property file (the text derive_objectives' properties
+// form, with the file's assumptions): what `cemv check` could decide too.
+std::string objectives_file_text(const std::vector<Objective>& objectives);
+
+struct ObjectiveResult {
+  Objective objective;
+  ObjectiveStatus status = ObjectiveStatus::Undecided;
+  int test = -1;         // index into TestSuite::tests when covered
+  int cycle = -1;        // 0-based cycle of the witness in that test
+  std::string method;    // "bmc", "accelerated-bmc", a proving engine, or "replay"
+  std::string reason;    // infeasible: the proof; undecided: the limit reached
+  double seconds = 0.0;  // time spent on it (not in deterministic outputs)
+};
+
+// One step of a test as the checklist prints it: what the engineer does,
+// how long the step lasts, what they should then observe.
+struct FieldStep {
+  std::vector<std::string> actions;   // "Set LT_100A to 95 % (limit 90, high)", "Press reset for effect 1 ..."
+  std::uint64_t ms = 0;               // the step's duration
+  std::vector<std::string> expected;  // "XV_101 = 0", "cause 1 LT100_HH active: yes"; empty: nothing to check
+  std::string covers;                 // the objectives witnessed at the end of the step
+};
+
+struct Test {
+  std::string id;                          // "T001", ... in suite order
+  std::string file_name;                   // "T001-c1-lt100_hh.scenario.json"
+  int sif = 0;
+  std::string description;
+  std::vector<model::CycleInput> inputs;   // one per scan cycle
+  std::vector<std::size_t> checkpoints;    // 0-based cycles checked (ascending)
+  std::vector<std::string> objectives;     // ids covered, witness order
+  std::string scenario_json;               // the cemv-scenario/1 text
+  std::size_t steps = 0;
+  std::vector<FieldStep> field_steps;      // the scenario's steps, phrased for the field
+};
+
+struct TestSuite {
+  std::string matrix_name;
+  std::string signature;
+  std::vector<ObjectiveResult> objectives;  // derive_objectives order (filtered by --sif)
+  std::vector<Test> tests;                  // sorted by SIF group
+  std::size_t covered = 0, infeasible = 0, undecided = 0;
+  std::size_t total_steps = 0, total_cycles = 0;
+};
+
+struct TestgenOptions {
+  std::optional<int> sif;             // only the objectives filed under this SIF group
+  int jobs = 1;                       // SIF groups searched in parallel
+  double objective_budget_s = 20.0;   // search per objective (BMC, then accelerated BMC)
+  double proof_budget_s = 3.0;        // infeasibility proof per objective
+  int max_depth = 40;                 // BMC cycles beyond an objective's horizon
+  std::size_t max_test_cycles = 2000; // a test is not extended beyond this
+  std::string matrix_ref;             // the scenarios' `matrix` key ("" = none)
+  std::function<void(const ObjectiveResult&)> on_decided;  // progress, serialised
+};
+
+// Throws checker::InternalError when a test does not replay green on the
+// runtime (never a silent pass).
+TestSuite generate_tests(const model::Matrix& m, const TestgenOptions& options = {});
+
+// ---- replay -----------------------------------------------------------------
+
+struct StepOutcome {
+  std::size_t step = 0;    // 0-based scenario step
+  std::size_t cycle = 0;   // 0-based last cycle of the step
+  bool passed = true;
+  std::vector<std::string> failures;  // "FAIL steps[1] (cycle 21, t = 2000 ms): ..."
+};
+struct TestOutcome {
+  std::string name;
+  bool passed = false;
+  std::string load_error;  // the scenario does not load against this matrix
+  std::vector<StepOutcome> steps;
+  std::size_t expectations = 0, failed = 0, cycles = 0;
+};
+struct ReplayResult {
+  std::vector<TestOutcome> tests;
+  bool all_passed() const;
+  std::size_t passed() const;
+};
+
+// (name, cemv-scenario/1 text) pairs, each parsed against `m`.
+ReplayResult replay_texts(const model::Matrix& m,
+                          const std::vector<std::pair<std::string, std::string>>& scenarios);
+ReplayResult replay_suite(const model::Matrix& m, const TestSuite& suite);
+// Files, and folders (every *.json in them, by name). A file that cannot be
+// read is a formats::LoadError; one that does not load against `m` is a
+// failed test with its load_error.
+ReplayResult replay_files(const model::Matrix& m, const std::vector<std::filesystem::path>& paths);
+
+}  // namespace cemv::testgen

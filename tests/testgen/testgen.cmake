@@ -1,0 +1,32 @@
+if(TARGET cemv_testgen)
+  add_executable(test_testgen ${CMAKE_CURRENT_LIST_DIR}/test_testgen.cpp)
+  target_link_libraries(test_testgen PRIVATE cemv_testgen GTest::gtest_main)
+  target_compile_definitions(test_testgen PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  gtest_discover_tests(test_testgen DISCOVERY_TIMEOUT 60)
+
+  # Not in make test: prints the objectives of a matrix (a developer's tool).
+  add_executable(cemv_testgen_objectives ${CMAKE_CURRENT_LIST_DIR}/tool_objectives.cpp)
+  target_link_libraries(cemv_testgen_objectives PRIVATE cemv_testgen)
+
+  # The generated suite of every example replays 100 % green on its matrix
+  # (examples/*/acceptance, written by cemv testgen), and its coverage.json
+  # carries the signature of the matrix as it is now (a stale suite fails).
+  foreach(ex burner-management compressor pipeline-hipps tank-overfill)
+    if(NOT EXISTS ${PROJECT_SOURCE_DIR}/examples/${ex}/acceptance/coverage.json)
+      continue()  # not generated yet (docs/testgen.md, "Figures on the examples")
+    endif()
+    cemv_cli_test(NAME testgen_replay_${ex} EXIT 0 MATCH "PASS"
+      COMMAND ${PROJECT_BINARY_DIR}/cemv replay examples/${ex}/matrix.json examples/${ex}/acceptance)
+    add_test(NAME testgen_signature_${ex} WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
+      COMMAND bash -c "grep -q \"\\\"signature\\\": \\\"$(${PROJECT_BINARY_DIR}/cemv signature examples/${ex}/matrix.json)\\\"\" examples/${ex}/acceptance/coverage.json")
+  endforeach()
+  cemv_cli_test(NAME testgen_replay_junit EXIT 0 MATCH "<testsuites"
+    COMMAND ${PROJECT_BINARY_DIR}/cemv replay examples/tank-overfill/matrix.json examples/tank-overfill/acceptance --format junit)
+  # The tank's suite on the pipeline matrix: its tags do not exist there (exit 2).
+  cemv_cli_test(NAME testgen_replay_wrong_matrix EXIT 2 MATCH "does not load"
+    COMMAND ${PROJECT_BINARY_DIR}/cemv replay examples/pipeline-hipps/matrix.json examples/tank-overfill/acceptance)
+  cemv_cli_test(NAME testgen_replay_missing EXIT 2 MATCH "error"
+    COMMAND ${PROJECT_BINARY_DIR}/cemv replay examples/tank-overfill/matrix.json no/such/file.scenario.json)
+  cemv_cli_test(NAME testgen_requires_out EXIT 2 MATCH "out"
+    COMMAND ${PROJECT_BINARY_DIR}/cemv testgen examples/tank-overfill/matrix.json)
+endif()
