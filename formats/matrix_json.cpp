@@ -18,6 +18,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <tuple>
 #include <nlohmann/json.hpp>
 
 #include "model/names.hpp"
@@ -889,10 +890,12 @@ std::string canonical_text(const Matrix& m) {
 Matrix parse_matrix(std::string_view json_text, const std::string& source_name) {
   std::vector<LoadIssue> issues;
   if (json_text.size() > kMaxFileBytes)
-    throw LoadError({{source_name, "input is " + std::to_string(json_text.size()) + " bytes, larger than the limit of " +
-                                       std::to_string(kMaxFileBytes) + " bytes"}});
+    throw LoadError({{source_name,
+                      "input is " + std::to_string(json_text.size()) + " bytes, larger than the limit of " +
+                          std::to_string(kMaxFileBytes) + " bytes",
+                      source_name}});
   if (json_text.find_first_not_of(" \t\r\n") == std::string_view::npos)
-    throw LoadError({{source_name, "file is empty (expected a cemv-matrix/1 JSON object)"}});
+    throw LoadError({{source_name, "file is empty (expected a cemv-matrix/1 JSON object)", source_name}});
   std::optional<InJson> parsed = parse_guarded_json(json_text, source_name, issues);
   if (!parsed) throw LoadError(std::move(issues));
   const InJson& root = *parsed;
@@ -900,7 +903,10 @@ Matrix parse_matrix(std::string_view json_text, const std::string& source_name) 
   Matrix m;
   Reader reader(issues);
   read_matrix(reader, root, m);
-  if (!issues.empty()) throw LoadError(std::move(issues));
+  if (!issues.empty()) {
+    locate_issues(json_text, source_name, issues);
+    throw LoadError(std::move(issues));
+  }
   m.sort_by_id();
   return m;
 }
@@ -909,16 +915,120 @@ Matrix load_matrix(const std::filesystem::path& file) {
   return parse_matrix(read_text_file(file), file.string());
 }
 
-Matrix load_valid_matrix(const std::filesystem::path& file, const std::string& use) {
-  Matrix m = load_matrix(file);
+namespace {
+
+// The unsigned integer value of the member whose key starts at `key_at`.
+std::optional<long> integer_after_key(std::string_view text, std::size_t key_at) {
+  std::size_t i = text.find(':', key_at);
+  if (i == std::string_view::npos) return std::nullopt;
+  ++i;
+  while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+  long v = 0;
+  std::size_t start = i;
+  while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i])) && i - start < 9)
+    v = v * 10 + (text[i++] - '0');
+  if (i == start || (i < text.size() && (text[i] == '.' || text[i] == 'e' || text[i] == 'E')))
+    return std::nullopt;
+  return v;
+}
+
+// "cause[12]..." at `s`: 12.
+std::optional<long> bracketed_id(std::string_view s, std::string_view prefix) {
+  if (s.substr(0, prefix.size()) != prefix) return std::nullopt;
+  long v = 0;
+  std::size_t i = prefix.size(), start = i;
+  while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i])) && i - start < 9) v = v * 10 + (s[i++] - '0');
+  if (i == start || i >= s.size() || s[i] != ']') return std::nullopt;
+  return v;
+}
+
+// The string value (without escapes: names have none) of the member whose key starts at `key_at`.
+std::optional<std::string_view> name_after_key(std::string_view text, std::size_t key_at) {
+  std::size_t i = text.find(':', key_at);
+  if (i == std::string_view::npos) return std::nullopt;
+  ++i;
+  while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+  if (i >= text.size() || text[i] != '"') return std::nullopt;
+  std::size_t end = text.find('"', i + 1);
+  if (end == std::string_view::npos) return std::nullopt;
+  return text.substr(i + 1, end - i - 1);
+}
+
+// The first element of `array` whose integer members have the given values
+// and, when `name` is not empty, whose name is `name` (of two elements with
+// one id, the finding names the one it is about); failing that, the first
+// with the values alone.
+std::optional<std::size_t> element_with(const JsonPositions& positions, const std::string& array,
+                                        const std::vector<std::pair<std::string, long>>& keys,
+                                        std::string_view name = {}) {
+  std::optional<std::size_t> by_keys;
+  for (std::size_t index = 0;; ++index) {
+    std::string path = element_path(array, index);
+    auto at = positions.find(path);
+    if (!at) return by_keys;
+    bool all = true;
+    for (const auto& [key, want] : keys) {
+      auto key_at = positions.find(member_path(path, key));
+      all = all && key_at && integer_after_key(positions.text(), *key_at) == want;
+    }
+    if (!all) continue;
+    if (name.empty()) return at;
+    auto name_at = positions.find(member_path(path, "name"));
+    if (name_at && name_after_key(positions.text(), *name_at) == name) return at;
+    if (!by_keys) by_keys = at;
+  }
+}
+
+// "cause[3] NAME": NAME ("" when the element text has no name).
+std::string_view name_of_element(std::string_view element) {
+  std::size_t space = element.find("] ");
+  return space == std::string_view::npos ? std::string_view() : element.substr(space + 2);
+}
+
+}  // namespace
+
+std::optional<std::size_t> element_offset(const JsonPositions& positions, std::string_view element) {
+  if (element == "matrix") {
+    std::size_t first = positions.text().find_first_not_of(" \t\r\n");
+    if (first == std::string_view::npos) return std::nullopt;
+    return first;
+  }
+  if (auto id = bracketed_id(element, "cause["))
+    return element_with(positions, "causes", {{"id", *id}}, name_of_element(element));
+  if (auto id = bracketed_id(element, "effect["))
+    return element_with(positions, "effects", {{"id", *id}}, name_of_element(element));
+  constexpr std::string_view kIntersection = "intersection ";
+  if (element.substr(0, kIntersection.size()) == kIntersection) {
+    std::string_view rest = element.substr(kIntersection.size());
+    auto cause = bracketed_id(rest, "cause[");
+    std::size_t slash = rest.find('/');
+    if (!cause || slash == std::string_view::npos) return std::nullopt;
+    auto effect = bracketed_id(rest.substr(slash + 1), "effect[");
+    if (!effect) return std::nullopt;
+    return element_with(positions, "intersections", {{"cause", *cause}, {"effect", *effect}});
+  }
+  return std::nullopt;
+}
+
+Matrix parse_valid_matrix(std::string_view json_text, const std::string& source_name, const std::string& use) {
+  Matrix m = parse_matrix(json_text, source_name);
   auto diagnostics = validate(m);
   if (!has_errors(diagnostics)) return m;
-  const std::string where = file.string();
-  std::vector<LoadIssue> issues{{where, "the matrix has validation errors; it cannot be " + use}};
-  for (const auto& d : diagnostics)
-    if (d.severity == Severity::Error)
-      issues.push_back({where, d.rule + " " + d.element + " (" + d.section + "): " + d.message});
+  const std::string& where = source_name;
+  std::vector<LoadIssue> issues{{where, "the matrix has validation errors; it cannot be " + use, where}};
+  JsonPositions positions(json_text);
+  for (const auto& d : diagnostics) {
+    if (d.severity != Severity::Error) continue;
+    LoadIssue issue{where, d.rule + " " + d.element + " (" + d.section + "): " + d.message, where};
+    if (auto at = element_offset(positions, d.element))
+      std::tie(issue.line, issue.column) = line_and_column(json_text, *at);
+    issues.push_back(std::move(issue));
+  }
   throw LoadError(std::move(issues));
+}
+
+Matrix load_valid_matrix(const std::filesystem::path& file, const std::string& use) {
+  return parse_valid_matrix(read_text_file(file), file.string(), use);
 }
 
 std::string to_canonical_json(const Matrix& m) { return canonical_text(m); }
