@@ -128,8 +128,11 @@ std::string gcc_lines(const std::vector<ValidatedFile>& files, const ValidationO
       const Diagnostic& d = f.diagnostics[i];
       if (o.quiet && !counts_as_error(d, o)) continue;
       auto [line, column] = position_of(f, i);
+      // Under --warnings-as-errors a warning is reported as an error (as
+      // compilers do with -Werror); its rule id still says W-.
       out += f.file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " +
-             model::to_string(d.severity) + ": [" + d.rule + "] " + d.element + ": " + d.message + "\n";
+             (counts_as_error(d, o) ? "error" : "warning") + ": [" + d.rule + "] " + d.element + ": " + d.message +
+             "\n";
     }
   }
   return out;

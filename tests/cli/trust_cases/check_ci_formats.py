@@ -41,7 +41,7 @@ for i, r in enumerate(rules):
     require(require(r, "shortDescription", dict, f"rules[{i}]"), "text", str, f"rules[{i}].shortDescription")
     require(require(r, "help", dict, f"rules[{i}]"), "text", str, f"rules[{i}].help")
     assert "section" in r.get("properties", {}), f"rules[{i}] has no manual section"
-assert "E-ID-DUPLICATE" in catalogue and "E-INTERSECTION-X" in catalogue and "E-LOAD" in catalogue
+assert "E-DUPLICATE-CAUSE-ID" in catalogue and "E-INTERSECTION-X" in catalogue and "E-LOAD" in catalogue
 results = require(run0, "results", list, "run")
 seen_files = set()
 for i, res in enumerate(results):
@@ -59,7 +59,7 @@ for i, res in enumerate(results):
     assert isinstance(region.get("startLine"), int) and region["startLine"] >= 1
     assert isinstance(region.get("startColumn"), int) and region["startColumn"] >= 1
     seen_files.add(uri)
-    if rule == "E-ID-DUPLICATE":
+    if rule == "E-DUPLICATE-CAUSE-ID":
         assert region["startLine"] == 7 and region["startColumn"] == 5, f"{where}: {region}"
 assert any(f.endswith("errors.json") for f in seen_files)
 assert "no/such.json" in seen_files
@@ -74,7 +74,7 @@ for s in suites:
     assert int(s.get("failures")) == sum(1 for c in cases if c.find("failure") is not None)
 dup = [s for s in suites if s.get("name").endswith("duplicate_id.json")][0]
 failing = [c.get("name") for c in dup.findall("testcase") if c.find("failure") is not None]
-assert "E-ID-DUPLICATE" in failing, failing
+assert "E-DUPLICATE-CAUSE-ID" in failing, failing
 names = [c.get("name") for c in dup.findall("testcase")]
 assert len(names) == len(set(names)) and len(names) >= len(catalogue) - 1
 missing = [s for s in suites if s.get("name") == "no/such.json"][0]
