@@ -343,10 +343,11 @@ ValidationSummary summarize(const std::vector<ValidatedFile>& files, const Valid
 }
 
 std::string summary_line(const ValidationSummary& s) {
-  std::string line = plural(s.files, "file") + ": " + std::to_string(s.clean) + " clean, " +
+  // No singular forms, as in the single-file summary: scripts match one pattern.
+  std::string line = std::to_string(s.files) + " files: " + std::to_string(s.clean) + " clean, " +
                      std::to_string(s.with_errors) + " with errors";
   if (s.unreadable > 0) line += ", " + std::to_string(s.unreadable) + " unreadable";
-  return line + "; " + plural(s.errors, "error") + ", " + plural(s.warnings, "warning");
+  return line + "; " + std::to_string(s.errors) + " errors, " + std::to_string(s.warnings) + " warnings";
 }
 
 std::string validation_report(const std::vector<ValidatedFile>& files, ValidationFormat format,

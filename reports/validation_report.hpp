@@ -43,7 +43,8 @@ struct ValidationSummary {
 ValidationSummary summarize(const std::vector<ValidatedFile>& files, const ValidationOptions& options);
 
 // "3 files: 2 clean, 1 with errors; 4 errors, 7 warnings" (", N unreadable"
-// after the files that have errors when some could not be read).
+// after the files that have errors when some could not be read); plural
+// forms always, like the single-file "1 errors, 0 warnings".
 std::string summary_line(const ValidationSummary& s);
 
 // The report. With one file, text and JSON are the single-file report of
