@@ -123,6 +123,13 @@ cemv_cli_test(NAME cli_report_invalid_json_banner EXIT 1 MATCH "\"banner\": \"IN
   COMMAND ${_c} report ${_errors} --format json)
 cemv_cli_test(NAME cli_export_smt_depth_with_vmt_refused EXIT 2 MATCH "--depth applies to --format smt2"
   COMMAND ${_c} export-smt ${_hipps} --format vmt --depth 5)
+cemv_cli_test(NAME cli_export_csv_orientation_needs_grid EXIT 2 MATCH "--orientation applies to --layout grid only"
+  COMMAND ${_c} export-csv ${_tank} --orientation effects-as-rows)
+cemv_cli_test(NAME cli_import_csv_grid_options_with_records_refused EXIT 2
+  MATCH "--separator, --name and --orientation apply to grids"
+  COMMAND ${_c} import-csv tests/formats/csv_cases/tab_grid.tsv --layout records --name X)
+cemv_cli_test(NAME cli_fmt_several_files_without_check EXIT 2 MATCH "give one FILE to format"
+  COMMAND ${_c} fmt ${_tank} ${_hipps})
 cemv_cli_test(NAME cli_import_csv_name_too_long EXIT 2
   MATCH "--name 'ABCDEFGHIJKLMNOPQ': 17 characters. a matrix name has at most 16 \\(6\\.1\\.2\\)"
   COMMAND ${_c} import-csv tests/formats/csv_cases/tab_grid.tsv --orientation causes-as-rows --name ABCDEFGHIJKLMNOPQ)
