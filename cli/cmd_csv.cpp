@@ -1,29 +1,23 @@
 // `cemv export-csv` and `cemv import-csv`: spreadsheet exchange (6.6, docs/csv.md).
-#include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <stdexcept>
 
 #include "cli/commands.hpp"
+#include "cli/matrix_input.hpp"
+#include "cli/output.hpp"
 #include "formats/csv.hpp"
 #include "formats/matrix_json.hpp"
+#include "model/names.hpp"
+#include "model/text.hpp"
 
 namespace cemv::cli {
 
 namespace {
 
-// Writes text to a file, or stdout when path is empty; false when it cannot.
-bool write_output(const std::string& path, const std::string& text, const char* what) {
-  if (path.empty()) {
-    std::cout << text;
-    std::cout.flush();
-    return true;
-  }
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  out.close();
-  if (!out) std::cerr << "error: " << path << ": cannot write the " << what << "\n";
-  return static_cast<bool>(out);
-}
+// 6.1.2: the name of a matrix in the engineering tool.
+constexpr std::size_t kMaxImportedName = 16;
 
 formats::CsvOrientation orientation_of(const std::string& text) {
   if (text == "causes-as-rows") return formats::CsvOrientation::CausesAsRows;
@@ -36,7 +30,7 @@ formats::CsvOrientation orientation_of(const std::string& text) {
 void add_csv_commands(CLI::App& app, Context& ctx) {
   struct ExportOptions {
     std::string file;
-    std::string output;
+    std::string output = "-";
     std::string layout = "records";
     std::string orientation = "causes-as-rows";
   };
@@ -45,7 +39,7 @@ void add_csv_commands(CLI::App& app, Context& ctx) {
       "export-csv",
       "Write a matrix as one cemv-csv/1 spreadsheet file holding every field (6.6), or as the C&E "
       "grid an engineer reviews");
-  exp->add_option("FILE", ex->file, "Matrix file (cemv-matrix/1)")->required();
+  exp->add_option("FILE", ex->file, "Matrix file (cemv-matrix/1; '-' = standard input)")->required();
   exp->add_option("-o,--output", ex->output, "Write the CSV here instead of stdout");
   exp->add_option("--layout", ex->layout,
                   "records (default: cemv-csv/1, every field) or grid (ids, descriptions and "
@@ -54,17 +48,20 @@ void add_csv_commands(CLI::App& app, Context& ctx) {
   exp->add_option("--orientation", ex->orientation,
                   "Grid: causes-as-rows (default) or effects-as-rows")
       ->check(CLI::IsMember({"auto", "causes-as-rows", "effects-as-rows"}));
-  exp->callback([ex, &ctx] {
-    const model::Matrix m = formats::load_matrix(ex->file);
-    const std::string text = ex->layout == "grid"
-                                 ? formats::export_csv_grid(m, orientation_of(ex->orientation))
-                                 : formats::export_csv(m);
-    ctx.exit_code = write_output(ex->output, text, "CSV file") ? 0 : 2;
+  add_quiet_flag(exp, ctx);
+  exp->callback([ex, exp, &ctx] {
+    if (ex->layout != "grid" && exp->count("--orientation") > 0)
+      throw std::invalid_argument("export-csv: --orientation applies to --layout grid only");
+    check_writable(ex->output);
+    const model::Matrix m = load_matrix_input(ex->file);
+    write_output(ex->output, ex->layout == "grid" ? formats::export_csv_grid(m, orientation_of(ex->orientation))
+                                                  : formats::export_csv(m));
+    ctx.exit_code = 0;
   });
 
   struct ImportOptions {
     std::string input;
-    std::string output;
+    std::string output = "-";
     std::string layout = "auto";
     std::string separator;
     std::string name;
@@ -76,7 +73,7 @@ void add_csv_commands(CLI::App& app, Context& ctx) {
       "import-csv",
       "Read a cemv-csv/1 file or a C&E grid spreadsheet (like the LSST interlock table) and "
       "write a cemv-matrix/1 file; defects of the sheet are warnings on stderr");
-  imp->add_option("INPUT", im->input, "CSV file")->required();
+  imp->add_option("INPUT", im->input, "CSV file ('-' = standard input)")->required();
   imp->add_option("-o,--output", im->output, "Write the matrix here instead of stdout");
   imp->add_option("--layout", im->layout, "auto (default), records (cemv-csv/1) or grid")
       ->check(CLI::IsMember({"auto", "records", "grid"}));
@@ -89,7 +86,23 @@ void add_csv_commands(CLI::App& app, Context& ctx) {
                   "they are missing or disagree), causes-as-rows or effects-as-rows")
       ->check(CLI::IsMember({"auto", "causes-as-rows", "effects-as-rows"}));
   imp->add_flag("--strict", im->strict, "Every import warning is an error (exit 2), for CI");
-  imp->callback([im, &ctx] {
+  add_quiet_flag(imp, ctx);
+  imp->callback([im, imp, &ctx] {
+    // 6.1.2: a matrix name has at most 16 characters, as the help text says
+    // (and the name rule of docs/format.md); checked before the sheet is read.
+    if (imp->count("--name") > 0) {
+      std::optional<std::string> problem = model::element_name_problem(im->name);
+      if (!problem && im->name.size() > kMaxImportedName)
+        problem = std::to_string(im->name.size()) + " characters; a matrix name has at most " +
+                  std::to_string(kMaxImportedName) + " (6.1.2)";
+      if (problem) throw std::invalid_argument("import-csv: --name " + model::in_quotes(im->name) + ": " + *problem);
+    }
+    const bool grid_only = imp->count("--separator") + imp->count("--name") > 0 ||
+                           (imp->count("--orientation") > 0 && im->orientation != "auto");
+    if (im->layout == "records" && grid_only)
+      throw std::invalid_argument("import-csv: --separator, --name and --orientation apply to grids, not to "
+                                  "--layout records");
+    check_writable(im->output);
     formats::CsvImportOptions options;
     options.layout = im->layout == "records" ? formats::CsvLayoutKind::Records
                      : im->layout == "grid"  ? formats::CsvLayoutKind::Grid
@@ -98,12 +111,24 @@ void add_csv_commands(CLI::App& app, Context& ctx) {
     options.orientation = orientation_of(im->orientation);
     options.strict = im->strict;
     if (!im->separator.empty()) options.separator = im->separator == "tab" ? '\t' : im->separator[0];
-    const std::string text = formats::read_text_file(im->input);
-    const formats::CsvImportResult result = formats::import_csv(text, im->input, options);
-    for (const auto& w : result.warnings) std::cerr << "warning: " << w.str() << "\n";
-    if (!result.summary.empty()) std::cerr << "note: " << im->input << ": " << result.summary << "\n";
-    ctx.exit_code =
-        write_output(im->output, formats::to_canonical_json(result.matrix), "matrix") ? 0 : 2;
+    const std::string name = input_name(im->input);
+    const std::string text = read_input(im->input);
+    formats::CsvImportResult result;
+    try {
+      result = formats::import_csv(text, name, options);
+    } catch (const formats::LoadError& e) {
+      throw e.in_file(name);
+    }
+    if (!ctx.quiet) {
+      for (const auto& w : result.warnings) {
+        formats::LoadIssue issue = w;
+        if (issue.file.empty()) issue.file = name;
+        std::cerr << issue.message("warning") << "\n";
+      }
+      if (!result.summary.empty()) std::cerr << name << ": note: " << result.summary << "\n";
+    }
+    write_output(im->output, formats::to_canonical_json(result.matrix));
+    ctx.exit_code = 0;
   });
 }
 

@@ -3,13 +3,20 @@
 // simulate"). Without MATRIX the scenario's `matrix` key names the matrix.
 // Exit 0 when every expectation holds, 1 when one fails, 2 on invalid input.
 #include <filesystem>
-#include <iostream>
 #include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include <sstream>
+#include <stdexcept>
+#include <string_view>
+
+#include <nlohmann/json.hpp>
+
 #include "cli/commands.hpp"
+#include "cli/matrix_input.hpp"
+#include "cli/output.hpp"
 #include "formats/matrix_json.hpp"
 #include "formats/scenario.hpp"
 #include "formats/trace.hpp"
@@ -55,63 +62,183 @@ class RuntimeValues {
   std::map<std::string, std::size_t> index_;
 };
 
-// Without MATRIX, the scenario's `matrix` key (docs/scenario.md, "Top level").
-std::filesystem::path matrix_of(const std::vector<std::string>& files) {
+// Without MATRIX, the scenario's `matrix` key (docs/scenario.md, "Top level"),
+// relative to the scenario's folder (the working folder for standard input).
+std::string matrix_of(const std::vector<std::string>& files, const std::string& scenario_text) {
   if (files.size() == 2) return files[0];
-  auto named = formats::scenario_matrix_path(files[0]);
-  if (!named)
-    throw formats::LoadError({{files[0], "the scenario names no matrix: give MATRIX SCENARIO, or add "
-                                          "\"matrix\": \"PATH\" (relative to the scenario file)"}});
-  return *named;
+  const std::string name = input_name(files[0]);
+  auto key = formats::scenario_matrix_key(scenario_text, name);
+  if (!key)
+    throw formats::LoadError({{"", "the scenario names no matrix: give MATRIX SCENARIO, or add "
+                                   "\"matrix\": \"PATH\" (relative to the scenario file)", name}});
+  if (files[0] == "-") return *key;
+  return (std::filesystem::path(files[0]).parent_path() / *key).string();
 }
 
-int run_simulate(const std::vector<std::string>& files, const std::string& trace_file) {
-  const std::string scenario_file = files.back();
-  model::Matrix m = formats::load_valid_matrix(matrix_of(files), "simulated");
-  formats::Scenario sc = formats::load_scenario(scenario_file, m);
+struct SimulateOptions {
+  std::vector<std::string> files;
+  std::string trace_file;
+  bool trace_changes = false;
+  std::string format = "text";
+  std::string out = "-";
+};
+
+// A sink that collects small writes into large ones (a trace line per cycle
+// would otherwise be one write(2) each).
+class BufferedOutput {
+ public:
+  explicit BufferedOutput(Output& out) : out_(out) {}
+  void write(std::string_view text) {
+    buffer_.append(text);
+    if (buffer_.size() >= kChunk) flush();
+  }
+  void flush() {
+    out_.write(buffer_);
+    buffer_.clear();
+  }
+
+ private:
+  static constexpr std::size_t kChunk = 1 << 16;
+  Output& out_;
+  std::string buffer_;
+};
+
+// An expected or observed value as JSON: Boolean, integer or voting text.
+nlohmann::ordered_json value_json(model::FieldType type, int v) {
+  switch (type) {
+    case model::FieldType::Bool: return v != 0;
+    case model::FieldType::Int: return v;
+    case model::FieldType::Voting: return formats::expectation_value_text(type, v);
+  }
+  return v;
+}
+
+int run_simulate(const SimulateOptions& o, bool quiet) {
+  // Every destination is checked before the scenario runs.
+  check_writable(o.out);
+  const bool tracing = !o.trace_file.empty();
+  if (tracing) check_writable(o.trace_file);
+  if (o.trace_changes && !tracing) throw std::invalid_argument("simulate: --trace-changes needs --trace FILE");
+  if (tracing && o.trace_file == o.out && o.out != "-")
+    throw std::invalid_argument("simulate: --trace and -o name the same file");
+  const bool json_format = o.format == "json";
+  if (tracing && o.trace_file == "-" && (o.out == "-" && (json_format || !quiet)))
+    throw std::invalid_argument("simulate: --trace - writes the trace to standard output; give -o FILE for "
+                                "the result, or --quiet");
+
+  if (o.files.size() == 2 && o.files[0] == "-" && o.files[1] == "-")
+    throw std::invalid_argument("simulate: '-' (standard input) can be read only once");
+  const std::string scenario_file = input_name(o.files.back());
+  // The matrix first when both are given, so its errors come first.
+  std::optional<model::Matrix> given;
+  if (o.files.size() == 2) given = load_valid_matrix(o.files[0], "simulated");
+  const std::string scenario_text = read_input(o.files.back());
+  const std::string matrix_file = matrix_of(o.files, scenario_text);
+  model::Matrix m = given ? std::move(*given) : load_valid_matrix(matrix_file, "simulated");
+  formats::Scenario sc = formats::parse_scenario(scenario_text, m, scenario_file);
   formats::ExpandedScenario ex = formats::expand_scenario(sc, m);
+  const std::string sig = formats::signature(m);
 
   runtime::Runtime rt(m);
   const model::InputTable& inputs = rt.inputs();
   const std::vector<model::Observable> obs = model::observables(m);
   const std::vector<std::string> outputs = output_tag_names(m, obs);
   reports::TimingTable timing(inputs, obs);
-  formats::TraceWriter trace(m, inputs, obs, outputs);
   formats::ExpectationChecker checker(ex);
 
+  Output result(o.out);
+  std::optional<Output> trace_out;
+  std::optional<BufferedOutput> trace_buffer;
+  std::optional<formats::TraceWriter> trace;
+  if (tracing) {
+    trace_out.emplace(o.trace_file);
+    trace_buffer.emplace(*trace_out);
+    trace.emplace(m, inputs, obs, outputs, sig, [&](std::string_view t) { trace_buffer->write(t); },
+                  formats::TraceWriter::Options{o.trace_changes});
+  }
+
+  nlohmann::ordered_json steps = nlohmann::ordered_json::array();
   std::vector<int> snap;
   const RuntimeValues values(rt, obs, snap);
   std::uint64_t refused_total = 0;
+  std::vector<std::optional<bool>> output_values;
   for (std::size_t c = 0; c < ex.cycles.size(); ++c) {
     const model::CycleInput& in = ex.cycles[c];
     rt.step(in);
     rt.snapshot(snap);
     refused_total += static_cast<std::uint64_t>(rt.commands_refused());
-    timing.record(c + 1, in, snap);
-    if (!trace_file.empty()) {
-      std::vector<std::optional<bool>> output_values;
+    if (!json_format) timing.record(c + 1, in, snap);
+    if (trace) {
+      output_values.clear();
       for (const auto& name : outputs) output_values.push_back(rt.output(name));
-      trace.add_cycle(c, ex.step_of_cycle[c], in, rt.commands_refused(), snap, output_values);
+      trace->add_cycle(c, ex.step_of_cycle[c], in, rt.commands_refused(), snap, output_values);
     }
-    for (const auto& outcome : checker.after_cycle(c, values))
-      if (!outcome.ok) std::cout << outcome.failure_text(m.cycle_ms) << "\n";
+    std::vector<formats::ExpectationOutcome> outcomes = checker.after_cycle(c, values);
+    if (json_format) {
+      // The step ends with this cycle when its expectations are due now.
+      for (const auto& check : ex.checks) {
+        if (check.cycle != c) continue;
+        const formats::ScenarioStep& st = sc.steps[check.step];
+        nlohmann::ordered_json step;
+        step["step"] = check.step;
+        if (!st.description.empty()) step["description"] = st.description;
+        step["cycle"] = c + 1;
+        step["t_ms"] = static_cast<std::uint64_t>(c) * m.cycle_ms;
+        nlohmann::ordered_json expectations = nlohmann::ordered_json::array();
+        for (const auto& outcome : outcomes) {
+          if (outcome.step != check.step) continue;
+          const formats::Expectation& x = *outcome.expectation;
+          expectations.push_back({{"key", x.key},
+                                  {"expected", value_json(x.type, x.expected)},
+                                  {"observed", outcome.actual ? value_json(x.type, *outcome.actual)
+                                                              : nlohmann::ordered_json(nullptr)},
+                                  {"pass", outcome.ok}});
+        }
+        step["expectations"] = std::move(expectations);
+        steps.push_back(std::move(step));
+      }
+      continue;
+    }
+    for (const auto& outcome : outcomes)
+      if (!outcome.ok) result.write(outcome.failure_text(m.cycle_ms) + "\n");
   }
 
-  timing.print(std::cout, m.cycle_ms);
-  std::string sig = formats::signature(m);
-  std::cout << "matrix " << m.name << " signature " << sig << "\n";
-  std::cout << "scenario " << scenario_file << ": " << sc.steps.size() << " steps, "
-            << ex.cycles.size() << " cycles, " << checker.checked() << " expectations, "
-            << checker.failed() << " failed";
-  if (refused_total)
-    std::cout << ", " << refused_total << (refused_total == 1 ? " command" : " commands") << " refused";
-  std::cout << "\n" << (checker.failed() ? "FAIL" : "PASS") << "\n";
-
-  if (!trace_file.empty() && !trace.write(trace_file, sig)) {
-    std::cerr << "error: " << trace_file << ": cannot write the trace\n";
-    return 2;
+  const bool pass = checker.failed() == 0;
+  if (json_format) {
+    nlohmann::ordered_json j;
+    j["format"] = "cemv-simulation/1";
+    j["matrix"] = m.name;
+    j["signature"] = sig;
+    j["matrix_file"] = input_name(matrix_file);
+    j["scenario"] = scenario_file;
+    j["cycle_ms"] = m.cycle_ms;
+    j["cycles"] = ex.cycles.size();
+    j["expectations"] = checker.checked();
+    j["failed"] = checker.failed();
+    j["commands_refused"] = refused_total;
+    j["steps"] = std::move(steps);
+    j["verdict"] = pass ? "PASS" : "FAIL";
+    result.write(j.dump(2) + "\n");
+  } else if (!quiet) {
+    std::ostringstream text;
+    timing.print(text, m.cycle_ms);
+    text << "matrix " << m.name << " signature " << sig << "\n";
+    text << "scenario " << scenario_file << ": " << sc.steps.size() << " steps, " << ex.cycles.size()
+         << " cycles, " << checker.checked() << " expectations, " << checker.failed() << " failed";
+    if (refused_total)
+      text << ", " << refused_total << (refused_total == 1 ? " command" : " commands") << " refused";
+    text << "\n" << (pass ? "PASS" : "FAIL") << "\n";
+    result.write(text.str());
   }
-  return checker.failed() ? 1 : 0;
+  // The trace is complete before the result is: a reader that sees PASS finds
+  // the whole trace in place.
+  if (trace) {
+    trace->finish();
+    trace_buffer->flush();
+    trace_out->commit();
+  }
+  result.commit();
+  return pass ? 0 : 1;
 }
 
 }  // namespace
@@ -119,15 +246,23 @@ int run_simulate(const std::vector<std::string>& files, const std::string& trace
 void add_simulate_commands(CLI::App& app, Context& ctx) {
   auto* cmd = app.add_subcommand(
       "simulate", "Run a cemv-scenario/1 file on the reference runtime and check its expectations");
-  static std::vector<std::string> files;
-  static std::string trace_file;
-  cmd->add_option("FILES", files,
-                  "[MATRIX] SCENARIO: the cemv-matrix/1 file (default: the scenario's \"matrix\" key) "
-                  "and the cemv-scenario/1 file")
+  auto o = std::make_shared<SimulateOptions>();
+  cmd->add_option("FILES", o->files,
+                  "[MATRIX] SCENARIO: the cemv-matrix/1 file (default: the scenario's \"matrix\" key; "
+                  "'-' = standard input) and the cemv-scenario/1 file")
       ->required()
       ->expected(1, 2);
-  cmd->add_option("--trace", trace_file, "write the per-cycle trace (inputs, every observable) as JSON");
-  cmd->callback([&ctx]() { ctx.exit_code = run_simulate(files, trace_file); });
+  cmd->add_option("--trace", o->trace_file,
+                  "Write the per-cycle trace (cemv-trace/1: inputs, every observable) to this file, "
+                  "streamed as the scenario runs and replaced atomically at the end");
+  cmd->add_flag("--trace-changes", o->trace_changes,
+                "With --trace: write only the cycles whose row changes (and the first and last)");
+  cmd->add_option("--format", o->format, "text (default: failures, timing table, summary) or json "
+                                         "(cemv-simulation/1, docs/scenario.md)")
+      ->check(CLI::IsMember({"text", "json"}));
+  cmd->add_option("-o,--output", o->out, "Write the result here instead of standard output");
+  add_quiet_flag(cmd, ctx);
+  cmd->callback([o, &ctx]() { ctx.exit_code = run_simulate(*o, ctx.quiet); });
 }
 
 }  // namespace cemv::cli

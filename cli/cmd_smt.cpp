@@ -1,13 +1,15 @@
 // `cemv export-smt MATRIX [--roots cause:1,effect:2] --format smt2|vmt
 //  [--depth k] [--property KEY | --reach KEY] [-o OUT]`: the encoder's
 // transition system for other solvers (docs/encoding.md "Export").
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 
 #include "cli/commands.hpp"
+#include "cli/matrix_input.hpp"
+#include "cli/output.hpp"
 #include "encoder/encode.hpp"
 #include "encoder/export.hpp"
 #include "formats/matrix_json.hpp"
@@ -23,7 +25,8 @@ struct SmtOptions {
   int depth = 10;
   std::string property;
   std::string reach;
-  std::string out;
+  std::string out = "-";
+  bool depth_given = false;
 };
 
 // "cause:1,effect:2" -> nodes; nullopt-like empty vector with ok=false on error.
@@ -50,7 +53,12 @@ bool parse_roots(const std::string& text, std::vector<model::Node>& out, std::st
 }
 
 void run(const SmtOptions& o, Context& ctx) {
-  model::Matrix m = formats::load_valid_matrix(o.file, "encoded");
+  // Options that mean nothing for the chosen format are refused, not ignored.
+  if (o.format == "vmt" && o.depth_given)
+    throw std::invalid_argument("export-smt: --depth applies to --format smt2 (an unrolling); VMT-LIB "
+                                "describes the transition system itself, without a depth");
+  check_writable(o.out);
+  model::Matrix m = load_valid_matrix(o.file, "encoded");
   std::vector<model::Node> roots;
   std::string error;
   if (!parse_roots(o.roots, roots, error)) {
@@ -86,17 +94,7 @@ void run(const SmtOptions& o, Context& ctx) {
     ctx.exit_code = 2;
     return;
   }
-  if (o.out.empty()) {
-    std::cout << text;
-  } else {
-    std::ofstream f(o.out, std::ios::binary);
-    f << text;
-    if (!f) {
-      std::cerr << "error: cannot write " << o.out << "\n";
-      ctx.exit_code = 2;
-      return;
-    }
-  }
+  write_output(o.out, text);
   ctx.exit_code = 0;
 }
 
@@ -106,7 +104,7 @@ void add_smt_commands(CLI::App& app, Context& ctx) {
   auto opt = std::make_shared<SmtOptions>();
   auto* cmd = app.add_subcommand(
       "export-smt", "Write the matrix's transition system as SMT-LIB 2 (an unrolling) or VMT-LIB");
-  cmd->add_option("matrix", opt->file, "cemv-matrix/1 file")->required();
+  cmd->add_option("matrix", opt->file, "cemv-matrix/1 file ('-' = standard input)")->required();
   cmd->add_option("--roots", opt->roots,
                   "Cone of influence: causes/effects to encode, e.g. cause:1,effect:2 (default all)");
   cmd->add_option("--format", opt->format, "smt2 or vmt")
@@ -118,8 +116,12 @@ void add_smt_commands(CLI::App& app, Context& ctx) {
                   "(smt2: sat = counterexample)");
   cmd->add_option("--reach", opt->reach,
                   "A Boolean observable to reach (smt2: sat = witness)");
-  cmd->add_option("-o,--output", opt->out, "Output file (default stdout)");
-  cmd->callback([opt, &ctx] { run(*opt, ctx); });
+  cmd->add_option("-o,--output", opt->out, "Output file (default stdout; replaced atomically)");
+  add_quiet_flag(cmd, ctx);
+  cmd->callback([opt, cmd, &ctx] {
+    opt->depth_given = cmd->count("--depth") > 0;
+    run(*opt, ctx);
+  });
 }
 
 }  // namespace cemv::cli

@@ -16,7 +16,15 @@ namespace cemv::cli {
 
 struct Context {
   int exit_code = 0;
+  bool quiet = false;  // --quiet: print nothing but errors (README, "Commands")
 };
+
+// `-q,--quiet` on a command: human-readable text on standard output (tables,
+// summaries, notes and warnings) is left out; errors, the files a command is
+// asked to write and machine-readable output still are written.
+inline void add_quiet_flag(CLI::App* cmd, Context& ctx) {
+  cmd->add_flag("-q,--quiet", ctx.quiet, "Print nothing but errors (and the output asked for)");
+}
 
 void add_model_commands(CLI::App& app, Context& ctx);     // fmt, signature
 void add_validate_commands(CLI::App& app, Context& ctx);  // validate, graph

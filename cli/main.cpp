@@ -1,26 +1,32 @@
 // cemv: formal verification and test generation for cause & effect matrices.
-#include <cctype>
 #include <exception>
-#include <string>
 #include <iostream>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/errors.hpp"
 #include "cli/output.hpp"
 #include "formats/diagnostics.hpp"
+#include "model/text.hpp"
 
 namespace {
 
-// "FILE:LINE:COL": ends in two colon-separated runs of digits after a name.
-bool has_file_line_column(const std::string& where) {
-  auto digits_before = [&](std::size_t end) {
-    std::size_t i = end;
-    while (i > 0 && std::isdigit(static_cast<unsigned char>(where[i - 1]))) --i;
-    return i < end && i > 0 && where[i - 1] == ':' ? i - 1 : std::string::npos;
-  };
-  std::size_t col = digits_before(where.size());
-  if (col == std::string::npos) return false;
-  std::size_t line = digits_before(col);
-  return line != std::string::npos && line > 0;
+// `cemv WORD ...` where WORD is no command (and no option): CLI11 would answer
+// "A subcommand is required"; name the word and the nearest command instead.
+std::optional<std::string> unknown_command(const CLI::App& app, int argc, char** argv) {
+  if (argc < 2 || argv[1][0] == '-') return std::nullopt;
+  const std::string word = argv[1];
+  std::vector<std::string> names;
+  for (const CLI::App* sub : app.get_subcommands({})) {
+    if (sub->check_name(word)) return std::nullopt;
+    names.push_back(sub->get_name());
+  }
+  std::string message = "unknown command " + cemv::model::in_quotes(word);
+  std::string hint = cemv::model::did_you_mean(word, names);  // " (did you mean 'graph'?)"
+  if (hint.size() > 3) message += "; " + hint.substr(2, hint.size() - 3);
+  return message + " (cemv --help lists the commands)";
 }
 
 }  // namespace
@@ -43,6 +49,10 @@ int main(int argc, char** argv) {
   cemv::cli::add_testgen_commands(app, ctx);
   cemv::cli::add_replay_commands(app, ctx);
 #endif
+  if (auto message = unknown_command(app, argc, argv)) {
+    std::cerr << "error: " << *message << "\n";
+    return 2;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -53,15 +63,7 @@ int main(int argc, char** argv) {
     // of a process that SIGPIPE killed.
     return 128 + 13;
   } catch (const cemv::formats::LoadError& e) {
-    for (const auto& issue : e.issues()) {
-      // A place of the form FILE:LINE:COL leads its line, as compilers write
-      // it (editors and CI log views jump there); other places keep the
-      // "error: PLACE: message" form of the matrix and scenario loaders.
-      if (has_file_line_column(issue.where))
-        std::cerr << issue.where << ": error: " << issue.what << "\n";
-      else
-        std::cerr << "error: " << issue.str() << "\n";
-    }
+    cemv::cli::print_load_error(e, std::cerr);
     return 2;
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";

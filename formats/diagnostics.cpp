@@ -6,6 +6,8 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 
@@ -30,34 +32,148 @@ std::string summary_of(const std::vector<LoadIssue>& issues) {
 LoadError::LoadError(std::vector<LoadIssue> issues)
     : std::runtime_error(summary_of(issues)), issues_(std::move(issues)) {}
 
-std::string line_column(std::string_view text, std::size_t index) {
+std::pair<std::size_t, std::size_t> line_and_column(std::string_view text, std::size_t index) {
   index = std::min(index, text.size());
   std::string_view before = text.substr(0, index);
   std::size_t line = 1 + static_cast<std::size_t>(std::count(before.begin(), before.end(), '\n'));
   std::size_t last_newline = before.rfind('\n');
   std::size_t column = last_newline == std::string_view::npos ? index + 1 : index - last_newline;
+  return {line, column};
+}
+
+std::string line_column(std::string_view text, std::size_t index) {
+  auto [line, column] = line_and_column(text, index);
   return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
+namespace {
+
+// Digits at text[i...]: the number and the index after it; nullopt when none.
+std::optional<std::size_t> digits_at(std::string_view text, std::size_t& i) {
+  std::size_t start = i, value = 0;
+  while (i < text.size() && std::isdigit(static_cast<unsigned char>(text[i])) && i - start < 12)
+    value = value * 10 + static_cast<std::size_t>(text[i++] - '0');
+  if (i == start) return std::nullopt;
+  return value;
+}
+
+// "[SOURCE: ]line L[, column C][REST]" -> SOURCE, L, C, REST (REST without a
+// leading ", " or " "); false when `where` has another form.
+bool split_line_column(std::string_view where, std::string& source, std::size_t& line, std::size_t& column,
+                       std::string& rest) {
+  std::size_t at = where.rfind("line ");
+  while (at != std::string_view::npos) {
+    if (at == 0 || (at >= 2 && where.substr(at - 2, 2) == ": ")) break;
+    at = at == 0 ? std::string_view::npos : where.rfind("line ", at - 1);
+  }
+  if (at == std::string_view::npos) return false;
+  std::size_t i = at + 5;
+  auto l = digits_at(where, i);
+  if (!l || *l == 0) return false;
+  column = 0;
+  if (where.substr(i, 9) == ", column ") {
+    std::size_t j = i + 9;
+    if (auto c = digits_at(where, j)) {
+      column = *c;
+      i = j;
+    }
+  }
+  if (i < where.size() && where[i] != ',' && where[i] != ' ') return false;
+  source = std::string(at == 0 ? std::string_view() : where.substr(0, at - 2));
+  line = *l;
+  std::string_view r = where.substr(i);
+  while (!r.empty() && (r.front() == ',' || r.front() == ' ')) r.remove_prefix(1);
+  rest = std::string(r);
+  return true;
+}
+
+// "FILE:LINE:COL" (the property parser's places).
+bool is_file_line_column(std::string_view where) {
+  auto digits_before = [&](std::size_t end) {
+    std::size_t i = end;
+    while (i > 0 && std::isdigit(static_cast<unsigned char>(where[i - 1]))) --i;
+    return i < end && i > 0 && where[i - 1] == ':' ? i - 1 : std::string_view::npos;
+  };
+  std::size_t col = digits_before(where.size());
+  if (col == std::string_view::npos) return false;
+  std::size_t line = digits_before(col);
+  return line != std::string_view::npos && line > 0;
+}
+
+std::string position_text(std::size_t line, std::size_t column) {
+  std::string s = ":" + std::to_string(line);
+  if (column > 0) s += ":" + std::to_string(column);
+  return s;
+}
+
+}  // namespace
+
+std::string LoadIssue::message(std::string_view severity) const {
+  const std::string sev(severity);
+  std::string source = file, detail = where, rest;
+  std::size_t l = line, c = column;
+  std::string parsed_source;
+  std::size_t pl = 0, pc = 0;
+  if (split_line_column(where, parsed_source, pl, pc, rest)) {
+    // The place is a position (with or without its file): use it unless the
+    // issue already has one.
+    if (source.empty()) source = parsed_source;
+    if (l == 0) {
+      l = pl;
+      c = pc;
+    }
+    detail = rest;
+  } else if (source.empty() && is_file_line_column(where)) {
+    return where + ": " + sev + ": " + what;
+  } else if (source.empty()) {
+    // A place that names no file is the file itself (read errors), or a path.
+    if (where.empty()) return sev + ": " + what;
+    return where + ": " + sev + ": " + what;
+  }
+  if (detail == source) detail.clear();
+  std::string out = source;
+  if (l > 0) out += position_text(l, c);
+  out += (out.empty() ? "" : ": ") + sev + ": ";
+  if (!detail.empty()) out += detail + ": ";
+  return out + what;
+}
+
+LoadError LoadError::in_file(const std::string& file) const {
+  std::vector<LoadIssue> issues = issues_;
+  for (auto& i : issues) {
+    if (!i.file.empty() || is_file_line_column(i.where)) continue;
+    std::string source, rest;
+    std::size_t l = 0, c = 0;
+    // A place that starts with its own file name keeps it.
+    if (split_line_column(i.where, source, l, c, rest) && !source.empty()) continue;
+    if (i.where.rfind(file, 0) == 0) continue;
+    i.file = file;
+  }
+  return LoadError(std::move(issues));
 }
 
 std::string read_text_file(const std::filesystem::path& file) {
   const std::string where = file.string();
   std::error_code ec;
-  if (std::filesystem::is_directory(file, ec)) throw LoadError({{where, "is a directory, not a file"}});
+  if (std::filesystem::is_directory(file, ec)) throw LoadError({{where, "is a directory, not a file", where}});
   std::ifstream in(file, std::ios::binary);
-  if (!in) throw LoadError({{where, std::string("cannot open: ") + std::strerror(errno)}});
+  if (!in) throw LoadError({{where, std::string("cannot open: ") + std::strerror(errno), where}});
   auto size = std::filesystem::file_size(file, ec);
   if (!ec && size > kMaxFileBytes)
-    throw LoadError({{where, "file is " + std::to_string(size) + " bytes, larger than the limit of " +
-                                 std::to_string(kMaxFileBytes) + " bytes"}});
+    throw LoadError({{where,
+                      "file is " + std::to_string(size) + " bytes, larger than the limit of " +
+                          std::to_string(kMaxFileBytes) + " bytes",
+                      where}});
   // Read with a cap as well: pipes and devices have no size to check first.
   std::string text;
   char buffer[1 << 16];
   while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
     text.append(buffer, static_cast<std::size_t>(in.gcount()));
     if (text.size() > kMaxFileBytes)
-      throw LoadError({{where, "file is larger than the limit of " + std::to_string(kMaxFileBytes) + " bytes"}});
+      throw LoadError(
+          {{where, "file is larger than the limit of " + std::to_string(kMaxFileBytes) + " bytes", where}});
   }
-  if (in.bad()) throw LoadError({{where, "read error"}});
+  if (in.bad()) throw LoadError({{where, std::string("cannot read: ") + std::strerror(errno), where}});
   return text;
 }
 
@@ -78,17 +194,39 @@ namespace {
 
 using InJson = nlohmann::ordered_json;
 
-// No object of the format has more than 64 members (sif_groups); the bound
-// keeps every per-object key lookup cheap on hostile input.
-constexpr std::size_t kMaxObjectMembers = 256;
+// Index of the first byte that does not belong to a well-formed UTF-8
+// sequence (no overlongs, no surrogates, nothing above U+10FFFF), or npos.
+std::size_t first_invalid_utf8(std::string_view s) {
+  const std::size_t n = s.size();
+  for (std::size_t i = 0; i < n;) {
+    auto b = static_cast<unsigned char>(s[i]);
+    if (b < 0x80) {
+      ++i;
+      continue;
+    }
+    std::size_t len = (b >> 5) == 0x6 ? 2 : (b >> 4) == 0xE ? 3 : (b >> 3) == 0x1E ? 4 : 0;
+    if (len == 0 || i + len > n) return i;
+    std::uint32_t cp = len == 2 ? (b & 0x1F) : len == 3 ? (b & 0x0F) : (b & 0x07);
+    for (std::size_t k = 1; k < len; ++k) {
+      auto c = static_cast<unsigned char>(s[i + k]);
+      if ((c & 0xC0) != 0x80) return i;
+      cp = (cp << 6) | (c & 0x3F);
+    }
+    static const std::uint32_t min_for_length[] = {0, 0, 0x80, 0x800, 0x10000};
+    if (cp < min_for_length[len] || cp > 0x10FFFF || (cp >= 0xD800 && cp <= 0xDFFF)) return i;
+    i += len;
+  }
+  return std::string_view::npos;
+}
 
 // Runs before the JSON parser so that hostile or non-JSON input gets a precise
 // position: nesting deeper than kMaxJsonDepth (neither the parser nor the DOM
 // must ever be given a million levels), objects with more than
-// kMaxObjectMembers members, numbers that overflow a double (1e999), and the
+// limits.max_members members, numbers that overflow a double (1e999), and the
 // non-JSON words NaN / Infinity. Returns false when the text must not be
 // handed to the parser. Anything else that is wrong is the parser's to report.
-bool prescan(std::string_view text, std::vector<LoadIssue>& issues) {
+bool prescan(std::string_view text, std::vector<LoadIssue>& issues, const JsonLimits& limits) {
+  const std::string document(limits.document);
   bool ok = true;
   struct Level {
     bool object;
@@ -96,6 +234,16 @@ bool prescan(std::string_view text, std::vector<LoadIssue>& issues) {
   };
   std::vector<Level> levels;
   const std::size_t n = text.size();
+  // JSON is UTF-8 text (RFC 8259 section 8.1): say where it is not, in words
+  // of our own, before the parser does in its own.
+  if (std::size_t bad = first_invalid_utf8(text); bad != std::string_view::npos) {
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "0x%02X", static_cast<unsigned char>(text[bad]));
+    issues.push_back({line_column(text, bad), std::string("invalid UTF-8: byte ") + hex +
+                                                  " does not belong here (a " + document +
+                                                  " is UTF-8 text; save it as UTF-8)"});
+    return false;
+  }
   for (std::size_t i = 0; i < n; ++i) {
     char c = text[i];
     if (c == '"') {
@@ -104,16 +252,18 @@ bool prescan(std::string_view text, std::vector<LoadIssue>& issues) {
     } else if (c == '{' || c == '[') {
       if (levels.size() == static_cast<std::size_t>(kMaxJsonDepth)) {
         issues.push_back({line_column(text, i), "JSON nesting deeper than " + std::to_string(kMaxJsonDepth) +
-                                                    " levels (a matrix needs 5)"});
+                                                    " levels (a " + document + " needs " +
+                                                    std::to_string(limits.depth_needed) + ")"});
         return false;
       }
       levels.push_back({c == '{', 1});
     } else if (c == '}' || c == ']') {
       if (!levels.empty()) levels.pop_back();
     } else if (c == ',') {
-      if (!levels.empty() && levels.back().object && ++levels.back().members > kMaxObjectMembers) {
-        issues.push_back({line_column(text, i), "object with more than " + std::to_string(kMaxObjectMembers) +
-                                                    " members (no object of a matrix has that many)"});
+      if (!levels.empty() && levels.back().object && ++levels.back().members > limits.max_members) {
+        issues.push_back({line_column(text, i), "object with more than " + std::to_string(limits.max_members) +
+                                                    " members (no object of a " + document +
+                                                    " has that many)"});
         return false;
       }
     } else if (c == '-' || (c >= '0' && c <= '9')) {
@@ -230,8 +380,27 @@ std::string parse_error_text(const std::string& what) {
 }  // namespace
 
 std::optional<nlohmann::ordered_json> parse_guarded_json(std::string_view text, const std::string& source_name,
-                                                         std::vector<LoadIssue>& issues) {
-  if (!prescan(text, issues)) return std::nullopt;
+                                                         std::vector<LoadIssue>& issues, const JsonLimits& limits) {
+  const std::size_t first = issues.size();
+  // Every issue found here is placed: the scan's and the parser's by byte
+  // offset, a repeated key by its path.
+  auto place = [&](bool parsed) {
+    for (std::size_t k = first; k < issues.size(); ++k) {
+      LoadIssue& i = issues[k];
+      if (i.file.empty()) i.file = source_name;
+      std::string src, rest;
+      if (i.line == 0 && split_line_column(i.where, src, i.line, i.column, rest)) continue;
+      if (parsed && i.line == 0) {
+        std::vector<LoadIssue> one{i};
+        locate_issues(text, source_name, one);
+        i = one.front();
+      }
+    }
+  };
+  if (!prescan(text, issues, limits)) {
+    place(false);
+    return std::nullopt;
+  }
   InJson root;
   try {
     DomBuilder builder(root, issues);
@@ -239,11 +408,14 @@ std::optional<nlohmann::ordered_json> parse_guarded_json(std::string_view text, 
   } catch (const InJson::parse_error& e) {
     std::size_t index = e.byte == 0 ? 0 : e.byte - 1;
     issues.push_back({line_column(text, index), parse_error_text(e.what())});
+    place(false);
     return std::nullopt;
   } catch (const InJson::exception& e) {
     issues.push_back({source_name, parse_error_text(e.what())});
+    place(false);
     return std::nullopt;
   }
+  place(true);
   return root;
 }
 

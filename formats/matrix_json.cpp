@@ -18,6 +18,7 @@
 #include <functional>
 #include <limits>
 #include <map>
+#include <tuple>
 #include <nlohmann/json.hpp>
 
 #include "model/names.hpp"
@@ -889,10 +890,12 @@ std::string canonical_text(const Matrix& m) {
 Matrix parse_matrix(std::string_view json_text, const std::string& source_name) {
   std::vector<LoadIssue> issues;
   if (json_text.size() > kMaxFileBytes)
-    throw LoadError({{source_name, "input is " + std::to_string(json_text.size()) + " bytes, larger than the limit of " +
-                                       std::to_string(kMaxFileBytes) + " bytes"}});
+    throw LoadError({{source_name,
+                      "input is " + std::to_string(json_text.size()) + " bytes, larger than the limit of " +
+                          std::to_string(kMaxFileBytes) + " bytes",
+                      source_name}});
   if (json_text.find_first_not_of(" \t\r\n") == std::string_view::npos)
-    throw LoadError({{source_name, "file is empty (expected a cemv-matrix/1 JSON object)"}});
+    throw LoadError({{source_name, "file is empty (expected a cemv-matrix/1 JSON object)", source_name}});
   std::optional<InJson> parsed = parse_guarded_json(json_text, source_name, issues);
   if (!parsed) throw LoadError(std::move(issues));
   const InJson& root = *parsed;
@@ -900,7 +903,10 @@ Matrix parse_matrix(std::string_view json_text, const std::string& source_name) 
   Matrix m;
   Reader reader(issues);
   read_matrix(reader, root, m);
-  if (!issues.empty()) throw LoadError(std::move(issues));
+  if (!issues.empty()) {
+    locate_issues(json_text, source_name, issues);
+    throw LoadError(std::move(issues));
+  }
   m.sort_by_id();
   return m;
 }
@@ -909,16 +915,25 @@ Matrix load_matrix(const std::filesystem::path& file) {
   return parse_matrix(read_text_file(file), file.string());
 }
 
-Matrix load_valid_matrix(const std::filesystem::path& file, const std::string& use) {
-  Matrix m = load_matrix(file);
+Matrix parse_valid_matrix(std::string_view json_text, const std::string& source_name, const std::string& use) {
+  Matrix m = parse_matrix(json_text, source_name);
   auto diagnostics = validate(m);
   if (!has_errors(diagnostics)) return m;
-  const std::string where = file.string();
-  std::vector<LoadIssue> issues{{where, "the matrix has validation errors; it cannot be " + use}};
-  for (const auto& d : diagnostics)
-    if (d.severity == Severity::Error)
-      issues.push_back({where, d.rule + " " + d.element + " (" + d.section + "): " + d.message});
+  const std::string& where = source_name;
+  std::vector<LoadIssue> issues{{where, "the matrix has validation errors; it cannot be " + use, where}};
+  JsonPositions positions(json_text);
+  for (const auto& d : diagnostics) {
+    if (d.severity != Severity::Error) continue;
+    LoadIssue issue{where, d.rule + " " + d.element + " (" + d.section + "): " + d.message, where};
+    if (auto at = element_offset(positions, d.element))
+      std::tie(issue.line, issue.column) = line_and_column(json_text, *at);
+    issues.push_back(std::move(issue));
+  }
   throw LoadError(std::move(issues));
+}
+
+Matrix load_valid_matrix(const std::filesystem::path& file, const std::string& use) {
+  return parse_valid_matrix(read_text_file(file), file.string(), use);
 }
 
 std::string to_canonical_json(const Matrix& m) { return canonical_text(m); }

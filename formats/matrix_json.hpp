@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -23,7 +24,17 @@ model::Matrix load_matrix(const std::filesystem::path& file);
 // issues say so (`FILE: the matrix has validation errors; it cannot be USE`)
 // and then list every error (`FILE: RULE ELEMENT (SECTION): MESSAGE`).
 // Warnings do not refuse a matrix.
+// Each refusal line is placed at its element in the file (element_position).
 model::Matrix load_valid_matrix(const std::filesystem::path& file, const std::string& use);
+// The same for a text already read (standard input: source_name "<stdin>").
+model::Matrix parse_valid_matrix(std::string_view json_text, const std::string& source_name,
+                                 const std::string& use);
+
+// Where the element a validation finding names (model::Diagnostic::element:
+// "matrix", "cause[3] NAME", "effect[2]", "intersection cause[1]/effect[2]")
+// starts in the matrix text: the object of the first element with that id, or
+// the top-level object for "matrix"; nullopt when there is no such element.
+std::optional<std::size_t> element_offset(const JsonPositions& positions, std::string_view element);
 
 // The canonical form: every field written (defaults included), keys sorted,
 // elements ordered by id, floats in their shortest round-trip single-precision

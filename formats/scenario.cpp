@@ -7,6 +7,7 @@
 #include <cmath>
 #include <fstream>
 #include <limits>
+#include <set>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -33,8 +34,6 @@ std::string json_type_name(const json& j) {
   if (j.is_object()) return "an object";
   return "null";
 }
-
-struct DepthExceeded {};
 
 // ---- the parser ------------------------------------------------------------
 
@@ -109,7 +108,18 @@ class Parser {
   }
 
   void finish() {
-    if (!issues_.empty()) throw LoadError(issues_);
+    if (issues_.empty()) return;
+    // A scenario whose tags are mostly unknown is most likely the scenario of
+    // another matrix: one line says so before the list of unknown tags.
+    if (tags_seen_.size() >= 3 && 2 * tags_unknown_.size() > tags_seen_.size()) {
+      const std::string n = std::to_string(tags_seen_.size());
+      std::string what = tags_unknown_.size() == tags_seen_.size()
+                             ? "none of the scenario's " + n + " tags is in matrix " + m_.name
+                             : std::to_string(tags_unknown_.size()) + " of the scenario's " + n +
+                                   " tags are not in matrix " + m_.name;
+      issues_.insert(issues_.begin(), LoadIssue{"", what + "; is it the scenario of another matrix?"});
+    }
+    throw LoadError(issues_);
   }
 
  private:
@@ -210,6 +220,7 @@ class Parser {
     for (const auto& [name, v] : j.items()) {
       std::string where = join(path, name);
       auto idx = table_.find(name);
+      tags_seen_.insert(tag_key(name));
       if (!idx) {
         std::string hint = did_you_mean(name, input_names_);
         bool is_output = std::any_of(outputs_.begin(), outputs_.end(), [&](const OutputRef& o) {
@@ -221,6 +232,7 @@ class Parser {
                           "simulate_tag command to force one)");
         else
           error(path, "unknown tag " + in_quotes(name) + hint);
+        if (!is_output) tags_unknown_.insert(tag_key(name));
         continue;
       }
       if (std::any_of(out.begin(), out.end(), [&](const InputSetting& s) { return s.tag == *idx; })) {
@@ -399,6 +411,7 @@ class Parser {
     TagKind kind = TagKind::Bool;
   };
   std::optional<SimulatedTag> simulatable_tag(const std::string& tag, const std::string& where) {
+    tags_seen_.insert(tag_key(tag));
     if (auto idx = table_.find(tag)) return SimulatedTag{table_.tags()[*idx].name, table_.tags()[*idx].kind};
     auto out = std::find_if(outputs_.begin(), outputs_.end(),
                             [&](const OutputRef& o) { return tag_key(o.name) == tag_key(tag); });
@@ -406,6 +419,7 @@ class Parser {
     std::vector<std::string> all = input_names_;
     all.insert(all.end(), output_names_.begin(), output_names_.end());
     error(where, "unknown tag " + in_quotes(tag) + did_you_mean(tag, all));
+    tags_unknown_.insert(tag_key(tag));
     return std::nullopt;
   }
 
@@ -607,8 +621,10 @@ class Parser {
   std::optional<ExpectTarget> output_target(const std::string& key, const std::string& where) {
     auto out = std::find_if(outputs_.begin(), outputs_.end(),
                             [&](const OutputRef& o) { return tag_key(o.name) == tag_key(key); });
+    tags_seen_.insert(tag_key(key));
     if (out == outputs_.end()) {
       std::string hint = did_you_mean(key, output_names_);
+      if (!table_.find(key)) tags_unknown_.insert(tag_key(key));
       if (table_.find(key))
         error(where, in_quotes(key) + " is an input tag; expectations name output tags, "
                                       "cause[..].FIELD or effect[..].FIELD");
@@ -728,6 +744,10 @@ class Parser {
   std::vector<std::string> cause_names_;
   std::vector<std::string> effect_names_;
   std::vector<LoadIssue> issues_;
+  // Tag names the scenario uses (inputs, simulated tags, output expectations)
+  // and those of them the matrix does not know, by tag_key.
+  std::set<std::string> tags_seen_;
+  std::set<std::string> tags_unknown_;
 };
 
 }  // namespace
@@ -743,32 +763,32 @@ std::string expectation_value_text(FieldType type, int value) {
 
 namespace {
 
-// The JSON text of a scenario as a DOM, with the size and depth guards; syntax
-// errors as `FILE: line L, column C`.
+// The limits of the guarded parser for a scenario: an `inputs` object sets up
+// to every input tag of a matrix (3 per cause, 3.4) and an `expect` object may
+// name every status field, so objects are allowed many more members than in a
+// matrix; the nesting a scenario needs is 6 (steps, a step, commands, a
+// command, and an input's {"value", "quality"}).
+constexpr JsonLimits kScenarioLimits{4096, "scenario", 6};
+
+// The JSON text of a scenario as a DOM through the guarded parser of every
+// format (diagnostics.hpp): size and depth guards, NaN, Infinity and numbers
+// that overflow a double, repeated keys, each placed at FILE:LINE:COL.
 json parse_scenario_json(std::string_view json_text, const std::string& source_name) {
-  std::string prefix = source_name.empty() ? "" : source_name + ": ";
   if (json_text.size() > kMaxFileBytes)
-    throw LoadError({{source_name, "file larger than " + std::to_string(kMaxFileBytes) + " bytes"}});
-  json root;
-  try {
-    root = json::parse(
-        json_text.begin(), json_text.end(),
-        [](int depth, json::parse_event_t, json&) {
-          if (depth > kMaxJsonDepth) throw DepthExceeded{};
-          return true;
-        });
-  } catch (const DepthExceeded&) {
-    throw LoadError({{source_name, "JSON nested deeper than " + std::to_string(kMaxJsonDepth) +
-                                       " levels"}});
-  } catch (const json::parse_error& e) {
-    std::string what = e.what();
-    // nlohmann's message: "[json.exception.parse_error.101] parse error at line 1, column 2: ..."
-    auto colon = what.find(": ");
-    std::string detail = colon == std::string::npos ? what : what.substr(colon + 2);
-    throw LoadError({{prefix + line_column(json_text, e.byte == 0 ? 0 : e.byte - 1),
-                      "JSON syntax error: " + detail}});
+    throw LoadError({{source_name, "file larger than " + std::to_string(kMaxFileBytes) + " bytes", source_name}});
+  if (json_text.find_first_not_of(" \t\r\n") == std::string_view::npos)
+    throw LoadError({{source_name, "file is empty (expected a cemv-scenario/1 JSON object)", source_name}});
+  std::vector<LoadIssue> issues;
+  auto parsed = parse_guarded_json(json_text, source_name, issues, kScenarioLimits);
+  if (!parsed || !issues.empty()) {
+    // The scenario's syntax errors say so (docs/scenario.md).
+    for (auto& i : issues)
+      if (i.what.rfind("syntax error", 0) == 0) i.what = "JSON " + i.what;
+    throw LoadError(std::move(issues));
   }
-  return root;
+  // The parser below reads keys in sorted order (its messages and the order of
+  // a step's expectations have always been so).
+  return json(*parsed);
 }
 
 }  // namespace
@@ -779,9 +799,8 @@ Scenario parse_scenario(std::string_view json_text, const Matrix& m, const std::
   try {
     return p.parse(root);
   } catch (const LoadError& e) {
-    if (source_name.empty()) throw;
     std::vector<LoadIssue> issues = e.issues();
-    for (auto& i : issues) i.where = i.where.empty() ? source_name : source_name + ": " + i.where;
+    locate_issues(json_text, source_name, issues);
     throw LoadError(std::move(issues));
   }
 }
@@ -790,16 +809,24 @@ Scenario load_scenario(const std::filesystem::path& file, const Matrix& m) {
   return parse_scenario(read_text_file(file), m, file.string());
 }
 
-std::optional<std::filesystem::path> scenario_matrix_path(const std::filesystem::path& scenario_file) {
-  const std::string name = scenario_file.string();
-  json root = parse_scenario_json(read_text_file(scenario_file), name);
+std::optional<std::string> scenario_matrix_key(std::string_view json_text, const std::string& source_name) {
+  json root = parse_scenario_json(json_text, source_name);
   if (!root.is_object() || !root.contains("matrix")) return std::nullopt;
   const json& j = root["matrix"];
-  if (!j.is_string() || j.get<std::string>().empty())
-    throw LoadError({{name + ": matrix",
-                      "must be a non-empty string, the path of the cemv-matrix/1 file relative to the "
-                      "scenario file"}});
-  return scenario_file.parent_path() / j.get<std::string>();
+  if (!j.is_string() || j.get<std::string>().empty()) {
+    std::vector<LoadIssue> issues{{"matrix",
+                                   "must be a non-empty string, the path of the cemv-matrix/1 file relative "
+                                   "to the scenario file"}};
+    locate_issues(json_text, source_name, issues);
+    throw LoadError(std::move(issues));
+  }
+  return j.get<std::string>();
+}
+
+std::optional<std::filesystem::path> scenario_matrix_path(const std::filesystem::path& scenario_file) {
+  auto key = scenario_matrix_key(read_text_file(scenario_file), scenario_file.string());
+  if (!key) return std::nullopt;
+  return scenario_file.parent_path() / *key;
 }
 
 ExpandedScenario expand_scenario(const Scenario& sc, const Matrix& m) {

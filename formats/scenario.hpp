@@ -89,6 +89,9 @@ Scenario load_scenario(const std::filesystem::path& file, const model::Matrix& m
 // Throws LoadError when the file is unreadable or not JSON, or the key is not
 // a non-empty string.
 std::optional<std::filesystem::path> scenario_matrix_path(const std::filesystem::path& scenario_file);
+// The same from the text of a scenario (the `matrix` key as written, not
+// resolved), for a scenario read from standard input.
+std::optional<std::string> scenario_matrix_key(std::string_view json_text, const std::string& source_name);
 
 // A scenario unrolled into scan cycles.
 struct ExpandedScenario {

@@ -1,6 +1,5 @@
 #include "formats/trace.hpp"
 
-#include <fstream>
 
 #include "model/text.hpp"
 
@@ -53,36 +52,12 @@ json command_json(const model::Command& c) {
 }  // namespace
 
 TraceWriter::TraceWriter(const model::Matrix& m, const model::InputTable& inputs,
-                         const std::vector<model::Observable>& observables, std::vector<std::string> outputs)
-    : m_(m), inputs_(inputs), observables_(observables), outputs_(std::move(outputs)) {}
-
-void TraceWriter::add_cycle(std::size_t cycle, std::size_t step, const model::CycleInput& in,
-                            int commands_refused, const std::vector<int>& snapshot,
-                            const std::vector<std::optional<bool>>& outputs) {
-  json cy;
-  cy["cycle"] = static_cast<std::uint64_t>(cycle + 1);
-  cy["t_ms"] = static_cast<std::uint64_t>(cycle) * m_.cycle_ms;
-  cy["step"] = step;
-  json iv = json::array(), bad = json::array(), ov = json::array(), outv = json::array();
-  for (std::size_t i = 0; i < inputs_.size(); ++i) {
-    iv.push_back(input_json(inputs_.tags()[i], in.tags[i]));
-    if (in.tags[i].bad_quality) bad.push_back(inputs_.tags()[i].name);
-  }
-  for (std::size_t i = 0; i < observables_.size(); ++i) ov.push_back(observable_json(observables_[i], snapshot[i]));
-  for (const auto& v : outputs) outv.push_back(v ? json(*v) : json(nullptr));
-  json cmds = json::array();
-  for (const auto& cmd : in.commands) cmds.push_back(command_json(cmd));
-  cy["inputs"] = iv;
-  cy["bad_quality"] = bad;
-  cy["commands"] = cmds;
-  cy["commands_refused"] = commands_refused;
-  cy["observables"] = ov;
-  cy["outputs"] = outv;
-  cycles_.push_back(std::move(cy));
-}
-
-bool TraceWriter::write(const std::filesystem::path& file, const std::string& signature) const {
+                         const std::vector<model::Observable>& observables, std::vector<std::string> outputs,
+                         const std::string& signature, Sink sink, Options options)
+    : m_(m), inputs_(inputs), observables_(observables), outputs_(std::move(outputs)), sink_(std::move(sink)),
+      options_(options) {
   json trace;
+  if (options_.changes_only) trace["changes_only"] = true;
   trace["format"] = kTraceFormat;
   trace["matrix"] = m_.name;
   trace["signature"] = signature;
@@ -95,14 +70,59 @@ bool TraceWriter::write(const std::filesystem::path& file, const std::string& si
   trace["outputs"] = outputs_;
   // One line per cycle keeps long traces readable and diffable; the header
   // fields come first in key order.
-  std::ofstream f(file, std::ios::binary);
-  f << "{\n";
-  for (const auto& [k, v] : trace.items()) f << " " << json(k).dump() << ": " << v.dump() << ",\n";
-  f << " \"cycles\": [\n";
-  for (std::size_t i = 0; i < cycles_.size(); ++i)
-    f << "  " << cycles_[i].dump() << (i + 1 < cycles_.size() ? ",\n" : "\n");
-  f << " ]\n}\n";
-  return static_cast<bool>(f);
+  std::string header = "{\n";
+  for (const auto& [k, v] : trace.items()) header += " " + json(k).dump() + ": " + v.dump() + ",\n";
+  header += " \"cycles\": [\n";
+  sink_(header);
+}
+
+void TraceWriter::emit(const json& cycle) {
+  sink_((written_ > 0 ? ",\n  " : "  ") + cycle.dump());
+  ++written_;
+}
+
+void TraceWriter::add_cycle(std::size_t cycle, std::size_t step, const model::CycleInput& in,
+                            int commands_refused, const std::vector<int>& snapshot,
+                            const std::vector<std::optional<bool>>& outputs) {
+  json row;
+  json iv = json::array(), bad = json::array(), ov = json::array(), outv = json::array();
+  for (std::size_t i = 0; i < inputs_.size(); ++i) {
+    iv.push_back(input_json(inputs_.tags()[i], in.tags[i]));
+    if (in.tags[i].bad_quality) bad.push_back(inputs_.tags()[i].name);
+  }
+  for (std::size_t i = 0; i < observables_.size(); ++i) ov.push_back(observable_json(observables_[i], snapshot[i]));
+  for (const auto& v : outputs) outv.push_back(v ? json(*v) : json(nullptr));
+  json cmds = json::array();
+  for (const auto& cmd : in.commands) cmds.push_back(command_json(cmd));
+  row["inputs"] = iv;
+  row["bad_quality"] = bad;
+  row["commands"] = cmds;
+  row["commands_refused"] = commands_refused;
+  row["observables"] = ov;
+  row["outputs"] = outv;
+  json cy = row;
+  cy["cycle"] = static_cast<std::uint64_t>(cycle + 1);
+  cy["t_ms"] = static_cast<std::uint64_t>(cycle) * m_.cycle_ms;
+  cy["step"] = step;
+  if (!options_.changes_only) {
+    emit(cy);
+    return;
+  }
+  if (written_ == 0 || row != previous_row_ || !cmds.empty()) {
+    emit(cy);
+    held_.reset();
+  } else {
+    held_ = std::move(cy);
+  }
+  previous_row_ = std::move(row);
+}
+
+void TraceWriter::finish() {
+  if (finished_) return;
+  finished_ = true;
+  if (held_) emit(*held_);
+  held_.reset();
+  sink_(written_ > 0 ? "\n ]\n}\n" : " ]\n}\n");
 }
 
 }  // namespace cemv::formats

@@ -5,6 +5,7 @@
 // JSON form carries the same sections as data plus the canonical matrix itself.
 #include "reports/config_report.hpp"
 
+#include <algorithm>
 #include <map>
 #include <set>
 #include <vector>
@@ -524,9 +525,19 @@ Document build(const Matrix& m, const std::string& sig, const std::vector<Diagno
   d.p("Configuration report of manual section 11.4, written by cemv from the canonical form of "
       "the matrix. It carries no time stamp: the same matrix always gives the same report.");
 
+  // An invalid matrix (11.5 errors) gets a banner and its validation section
+  // first: the report is how an engineer sees what must be fixed.
+  const std::size_t errors = static_cast<std::size_t>(std::count_if(
+      diags.begin(), diags.end(), [](const Diagnostic& x) { return x.severity == Severity::Error; }));
+  if (errors > 0) {
+    d.h(2, "INVALID MATRIX: " + std::to_string(errors) + " validation error(s)", "invalid");
+    d.p("This matrix has validation errors (manual section 11.5), listed in the validation summary "
+        "that follows. cemv refuses to simulate, encode or check it until they are fixed.");
+    add_validation_summary(d, diags);
+  }
   add_properties(d, m);
   add_size_and_usage(d, m, s);
-  add_validation_summary(d, diags);
+  if (errors == 0) add_validation_summary(d, diags);
   add_sif_groups(d, m, s);
   add_first_out_groups(d, m, s);
   add_causes(d, m);
@@ -686,6 +697,9 @@ std::string render_json(const Matrix& m, const std::string& sig, const std::vect
   j["format"] = "cemv-report/1";
   j["report"] = "configuration";
   j["signature"] = sig;
+  if (has_errors(diags))
+    j["banner"] = "INVALID MATRIX: it has validation errors (manual section 11.5), listed under "
+                  "\"validation\"; cemv refuses to simulate, encode or check it until they are fixed";
   j["properties"] = {
       {"name", m.name},
       {"title", m.title},

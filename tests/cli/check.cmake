@@ -24,7 +24,7 @@ cemv_cli_test(NAME cli_check_checker_failure_exit_4
   EXIT 4 MATCH "internal error: the checker failed: solver exception: out of memory"
   COMMAND ${_d} check ${_tank} ${_c}/crash.props)
 cemv_cli_test(NAME cli_check_invalid_matrix_exit_2
-  EXIT 2 MATCH "errors.json: the matrix has validation errors; it cannot be checked"
+  EXIT 2 MATCH "errors.json: error: the matrix has validation errors; it cannot be checked"
   COMMAND ${_d} check tests/model/validate_cases/errors.json --standard)
 cemv_cli_test(NAME cli_check_property_error_exit_2 EXIT 2 MATCH "bad_kind.props:2:1: .*found 'alwayz'"
   COMMAND ${_d} check ${_tank} ${_c}/bad_kind.props)
@@ -63,7 +63,7 @@ cemv_cli_test(NAME cli_check_props_from_stdin EXIT 0 MATCH "\"file\": \"<stdin>\
 cemv_cli_test(NAME cli_check_matrix_from_stdin EXIT 0 MATCH "\"file\": \"<stdin>\""
   COMMAND bash -c "${_d} check - ${_c}/proved.props --format json < ${_tank}")
 cemv_cli_test(NAME cli_check_invalid_matrix_from_stdin_exit_2
-  EXIT 2 MATCH "<stdin>: E-INTERSECTION-X intersection cause\\[1\\]/effect\\[1\\]"
+  EXIT 2 MATCH "<stdin>:14:5: error: E-INTERSECTION-X intersection cause\\[1\\]/effect\\[1\\]"
   COMMAND bash -c "${_d} check - --standard < tests/model/validate_cases/errors.json")
 cemv_cli_test(NAME cli_check_quiet_prints_nothing EXIT 0 MATCH "^$"
   COMMAND bash -c "${_d} check ${_tank} ${_c}/proved.props -q -o ${_tmp}/quiet.xml --format junit 2>&1 | wc -c | grep -qx 0 && echo")

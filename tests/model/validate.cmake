@@ -33,7 +33,7 @@ cemv_cli_test(NAME cli_validate_json_header EXIT 0
   MATCH "\"format\": \"cemv-validation/1\""
   COMMAND $<TARGET_FILE:cemv> validate --format json ${VC}/cycle.json)
 cemv_cli_test(NAME cli_validate_malformed_exit_2 EXIT 2
-  MATCH "line 2, column 1"
+  MATCH "malformed.json:2:1: error: "
   COMMAND $<TARGET_FILE:cemv> validate ${VC}/malformed.json)
 cemv_cli_test(NAME cli_validate_unknown_key_exit_2 EXIT 2
   MATCH "causes\\[0\\]\\.bypas_tag"

@@ -202,7 +202,7 @@ TEST(ScenarioParse, RejectsBadFramesAndSyntax) {
   EXPECT_NE(first_issue("{\"format\":\"cemv-scenario/1\",\n \"steps\": [}").find("line 2"),
             std::string::npos);
   std::string deep(200, '[');
-  EXPECT_NE(first_issue(deep).find("nested deeper"), std::string::npos);
+  EXPECT_NE(first_issue(deep).find("nesting deeper than 64 levels"), std::string::npos);
   EXPECT_EQ(first_issue("[1]"), "a scenario is a JSON object, not an array");
 }
 

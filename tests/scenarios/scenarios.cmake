@@ -40,7 +40,7 @@ cemv_cli_test(NAME scenario_reject_unknown_step_key EXIT 2
   MATCH "steps\\[0\\]\\.expekt: unknown key \\(did you mean 'expect'\\?\\)"
   COMMAND $<TARGET_FILE:cemv> simulate ${cemv_rej_matrix} ${CEMV_SCEN}/rejects/unknown_step_key.json)
 cemv_cli_test(NAME scenario_reject_syntax_error EXIT 2
-  MATCH "syntax_error.json: line 2, column [0-9]+: JSON syntax error"
+  MATCH "syntax_error.json:2:[0-9]+: error: JSON syntax error"
   COMMAND $<TARGET_FILE:cemv> simulate ${cemv_rej_matrix} ${CEMV_SCEN}/rejects/syntax_error.json)
 cemv_cli_test(NAME scenario_reject_missing_file EXIT 2 MATCH "no_such_scenario.json"
   COMMAND $<TARGET_FILE:cemv> simulate ${cemv_rej_matrix} ${CEMV_SCEN}/rejects/no_such_scenario.json)
@@ -69,14 +69,14 @@ cemv_cli_test(NAME scenario_matrix_key_one_argument EXIT 0
   COMMAND $<TARGET_FILE:cemv> simulate ${CEMV_SCEN}/13_1_1_on_delay_bullets1_2_4_delayed_activation.json)
 # ... and refuses it like a matrix given on the command line,
 cemv_cli_test(NAME scenario_matrix_key_refused_matrix EXIT 2
-  MATCH "matrix_with_x.json: E-INTERSECTION-X intersection cause\\[1\\]/effect\\[1\\]"
+  MATCH "matrix_with_x.json:4:20: error: E-INTERSECTION-X intersection cause\\[1\\]/effect\\[1\\]"
   COMMAND $<TARGET_FILE:cemv> simulate ${CEMV_SCEN}/rejects/trivial.json)
 # without the key it says what to do, and a key that is not a path is bad input.
 cemv_cli_test(NAME scenario_matrix_key_missing EXIT 2
-  MATCH "error: .*no_key.json: the scenario names no matrix: give MATRIX SCENARIO"
+  MATCH "no_key.json: error: the scenario names no matrix: give MATRIX SCENARIO"
   COMMAND bash -c "f=${PROJECT_BINARY_DIR}/no_key.json && echo '{\"format\": \"cemv-scenario/1\", \"steps\": [{}]}' > $f && $0 simulate $f"
           $<TARGET_FILE:cemv>)
 cemv_cli_test(NAME scenario_matrix_key_not_a_string EXIT 2
-  MATCH "error: .*bad_key.json: matrix: must be a non-empty string"
+  MATCH "bad_key.json:1:31: error: matrix: must be a non-empty string"
   COMMAND bash -c "f=${PROJECT_BINARY_DIR}/bad_key.json && echo '{\"format\": \"cemv-scenario/1\", \"matrix\": 3, \"steps\": [{}]}' > $f && $0 simulate $f"
           $<TARGET_FILE:cemv>)
