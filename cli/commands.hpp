@@ -20,5 +20,7 @@ void add_csv_commands(CLI::App& app, Context& ctx);       // export-csv, import-
 void add_simulate_commands(CLI::App& app, Context& ctx);  // simulate
 void add_smt_commands(CLI::App& app, Context& ctx);       // export-smt
 void add_check_commands(CLI::App& app, Context& ctx);     // check
+void add_mutate_commands(CLI::App& app, Context& ctx);    // mutate
+void add_diff_commands(CLI::App& app, Context& ctx);      // diff
 
 }  // namespace cemv::cli
