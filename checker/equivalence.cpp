@@ -8,7 +8,9 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "checker/check/recheck.hpp"
 #include "checker/engines/portfolio.hpp"
+#include "checker/engines/relational.hpp"
 #include "checker/replay.hpp"
 #include "checker/shrink.hpp"
 #include "encoder/product.hpp"
@@ -170,7 +172,13 @@ class Decider {
  private:
   void decide(GroupEquivalence& out) {
     if (!interface(out)) return;
-    const std::vector<Node> ra = roots_in(a_, b_, g_.roots), rb = roots_in(b_, a_, g_.roots);
+    std::vector<Node> group_roots = g_.roots;
+    if (group_roots.empty() && o_.identical_cone_shortcut && !narrow_to_changed_nodes(group_roots)) {
+      out.verdict = EquivalenceVerdict::Equivalent;
+      out.method = "identical cone";
+      return;
+    }
+    const std::vector<Node> ra = roots_in(a_, b_, group_roots), rb = roots_in(b_, a_, group_roots);
     if (o_.identical_cone_shortcut && !ra.empty() && ra == rb &&
         cone_configuration(a_, ra) == cone_configuration(b_, rb)) {
       out.verdict = EquivalenceVerdict::Equivalent;
@@ -183,7 +191,23 @@ class Decider {
     try {
       Limits limits;
       limits.deadline = deadline_;
-      r = Portfolio(product_factory(a_, b_, ra, rb, keys)).run(limits);
+      const ProblemFactory make = product_factory(a_, b_, ra, rb, keys);
+      // The relational engine first: where the two copies are built alike,
+      // a.x = b.x is inductive and proves the group in a few solver calls.
+      // Its proof is re-checked with the real float semantics in a fresh
+      // context (an InternalError if it fails), like every portfolio answer.
+      {
+        z3::context ctx;
+        OwnedProblem op = make(ctx);
+        r = make_relational_prover()->prove(op.problem, limits);
+      }
+      if (r.verdict == Verdict::Proved) {
+        check::recheck(make, r);
+        out.verdict = EquivalenceVerdict::Equivalent;
+        out.method = r.method;
+        return;
+      }
+      r = Portfolio(make).run(limits);
     } catch (const std::invalid_argument& e) {
       out.verdict = EquivalenceVerdict::Differs;
       out.method = "interface";
@@ -217,6 +241,53 @@ class Decider {
                             "\n" + why);
     }
     throw InternalError("equivalence of " + g_.name + ": the runtimes do not reproduce the distinguishing run\n" + why);
+  }
+
+  // A whole-matrix group: the nodes whose cone differs between the two
+  // matrices (the observables of every other node are equal by the
+  // identical-cone argument) become the roots, and only their observables
+  // the keys. A cause's cone here takes in its first-out group, whose
+  // members decide its first_out (docs/encoding.md, "Cone of influence").
+  // False when no node's cone differs.
+  bool narrow_to_changed_nodes(std::vector<Node>& roots) {
+    std::set<Node> nodes;
+    for (const auto* m : {&a_, &b_}) {
+      for (const auto& c : m->causes)
+        if (c.function != model::CauseFunction::Comment) nodes.insert({Node::Kind::Cause, c.id});
+      for (const auto& e : m->effects)
+        if (e.function != model::EffectFunction::Comment) nodes.insert({Node::Kind::Effect, e.id});
+    }
+    auto peers = [&](const Node& n) {
+      std::set<Node> r{n};
+      if (n.kind != Node::Kind::Cause) return r;
+      for (const auto* m : {&a_, &b_}) {
+        const model::Cause* c = m->find_cause(n.id);
+        if (!c || c->first_out_group == 0) continue;
+        for (const auto& o : m->causes)
+          if (o.first_out_group == c->first_out_group && o.function != model::CauseFunction::Comment)
+            r.insert({Node::Kind::Cause, o.id});
+      }
+      return r;
+    };
+    std::set<Node> changed, extended;
+    for (const auto& n : nodes) {
+      std::set<Node> p = peers(n);
+      std::vector<Node> pv(p.begin(), p.end());
+      const std::vector<Node> ra = roots_in(a_, b_, pv), rb = roots_in(b_, a_, pv);
+      if (ra == rb && cone_configuration(a_, ra) == cone_configuration(b_, rb)) continue;
+      changed.insert(n);
+      extended.insert(p.begin(), p.end());
+    }
+    if (changed.empty()) return false;
+    roots.assign(extended.begin(), extended.end());
+    std::vector<KeyInfo> kept;
+    const auto oa = model::observables(a_);
+    for (const auto& k : keys_) {
+      const auto& o = oa[k.index_a];
+      if (changed.count(Node{o.kind, o.id})) kept.push_back(k);
+    }
+    keys_ = std::move(kept);
+    return true;
   }
 
   // The group's keys as both matrices know them; false (Differs) when the

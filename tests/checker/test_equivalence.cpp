@@ -52,7 +52,7 @@ TEST(Equivalence, SelfAndTextEditsAreProved) {
   model::Matrix texts = m;
   texts.causes[0].description = "another description";
   texts.effects[0].name = "RENAMED_EFFECT";
-  for (const auto* other : {&m, &texts}) {
+  for (const model::Matrix* other : {&m, static_cast<const model::Matrix*>(&texts)}) {
     auto r = checker::decide_equivalence(m, *other, checker::whole_matrix(m, *other), no_shortcut());
     EXPECT_EQ(r.verdict, EquivalenceVerdict::Equivalent) << r.reason;
     EXPECT_NE(r.method, "identical cone");
