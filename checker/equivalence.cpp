@@ -153,6 +153,53 @@ PreferredValue plant_at_rest(const encoder::Product& p, const model::Matrix& a, 
   };
 }
 
+// The cycle inputs of a product run for one of the two matrices: every tag
+// the matrix reads takes the run's value wherever either copy encodes it
+// (a tag in one cone only must not fall back to a default on the other
+// side: both runtimes see one plant), else the matrix's default; the
+// commands of its own encoding in their processing order, then those of the
+// other encoding whose target this matrix has.
+std::vector<model::CycleInput> product_inputs(const Trace& t, const encoder::Encoding& self,
+                                              const encoder::Encoding& other, const model::Matrix& m) {
+  std::vector<model::CycleInput> out = cycle_inputs(t, self, m);
+  const model::InputTable table(m);
+  std::unordered_map<std::string, std::size_t> column;
+  for (std::size_t i = 0; i < t.input_names.size(); ++i) column.emplace(t.input_names[i], i);
+  auto number = [](const Value& v) { return v.is_float ? v.f : static_cast<float>(v.i); };
+  std::vector<std::string> own;
+  for (const auto& c : self.commands) own.push_back(c.var.decl().name().str());
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    for (std::size_t i = 0; i < table.size(); ++i) {
+      auto v = column.find("input." + table.tags()[i].name);
+      if (v != column.end()) out[k].tags[i].value = number(t.cycles[k].inputs[v->second]);
+      auto b = column.find("input." + table.tags()[i].name + ".bad");
+      if (b != column.end()) out[k].tags[i].bad_quality = t.cycles[k].inputs[b->second].i != 0;
+    }
+    for (const auto& ci : other.commands) {
+      const std::string name = ci.var.decl().name().str();
+      if (std::find(own.begin(), own.end(), name) != own.end()) continue;
+      auto c = column.find(name);
+      if (c == column.end() || t.cycles[k].inputs[c->second].i == 0) continue;
+      if ((ci.cause && !m.find_cause(ci.cause)) || (ci.effect && !m.find_effect(ci.effect))) continue;
+      if (!ci.tag_name.empty() && !table.find(ci.tag_name)) continue;
+      model::Command cmd;
+      cmd.op = ci.op;
+      cmd.cause = ci.cause;
+      cmd.effect = ci.effect;
+      cmd.tag = ci.tag;
+      cmd.group = ci.group;
+      cmd.on = ci.on;
+      cmd.tag_name = ci.tag_name;
+      if (ci.value) {
+        auto v = column.find(ci.value->decl().name().str());
+        if (v != column.end()) cmd.value = number(t.cycles[k].inputs[v->second]);
+      }
+      out[k].commands.push_back(cmd);
+    }
+  }
+  return out;
+}
+
 class Decider {
  public:
   Decider(const model::Matrix& a, const model::Matrix& b, const ObservableGroup& g, const EquivalenceOptions& o)
@@ -325,8 +372,8 @@ class Decider {
     Limits limits;
     limits.deadline = std::min(deadline_, Clock::now() + std::chrono::seconds(10));
     Trace readable = shrink_trace(op.problem, cex, plant_at_rest(p, a_, b_), limits);
-    std::vector<model::CycleInput> in_a = cycle_inputs(readable, *p.a, a_);
-    std::vector<model::CycleInput> in_b = cycle_inputs(readable, *p.b, b_);
+    std::vector<model::CycleInput> in_a = product_inputs(readable, *p.a, *p.b, a_);
+    std::vector<model::CycleInput> in_b = product_inputs(readable, *p.b, *p.a, b_);
     ConcreteTrace ta = run_on_runtime(a_, in_a), tb = run_on_runtime(b_, in_b);
     for (std::size_t c = 0; c < ta.observables.size(); ++c)
       for (const auto& k : keys_) {
