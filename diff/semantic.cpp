@@ -37,7 +37,9 @@ bool touched(const StructuralDiff& d, const model::Matrix& old_m, const model::M
   for (const auto& c : d.changes) {
     using E = ElementChange::Element;
     switch (c.element) {
-      case E::Matrix: return true;
+      case E::Matrix:
+        if (c.critical()) return true;  // cycle time, secure write, group deactivation: every effect
+        break;
       case E::Cause:
         if ((c.old_id && oc.count(c.old_id)) || (c.new_id && nc.count(c.new_id))) return true;
         break;
