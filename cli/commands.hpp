@@ -39,5 +39,7 @@ void add_replay_commands(CLI::App& app, Context& ctx);    // replay
 // `cemv testgen --mutation-report`: after the suite is written to `out_dir`,
 // the mutation adequacy report (docs/testgen.md); returns an exit status.
 int mutation_report(const model::Matrix& m, const testgen::TestSuite& suite, const std::string& out_dir);
+void add_mutate_commands(CLI::App& app, Context& ctx);    // mutate
+void add_diff_commands(CLI::App& app, Context& ctx);      // diff
 
 }  // namespace cemv::cli

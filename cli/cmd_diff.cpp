@@ -1,0 +1,116 @@
+// `cemv diff OLD NEW [--format text|md|html|json]`: the structural and the
+// semantic comparison of two versions of a matrix (docs/change-acceptance.md).
+// Exit 0 no effect's behaviour changed, 1 some effect's behaviour changed,
+// 2 invalid input, 3 some effect undecided within --timeout, 4 internal error
+// (a distinguishing run that does not replay on both runtimes).
+#include <cctype>
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <string>
+
+#include "checker/counterexample.hpp"
+#include "checker/prover.hpp"
+#include "cli/commands.hpp"
+#include "cli/matrix_input.hpp"
+#include "cli/output.hpp"
+#include "diff/print.hpp"
+#include "formats/matrix_json.hpp"
+
+namespace cemv::cli {
+
+namespace {
+
+struct DiffArgs {
+  std::string old_file, new_file;
+  std::string format = "text";
+  std::string output = "-";
+  std::string out_dir;
+  double timeout_s = 60.0;
+};
+
+std::string file_stem(const std::string& group) {
+  std::string s;
+  for (char c : group) s += std::isalnum(static_cast<unsigned char>(c)) ? c : (c == ']' ? '\0' : '_');
+  std::string out;
+  for (char c : s)
+    if (c) out += c;
+  return out;
+}
+
+// A distinguishing run as a scenario of NEW expecting OLD's value: it fails
+// on NEW, and its inputs replayed on OLD give that value (both checked by
+// the equivalence checker before the file is written).
+void write_scenarios(const DiffArgs& a, diff::DiffReport& r) {
+  if (a.out_dir.empty()) return;
+  for (const auto& e : r.behaviour.effects) {
+    if (!e.result.distinction || !e.new_id || r.behaviour.relabelled) continue;
+    const auto& d = *e.result.distinction;
+    std::vector<checker::ScenarioExpectation> expect{{d.key, d.type, d.value_a}};
+    const std::string file = (std::filesystem::path(a.out_dir) / (file_stem(e.result.group) + ".diff.scenario.json")).string();
+    write_output(file, checker::scenario_json(*r.new_m, d.run_b.inputs,
+                                              "Where " + r.new_m->name + " (NEW) differs from OLD: " + d.key +
+                                                  " in cycle " + std::to_string(d.cycle + 1) +
+                                                  "; the expectation is OLD's value, so NEW fails it",
+                                              expect));
+    r.scenarios.emplace_back(e.result.group, file);
+  }
+}
+
+int run_diff(const DiffArgs& a) {
+  if (a.format != "text" && a.format != "md" && a.format != "html" && a.format != "json")
+    throw std::runtime_error("diff: --format '" + a.format + "': expected text, md, html or json");
+  const model::Matrix old_m = load_valid_matrix(a.old_file, "compared");
+  const model::Matrix new_m = load_valid_matrix(a.new_file, "compared");
+  check_writable(a.output);
+  if (!a.out_dir.empty()) check_writable_directory(a.out_dir);
+  diff::DiffReport r;
+  r.old_m = &old_m;
+  r.new_m = &new_m;
+  r.old_file = input_name(a.old_file);
+  r.new_file = input_name(a.new_file);
+  r.old_signature = formats::signature(old_m);
+  r.new_signature = formats::signature(new_m);
+  r.structure = diff::compare_structure(old_m, new_m);
+  diff::SemanticOptions o;
+  if (a.timeout_s > 0) o.timeout = std::chrono::milliseconds(static_cast<long long>(a.timeout_s * 1000));
+  r.behaviour = diff::compare_behaviour(old_m, new_m, r.structure, o);
+  write_scenarios(a, r);
+  std::string text = a.format == "json"   ? diff::to_json(r)
+                     : a.format == "md"   ? diff::to_markdown(r)
+                     : a.format == "html" ? diff::to_html(r)
+                                          : diff::to_text(r);
+  write_output(a.output, text);
+  return r.exit_code();
+}
+
+}  // namespace
+
+void add_diff_commands(CLI::App& app, Context& ctx) {
+  auto* cmd = app.add_subcommand("diff", "Compare two versions of a matrix: structure and behaviour per effect "
+                                         "(docs/change-acceptance.md)");
+  static DiffArgs a;
+  cmd->add_option("OLD", a.old_file, "the accepted version (cemv-matrix/1, '-' = standard input)")->required();
+  cmd->add_option("NEW", a.new_file, "the changed version")->required();
+  cmd->add_option("--format", a.format, "text, md, html or json (cemv-diff/1)")->capture_default_str();
+  cmd->add_option("-o,--output", a.output, "write the report to FILE ('-' = standard output)")->type_name("FILE");
+  cmd->add_option("--out", a.out_dir, "folder for the distinguishing scenarios (created if missing)")
+      ->type_name("DIR");
+  cmd->add_option("--timeout", a.timeout_s, "wall-clock limit per effect, seconds")
+      ->capture_default_str()
+      ->type_name("S");
+  cmd->footer(
+      "Exit status: 0 no effect's behaviour changed (at most non-critical or behaviour-equivalent edits);\n"
+      "1 some effect's behaviour changed; 2 invalid input; 3 some effect undecided within --timeout;\n"
+      "4 internal error (a distinguishing run that does not replay on both runtimes).\n");
+  cmd->callback([&ctx]() {
+    try {
+      ctx.exit_code = run_diff(a);
+    } catch (const checker::InternalError& e) {
+      std::cerr << "internal error: " << e.what() << "\n";
+      ctx.exit_code = 4;
+    }
+  });
+}
+
+}  // namespace cemv::cli

@@ -1,0 +1,174 @@
+#include "diff/semantic.hpp"
+
+#include <algorithm>
+#include <map>
+
+#include "checker/prover.hpp"
+#include "checker/replay.hpp"
+#include "model/graph.hpp"
+
+namespace cemv::diff {
+
+namespace {
+
+using checker::EquivalenceVerdict;
+using model::Node;
+
+std::set<int> cone_causes(const model::Matrix& m, int effect) {
+  std::set<int> out;
+  if (!m.find_effect(effect) || m.find_effect(effect)->function == model::EffectFunction::Comment) return out;
+  for (const auto& n : model::DependencyGraph(m).feeders_of(Node{Node::Kind::Effect, effect}))
+    if (n.kind == Node::Kind::Cause) out.insert(n.id);
+  return out;
+}
+std::set<int> cone_effects(const model::Matrix& m, int effect) {
+  std::set<int> out{effect};
+  if (!m.find_effect(effect) || m.find_effect(effect)->function == model::EffectFunction::Comment) return out;
+  for (const auto& n : model::DependencyGraph(m).feeders_of(Node{Node::Kind::Effect, effect}))
+    if (n.kind == Node::Kind::Effect) out.insert(n.id);
+  return out;
+}
+
+// Whether a structural change touches the effect (OLD id `o`, NEW id `n`) or
+// an element of its cone in either version.
+bool touched(const StructuralDiff& d, const model::Matrix& old_m, const model::Matrix& new_m, int o, int n) {
+  std::set<int> oc = o ? cone_causes(old_m, o) : std::set<int>{}, nc = n ? cone_causes(new_m, n) : std::set<int>{};
+  std::set<int> oe = o ? cone_effects(old_m, o) : std::set<int>{}, ne = n ? cone_effects(new_m, n) : std::set<int>{};
+  for (const auto& c : d.changes) {
+    using E = ElementChange::Element;
+    switch (c.element) {
+      case E::Matrix:
+        if (c.critical()) return true;  // cycle time, secure write, group deactivation: every effect
+        break;
+      case E::Cause:
+        if ((c.old_id && oc.count(c.old_id)) || (c.new_id && nc.count(c.new_id))) return true;
+        break;
+      case E::Effect:
+        if ((c.old_id && oe.count(c.old_id)) || (c.new_id && ne.count(c.new_id))) return true;
+        break;
+      case E::Intersection:
+        if ((c.old_effect && oe.count(c.old_effect)) || (c.new_effect && ne.count(c.new_effect))) return true;
+        break;
+    }
+  }
+  return false;
+}
+
+// The relabelled run as NEW's own inputs: tags by name, commands' ids back.
+std::vector<model::CycleInput> to_new(const std::vector<model::CycleInput>& in, const model::Matrix& rel,
+                                      const model::Matrix& new_m, const Relabelling& r) {
+  std::map<int, int> cause_back, effect_back;
+  for (const auto& [n, x] : r.cause_ids) cause_back[x] = n;
+  for (const auto& [n, x] : r.effect_ids) effect_back[x] = n;
+  const model::InputTable tr(rel), tn(new_m);
+  const model::CycleInput defaults = model::default_cycle_input(new_m);
+  std::vector<model::CycleInput> out;
+  for (const auto& c : in) {
+    model::CycleInput x;
+    x.tags = defaults.tags;
+    for (std::size_t i = 0; i < tr.size(); ++i)
+      if (auto j = tn.find(tr.tags()[i].name)) x.tags[*j] = c.tags[i];
+    for (auto cmd : c.commands) {
+      if (cmd.cause) cmd.cause = cause_back.at(cmd.cause);
+      if (cmd.effect) cmd.effect = effect_back.at(cmd.effect);
+      x.commands.push_back(cmd);
+    }
+    out.push_back(std::move(x));
+  }
+  return out;
+}
+
+// A relabelled distinguishing run must be a run of NEW itself: NEW, given the
+// same inputs under its own numbers, shows what the relabelled matrix showed.
+void confirm_on_new(const checker::Distinction& d, const model::Matrix& rel, const model::Matrix& new_m,
+                    const Relabelling& r, const std::string& group) {
+  std::map<int, int> effect_back;
+  for (const auto& [n, x] : r.effect_ids) effect_back[x] = n;
+  const auto inputs = to_new(d.run_b.inputs, rel, new_m, r);
+  const checker::ConcreteTrace t = checker::run_on_runtime(new_m, inputs);
+  const auto rel_obs = model::observables(rel), new_obs = model::observables(new_m);
+  std::map<std::string, std::size_t> new_index;
+  for (std::size_t i = 0; i < new_obs.size(); ++i) new_index[new_obs[i].key] = i;
+  for (std::size_t i = 0; i < rel_obs.size(); ++i) {
+    const auto& o = rel_obs[i];
+    if (o.kind != Node::Kind::Effect) continue;
+    std::string key = model::observable_key(Node{Node::Kind::Effect, effect_back.at(o.id)}, o.field, o.tag);
+    auto it = new_index.find(key);
+    if (it == new_index.end()) continue;
+    for (std::size_t k = 0; k < t.observables.size(); ++k)
+      if (t.observables[k][it->second] != d.run_b.observables[k][i])
+        throw checker::InternalError("diff of " + group + ": NEW renumbered into OLD's numbers behaves differently "
+                                     "from NEW on the distinguishing run (" + key + ", cycle " +
+                                     std::to_string(k + 1) + ")");
+  }
+}
+
+}  // namespace
+
+bool SemanticDiff::any_changed() const {
+  return std::any_of(effects.begin(), effects.end(),
+                     [](const EffectBehaviour& e) { return e.result.verdict == EquivalenceVerdict::Differs; });
+}
+bool SemanticDiff::any_unknown() const {
+  return std::any_of(effects.begin(), effects.end(),
+                     [](const EffectBehaviour& e) { return e.result.verdict == EquivalenceVerdict::Unknown; });
+}
+
+SemanticDiff compare_behaviour(const model::Matrix& old_m, const model::Matrix& new_m, const StructuralDiff& d,
+                               const SemanticOptions& options) {
+  SemanticDiff out;
+  const Relabelling r = relabel(new_m, d, old_m);
+  const model::Matrix& rel = r.matrix;
+  for (const auto& [n, x] : r.cause_ids) out.relabelled |= n != x;
+  for (const auto& [n, x] : r.effect_ids) out.relabelled |= n != x;
+  std::map<int, int> rel_to_new;
+  for (const auto& [n, x] : r.effect_ids) rel_to_new[x] = n;
+
+  checker::EquivalenceOptions eo;
+  eo.deadline = options.deadline;
+  eo.timeout = options.timeout;
+  // One group per effect of OLD or NEW, in OLD's numbering.
+  for (const auto& g : checker::effect_groups(old_m, rel)) {
+    const int id = g.roots.front().id;
+    EffectBehaviour e;
+    e.old_id = old_m.find_effect(id) ? id : 0;
+    e.new_id = rel_to_new.count(id) ? rel_to_new.at(id) : 0;
+    e.name = e.new_id ? new_m.find_effect(e.new_id)->name : old_m.find_effect(id)->name;
+    e.structurally_changed = touched(d, old_m, new_m, e.old_id, e.new_id);
+    e.result = checker::decide_equivalence(old_m, rel, g, eo);
+    if (e.result.distinction && out.relabelled) confirm_on_new(*e.result.distinction, rel, new_m, r, g.name);
+    if (e.result.verdict == EquivalenceVerdict::Differs && e.old_id && e.new_id)
+      for (const auto& og : checker::output_groups(old_m, rel))
+        if (og.roots.front().id == id) {
+          e.outputs.push_back(checker::decide_equivalence(old_m, rel, og, eo));
+          if (e.outputs.back().distinction && out.relabelled)
+            confirm_on_new(*e.outputs.back().distinction, rel, new_m, r, og.name);
+        }
+    out.effects.push_back(std::move(e));
+  }
+
+  // The impact set: changed effects, their cones' causes, tags and SIF groups.
+  for (const auto& e : out.effects) {
+    if (!e.behaviour_changed()) continue;
+    out.impact.effects.push_back(e.new_id ? e.new_id : e.old_id);
+    auto add_effect = [&](const model::Matrix& m, int id, bool is_new) {
+      const model::Effect* ef = m.find_effect(id);
+      if (!ef) return;
+      for (const auto& t : ef->tags) out.impact.tags.insert(t.name);
+      for (int s : ef->sif) out.impact.sif_groups.insert(s);
+      for (int c : cone_causes(m, id)) {
+        const model::Cause* cz = m.find_cause(c);
+        if (is_new) out.impact.causes.insert(c);
+        else if (d.cause_map.count(c)) out.impact.causes.insert(d.cause_map.at(c));
+        for (const auto& t : cz->tags)
+          if (!model::parse_internal_ref(t.name)) out.impact.tags.insert(t.name);
+        for (int s : cz->sif) out.impact.sif_groups.insert(s);
+      }
+    };
+    if (e.old_id) add_effect(old_m, e.old_id, false);
+    if (e.new_id) add_effect(new_m, e.new_id, true);
+  }
+  return out;
+}
+
+}  // namespace cemv::diff

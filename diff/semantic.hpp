@@ -1,0 +1,62 @@
+// The semantic comparison of two versions of a matrix
+// (docs/change-acceptance.md): for every effect, and for every output tag of an
+// effect whose behaviour changed, whether OLD and NEW are observably
+// equivalent over all inputs and operator actions (checker/equivalence.hpp, on
+// the product of OLD and NEW relabelled into OLD's numbering), or differ, with
+// the shortest run that shows it, replayed on both runtimes. Then the impact
+// set: the effects whose behaviour changed and the causes, tags and SIF groups
+// involved.
+#pragma once
+
+#include <chrono>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "checker/equivalence.hpp"
+#include "diff/structural.hpp"
+#include "model/matrix.hpp"
+
+namespace cemv::diff {
+
+struct EffectBehaviour {
+  int old_id = 0;   // 0: added in NEW
+  int new_id = 0;   // 0: removed in NEW
+  std::string name;
+  // Whether the structural comparison lists a change of this effect, of an
+  // intersection into it, or of an element of its cone (OLD or NEW).
+  bool structurally_changed = false;
+  // The effect as a whole; for an added or removed effect, verdict Differs by
+  // interface. Keys and ids in `result` are OLD's numbering.
+  checker::GroupEquivalence result;
+  std::vector<checker::GroupEquivalence> outputs;  // per output tag, when the effect differs
+  bool behaviour_changed() const { return result.verdict != checker::EquivalenceVerdict::Equivalent; }
+};
+
+struct Impact {
+  std::vector<int> effects;            // NEW ids (OLD ids for removed effects)
+  std::set<int> causes;                // NEW ids of the causes in their cones
+  std::set<std::string> tags;          // input and output tags involved
+  std::set<int> sif_groups;
+};
+
+struct SemanticDiff {
+  std::vector<EffectBehaviour> effects;  // OLD effects by id, then added ones
+  Impact impact;
+  bool relabelled = false;  // NEW was renumbered (a move): runs replayed on NEW itself too
+  bool any_changed() const;
+  bool any_unknown() const;
+};
+
+struct SemanticOptions {
+  std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
+  std::chrono::milliseconds timeout{60000};  // per effect
+};
+
+// Throws checker::InternalError when a distinguishing run does not replay on
+// both runtimes (or on NEW itself after a relabelling).
+SemanticDiff compare_behaviour(const model::Matrix& old_m, const model::Matrix& new_m, const StructuralDiff& d,
+                               const SemanticOptions& options = {});
+
+}  // namespace cemv::diff

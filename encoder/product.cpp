@@ -1,0 +1,99 @@
+#include "encoder/product.hpp"
+
+#include <stdexcept>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace cemv::encoder {
+
+namespace {
+
+// Copies one encoding into the product under `prefix`: state variables
+// renamed, everything else rewritten over the renamed variables.
+class Copier {
+ public:
+  Copier(TransitionSystem& out, const TransitionSystem& in, const std::string& prefix)
+      : out_(out), in_(in), prefix_(prefix), from_(in.ctx()), to_(in.ctx()) {}
+
+  void run() {
+    for (const auto& s : in_.statevars()) {
+      z3::expr v = out_.make_statevar(prefix_ + s.name, s.var.get_sort());
+      from_.push_back(s.var);
+      to_.push_back(v);
+    }
+    for (const auto& i : in_.inputvars()) {
+      if (out_.is_inputvar(i.var)) continue;
+      // One name, two sorts: a tag analog in one matrix and discrete in the
+      // other. The copies cannot share it, and sharing by name is the
+      // product's premise.
+      if (out_.inputvar(i.name))
+        throw std::invalid_argument("input " + i.name + " has a different type in the two matrices");
+      out_.make_inputvar(i.name, i.var.get_sort());
+    }
+    const auto& states = in_.statevars();
+    for (std::size_t k = 0; k < states.size(); ++k) {
+      if (states[k].has_init) out_.set_init(to_[static_cast<int>(k)], copy(states[k].init));
+      if (states[k].has_next) out_.assign_next(to_[static_cast<int>(k)], copy(states[k].next));
+    }
+    for (const auto& c : in_.constraints()) out_.add_constraint(prefix_ + c.name, copy(c.term));
+    for (const auto& t : in_.named_terms()) out_.name_term(prefix_ + t.name, copy(t.term));
+    for (const auto& l : in_.lemmas()) out_.add_lemma(prefix_ + l.name, copy(l.term));
+  }
+
+ private:
+  z3::expr copy(const z3::expr& e) {
+    register_floats(e);
+    z3::expr copy = e;
+    return copy.substitute(from_, to_);
+  }
+  // The Evaluator (and every engine that samples runs) reads float constants
+  // through TransitionSystem::float_value: the product must know them too.
+  void register_floats(const z3::expr& e) {
+    if (!seen_.insert(e.id()).second) return;
+    if (e.is_app()) {
+      if (auto f = in_.float_value(e.id())) {
+        out_.float_const(*f);
+        return;
+      }
+      for (unsigned i = 0; i < e.num_args(); ++i) register_floats(e.arg(i));
+    }
+  }
+
+  TransitionSystem& out_;
+  const TransitionSystem& in_;
+  std::string prefix_;
+  z3::expr_vector from_, to_;
+  std::unordered_set<unsigned> seen_;
+};
+
+}  // namespace
+
+std::unique_ptr<Product> product(z3::context& ctx, const model::Matrix& a, const model::Matrix& b,
+                                 const std::vector<model::Node>& roots_a,
+                                 const std::vector<model::Node>& roots_b) {
+  auto p = std::make_unique<Product>(ctx);
+  p->a = encode(ctx, a, roots_a);
+  p->b = encode(ctx, b, roots_b);
+  Copier(p->ts, p->a->ts, "a.").run();
+  Copier(p->ts, p->b->ts, "b.").run();
+  // Relational lemmas between the two copies (header comment).
+  // (Copies keep the state order: copy a's variable k is product variable k,
+  // copy b's variable k is product variable |a| + k.)
+  const auto& all = p->ts.statevars();
+  const std::size_t na = p->a->ts.statevars().size();
+  std::unordered_map<std::string, std::size_t> in_b;
+  for (std::size_t k = 0; k < p->b->ts.statevars().size(); ++k) in_b.emplace(p->b->ts.statevars()[k].name, k);
+  for (std::size_t k = 0; k < na; ++k) {
+    const auto& s = p->a->ts.statevars()[k];
+    auto it = in_b.find(s.name);
+    if (it == in_b.end()) continue;
+    const z3::expr& va = all[k].var;
+    const z3::expr& vb = all[na + it->second].var;
+    if (!z3::eq(va.get_sort(), vb.get_sort())) continue;
+    p->ts.add_lemma("eq." + s.name, va == vb);
+  }
+  p->ts.check_complete();
+  return p;
+}
+
+}  // namespace cemv::encoder
