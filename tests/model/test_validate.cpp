@@ -290,10 +290,7 @@ const std::vector<RuleCase>& rule_cases() {
       {"WatchdogShorterThanCycle", "E-WATCHDOG-CYCLE", [](Matrix& m) { m.watchdog_ms = 99; },
        [](Matrix& m) { m.watchdog_ms = 100; }, "matrix"},
       {"SifNoPst", "W-SIF-NO-PST", [](Matrix& m) { m.process_safety_time_ms.clear(); },
-       [](Matrix& m) {
-         m.process_safety_time_ms.clear();
-         m.sif_groups[2] = "no members";  // a group nobody belongs to needs no time
-       },
+       [](Matrix& m) { m.sif_groups[2] = "no members"; },  // a group nobody belongs to needs no time
        "matrix"},
       {"SifPstNoMembers", "W-SIF-PST-NO-MEMBERS",
        [](Matrix& m) {
