@@ -51,10 +51,10 @@ std::string property_name(const Path& p, Mode mode) {
   return "response." + p.key() + (mode == Mode::Degraded ? ".degraded" : "");
 }
 
-long long search_cap(const Path& p) { return 2 * p.estimate + 200; }
+long long search_cap(const Path& p) { return 2 * p.estimate + 64; }
 
 // Probes in this order: the estimate E; then E - 1 (when E is proved) or
-// E + 1 and the cap (when E is falsified); then bisection between the
+// E + 1 and the cap 2E + 64 (when E is falsified); then bisection between the
 // largest falsified and the smallest proved bound. The largest falsified
 // bound only grows, so the last scenario the checker writes for the
 // property's name is that of T - 1.

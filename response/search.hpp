@@ -27,7 +27,7 @@ struct SearchOptions {
   std::string out_dir;         // "" = no scenario files
 };
 
-// The bounds tried: up to twice the path's configured delays plus 200 cycles.
+// The bounds tried: up to twice the path's configured delays plus 64 cycles.
 long long search_cap(const Path& p);
 
 Figure least_response(const model::Matrix& m, const Path& p, Mode mode, const SearchOptions& options);

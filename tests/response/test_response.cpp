@@ -123,7 +123,8 @@ TEST(Response, OnDelayOfTwoSecondsTakesTwentyCycles) {
 TEST(Response, OutputDelayAddsItsCycles) {
   auto m = matrix(cause(1, "S1"), effect(1, "Y1", R"("output_delay_ms": 500)"), link(1, 1));
   auto dir = scratch("output_delay");
-  const auto& p = only_path(analyse(m, dir), 1);
+  const auto r = analyse(m, dir);
+  const auto& p = only_path(r, 1);
   ASSERT_EQ(p.logic.kind, Figure::Kind::Exact) << p.logic.reason;
   EXPECT_EQ(p.logic.cycles, 5);
   expect_replays(m, dir, p.logic.counterexample);
@@ -172,7 +173,8 @@ TEST(Response, TwoOutOfThreeWithOneBadInputReportsItsDegradedFigure) {
                       "tags": [{"name": "LT_A"}, {"name": "LT_B"}, {"name": "LT_C"}]})",
                   effect(1, "Y1"), link(1, 1));
   auto dir = scratch("degraded");
-  const auto& p = only_path(analyse(m, dir), 1);
+  const auto r = analyse(m, dir);
+  const auto& p = only_path(r, 1);
   ASSERT_EQ(p.logic.kind, Figure::Kind::Exact) << p.logic.reason;
   EXPECT_EQ(p.logic.cycles, 10);
   ASSERT_TRUE(p.degraded);
