@@ -136,7 +136,8 @@ std::string json(const ResponseResult& r) {
 
 // Each path as a property result of `cemv check`: ok and no-pst pass, over
 // and unbounded fail (falsified), unknown is unknown.
-checker::CheckResult as_check_result(const ResponseResult& r, const std::string& out_dir) {
+checker::CheckResult as_check_result(const ResponseResult& r, const std::string& matrix_file,
+                                     const std::string& out_dir) {
   checker::CheckResult c;
   c.matrix_name = r.matrix_name;
   c.matrix_signature = r.matrix_signature;
@@ -146,13 +147,13 @@ checker::CheckResult as_check_result(const ResponseResult& r, const std::string&
     pr.name = "response.sif" + std::to_string(p.path.sif) + "." + p.path.key();
     pr.description = summary(r, p);
     pr.kind = "response";
-    pr.file = "response";
+    pr.file = matrix_file;  // where a CI view locates the finding
     switch (p.verdict) {
       case Verdict::Ok:
       case Verdict::NoPst:
         pr.verdict = checker::PropertyVerdict::Proved;
-        pr.method = "exact response time: " + std::to_string(p.logic.cycles) + " cycles proved by " +
-                    p.logic.method + (p.logic.cycles > 0 ? ", one cycle less falsified" : "");
+        pr.method = p.logic.method + ", exact response time " + std::to_string(p.logic.cycles) + " cycles" +
+                    (p.logic.cycles > 0 ? " (one cycle less falsified)" : "");
         if (p.verdict == Verdict::NoPst) pr.notes.push_back("the SIF group declares no process safety time");
         break;
       case Verdict::Over:
@@ -186,9 +187,9 @@ std::string response_report(const ResponseResult& r, const std::string& matrix_f
     case Format::Text: return text(r);
     case Format::Json: return json(r);
     case Format::Junit:
-      return reports::check_report(as_check_result(r, out_dir), {matrix_file}, reports::CheckFormat::Junit);
+      return reports::check_report(as_check_result(r, matrix_file, out_dir), {matrix_file}, reports::CheckFormat::Junit);
     case Format::Sarif:
-      return reports::check_report(as_check_result(r, out_dir), {matrix_file}, reports::CheckFormat::Sarif);
+      return reports::check_report(as_check_result(r, matrix_file, out_dir), {matrix_file}, reports::CheckFormat::Sarif);
   }
   return "";
 }

@@ -167,10 +167,11 @@ TEST(Response, ChainThroughAReferenceAddsItsCycleOnlyWhenItReadsThePreviousValue
 }
 
 TEST(Response, TwoOutOfThreeWithOneBadInputReportsItsDegradedFigure) {
-  auto m = matrix(R"({"id": 1, "name": "C1", "sif": [1], "function": "2oo3", "input": "analog",
-                      "analog": {"limit_type": "high", "limit": 90.0}, "bad_quality": "degrade",
+  // Discrete switches (de-energize-to-trip): 2oo3 with "degrade" becomes 1oo2
+  // when one of them goes bad (C.4).
+  auto m = matrix(R"({"id": 1, "name": "C1", "sif": [1], "function": "2oo3", "bad_quality": "degrade",
                       "time": {"mode": "on_delay", "ms": 1000},
-                      "tags": [{"name": "LT_A"}, {"name": "LT_B"}, {"name": "LT_C"}]})",
+                      "tags": [{"name": "LS_A"}, {"name": "LS_B"}, {"name": "LS_C"}]})",
                   effect(1, "Y1"), link(1, 1));
   auto dir = scratch("degraded");
   const auto r = analyse(m, dir);
