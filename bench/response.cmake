@@ -6,3 +6,8 @@ if(TARGET cemv_response)
   target_link_libraries(bench_response PRIVATE cemv_response cemv_testsupport benchmark::benchmark)
   target_compile_definitions(bench_response PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 endif()
+# Not run by make bench: each engine alone on one path's probes (see the file).
+if(TARGET cemv_response)
+  add_executable(response_engines ${CMAKE_CURRENT_LIST_DIR}/response_engines.cpp)
+  target_link_libraries(response_engines PRIVATE cemv_response)
+endif()
