@@ -41,5 +41,6 @@ void add_replay_commands(CLI::App& app, Context& ctx);    // replay
 int mutation_report(const model::Matrix& m, const testgen::TestSuite& suite, const std::string& out_dir);
 void add_mutate_commands(CLI::App& app, Context& ctx);    // mutate
 void add_diff_commands(CLI::App& app, Context& ctx);      // diff
+void add_response_commands(CLI::App& app, Context& ctx);  // response
 
 }  // namespace cemv::cli

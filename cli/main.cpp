@@ -46,6 +46,7 @@ int main(int argc, char** argv) {
   cemv::cli::add_check_commands(app, ctx);
   cemv::cli::add_mutate_commands(app, ctx);
   cemv::cli::add_diff_commands(app, ctx);
+  cemv::cli::add_response_commands(app, ctx);
 #endif
 #ifdef CEMV_WITH_TESTGEN
   cemv::cli::add_testgen_commands(app, ctx);

@@ -156,6 +156,7 @@ class RecordImporter {
   Matrix run() {
     for (const auto& r : records_) handle(r);
     finish_tags();
+    finish_timing();
     if (!errors_.empty()) throw LoadError(errors_);
     m_.sort_by_id();
     return m_;
@@ -397,11 +398,67 @@ class RecordImporter {
     } else if (key == "group_deactivation.set_tag") {
       if (!m_.group_deactivation) m_.group_deactivation.emplace();
       m_.group_deactivation->set_tag = value;
+    } else if (timing_property(key, row, key_field.line, key_field.column)) {
     } else {
       error(key_field.line, key_field.column,
             "unknown property '" + key +
                 "' (expected format, name, title, cycle_ms, secure_write.enable_tag, "
-                "group_deactivation.enable_tag, group_deactivation.set_tag)");
+                "group_deactivation.enable_tag, group_deactivation.set_tag, watchdog_ms, "
+                "sif_group.N.process_safety_time_ms, cause.ID.sensor_ms, effect.ID.actuator_ms)");
+    }
+  }
+
+  // The timing keys of docs/response-time.md as property rows (watchdog_ms,
+  // sif_group.N.process_safety_time_ms, cause.ID.sensor_ms,
+  // effect.ID.actuator_ms), so the record layout's columns stay as they were.
+  // Element keys are applied once every record is read.
+  struct PendingTiming {
+    std::string kind;
+    int id = 0;
+    std::uint32_t ms = 0;
+    int line = 0;
+    int column = 0;
+  };
+  std::vector<PendingTiming> timing_;
+
+  bool timing_property(const std::string& key, const Row& row, int line, int column) {
+    if (key == "watchdog_ms") {
+      std::uint32_t ms = u32_value(row, "value", 0);
+      if (ms == 0) error(line, column, "watchdog_ms must be positive");
+      else m_.watchdog_ms = ms;
+      return true;
+    }
+    for (const char* kind : {"sif_group.", "cause.", "effect."}) {
+      const std::string prefix = kind;
+      const std::string suffix = prefix == "sif_group." ? ".process_safety_time_ms"
+                                 : prefix == "cause."   ? ".sensor_ms" : ".actuator_ms";
+      if (key.size() <= prefix.size() + suffix.size() || key.compare(0, prefix.size(), prefix) != 0 ||
+          key.compare(key.size() - suffix.size(), suffix.size(), suffix) != 0)
+        continue;
+      const std::string number = key.substr(prefix.size(), key.size() - prefix.size() - suffix.size());
+      int id = 0;
+      auto [end, ec] = std::from_chars(number.data(), number.data() + number.size(), id);
+      if (ec != std::errc{} || end != number.data() + number.size()) return false;
+      timing_.push_back({prefix, id, u32_value(row, "value", 0), line, column});
+      return true;
+    }
+    return false;
+  }
+
+  void finish_timing() {
+    for (const auto& t : timing_) {
+      if (t.kind == "sif_group.") {
+        if (!m_.sif_groups.count(t.id)) error(t.line, t.column, "SIF group " + std::to_string(t.id) + " is not defined");
+        else if (t.ms == 0) error(t.line, t.column, "a process safety time must be positive");
+        else m_.process_safety_time_ms[t.id] = t.ms;
+        continue;
+      }
+      bool found = false;
+      if (t.kind == "cause.")
+        for (auto& c : m_.causes) if (c.id == t.id) { c.sensor_ms = t.ms; found = true; }
+      if (t.kind == "effect.")
+        for (auto& e : m_.effects) if (e.id == t.id) { e.actuator_ms = t.ms; found = true; }
+      if (!found) error(t.line, t.column, "no " + t.kind.substr(0, t.kind.size() - 1) + " " + std::to_string(t.id));
     }
   }
 
@@ -774,6 +831,15 @@ std::string export_csv(const Matrix& m) {
     w.row({"property", "group_deactivation.enable_tag", m.group_deactivation->enable_tag});
     w.row({"property", "group_deactivation.set_tag", m.group_deactivation->set_tag});
   }
+  // Timing keys (docs/response-time.md), only where declared.
+  if (m.watchdog_ms) w.row({"property", "watchdog_ms", std::to_string(*m.watchdog_ms)});
+  for (const auto& [n, ms] : m.process_safety_time_ms)
+    w.row({"property", "sif_group." + std::to_string(n) + ".process_safety_time_ms", std::to_string(ms)});
+  for (const auto& c : m.causes)
+    if (c.sensor_ms) w.row({"property", "cause." + std::to_string(c.id) + ".sensor_ms", std::to_string(c.sensor_ms)});
+  for (const auto& e : m.effects)
+    if (e.actuator_ms)
+      w.row({"property", "effect." + std::to_string(e.id) + ".actuator_ms", std::to_string(e.actuator_ms)});
 
   w.header(schema("sif_group"));
   for (const auto& [n, name] : m.sif_groups) w.row({"sif_group", std::to_string(n), name});

@@ -384,6 +384,7 @@ Cause read_cause(Reader& r, const InJson& j, const std::string& path, bool& ok) 
        [&](const InJson& v, const std::string& p) { r.boolean(v, p, c.mutually_locked_maintenance); }},
       {"sif", false, [&](const InJson& v, const std::string& p) { read_sif_list(r, v, p, c.sif); }},
       {"note", false, [&](const InJson& v, const std::string& p) { r.text(v, p, c.note); }},
+      {"sensor_ms", false, [&](const InJson& v, const std::string& p) { r.integer(v, p, 0, kU32Max, c.sensor_ms); }},
   });
   if (!ok) return c;
   // 3.4: 1-3 input tags; a comment-only cause is not processed and may have none.
@@ -453,6 +454,8 @@ Effect read_effect(Reader& r, const InJson& j, const std::string& path, bool& ok
        [&](const InJson& v, const std::string& p) { r.boolean(v, p, e.mutually_locked_maintenance); }},
       {"sif", false, [&](const InJson& v, const std::string& p) { read_sif_list(r, v, p, e.sif); }},
       {"note", false, [&](const InJson& v, const std::string& p) { r.text(v, p, e.note); }},
+      {"actuator_ms", false,
+       [&](const InJson& v, const std::string& p) { r.integer(v, p, 0, kU32Max, e.actuator_ms); }},
   });
   if (!ok) return e;
   // 3.4: 1-4 output tags; a comment-only effect drives nothing and may have none.
@@ -507,6 +510,11 @@ void read_matrix(Reader& r, const InJson& root, Matrix& m) {
       {"title", false, [&](const InJson& v, const std::string& p) { r.text(v, p, m.title); }},
       {"cycle_ms", false,
        [&](const InJson& v, const std::string& p) { r.integer(v, p, 1, kU32Max, m.cycle_ms, "must be positive"); }},
+      {"watchdog_ms", false,
+       [&](const InJson& v, const std::string& p) {
+         std::uint32_t ms = 0;
+         if (!v.is_null() && r.integer(v, p, 1, kU32Max, ms, "must be positive")) m.watchdog_ms = ms;
+       }},
       {"sif_groups", false,
        [&](const InJson& v, const std::string& p) {
          if (!v.is_object()) {
@@ -523,8 +531,26 @@ void read_matrix(Reader& r, const InJson& root, Matrix& m) {
              r.error(kp, "SIF group numbers are 1-64 written without leading zeros, got " + in_quotes(key));
              continue;
            }
+           // A name, or {"name": ..., "process_safety_time_ms": N}.
            std::string name;
-           if (r.text(it.value(), kp, name)) m.sif_groups[number] = name;
+           if (it.value().is_object()) {
+             std::optional<std::uint32_t> pst;
+             bool named = false;
+             r.object(it.value(), kp, {
+                 {"name", true, [&](const InJson& v2, const std::string& p2) { named = r.text(v2, p2, name); }},
+                 {"process_safety_time_ms", false,
+                  [&](const InJson& v2, const std::string& p2) {
+                    std::uint32_t ms = 0;
+                    if (!v2.is_null() && r.integer(v2, p2, 1, kU32Max, ms, "a process safety time is positive"))
+                      pst = ms;
+                  }},
+             });
+             if (!named) continue;
+             m.sif_groups[number] = name;
+             if (pst) m.process_safety_time_ms[number] = *pst;
+           } else if (r.text(it.value(), kp, name)) {
+             m.sif_groups[number] = name;
+           }
          }
        }},
       {"secure_write", false,
@@ -745,6 +771,7 @@ void write_cause(CanonicalWriter& w, const Cause& c) {
   w.key("mutually_locked_maintenance").value(c.mutually_locked_maintenance);
   w.key("name").value(c.name);
   w.key("note").value(c.note);
+  if (c.sensor_ms) w.key("sensor_ms").value(c.sensor_ms);  // only when declared: old signatures stay
   w.key("sif");
   write_sif(w, c.sif);
   w.key("sil").value(c.sil);
@@ -771,6 +798,7 @@ void write_cause(CanonicalWriter& w, const Cause& c) {
 
 void write_effect(CanonicalWriter& w, const Effect& e) {
   w.begin_object();
+  if (e.actuator_ms) w.key("actuator_ms").value(e.actuator_ms);  // only when declared: old signatures stay
   w.key("bypass_tag").value(e.bypass_tag);
   w.key("description").value(e.description);
   w.key("function").value(to_string(e.function));
@@ -872,13 +900,30 @@ std::string canonical_text(const Matrix& m) {
     w.null();
   }
   // JSON object keys are strings, so group numbers sort as text ("10" < "2").
-  std::vector<std::pair<std::string, const std::string*>> groups;
-  for (const auto& [number, name] : m.sif_groups) groups.emplace_back(std::to_string(number), &name);
+  // A group without a process safety time keeps the string form, so the
+  // canonical text (and the signature) of a matrix that declares none is what
+  // it was before the object form existed.
+  std::vector<std::pair<std::string, int>> groups;
+  for (const auto& [number, name] : m.sif_groups) groups.emplace_back(std::to_string(number), number);
   std::sort(groups.begin(), groups.end());
   w.key("sif_groups").begin_object();
-  for (const auto& [number, name] : groups) w.key(number).value(*name);
+  for (const auto& [key, number] : groups) {
+    const std::string& name = m.sif_groups.at(number);
+    auto pst = m.process_safety_time_ms.find(number);
+    if (pst == m.process_safety_time_ms.end()) {
+      w.key(key).value(name);
+      continue;
+    }
+    w.key(key).begin_object();
+    w.key("name").value(name);
+    w.key("process_safety_time_ms").value(pst->second);
+    w.end_object();
+  }
   w.end_object();
   w.key("title").value(m.title);
+  // Optional timing keys (docs/response-time.md) only when declared, for the
+  // same reason.
+  if (m.watchdog_ms) w.key("watchdog_ms").value(*m.watchdog_ms);
   w.end_object();
   return w.take() + "\n";
 }

@@ -83,6 +83,9 @@ struct Cause {
   bool mutually_locked_maintenance = false;
   std::vector<int> sif;
   std::string note;                  // free text (e.g. footnotes of an imported grid)
+  // Declared response time of the field device (transmitter damping, switch
+  // delay), ms; only `cemv response` reads it (docs/response-time.md).
+  std::uint32_t sensor_ms = 0;
 };
 
 struct EffectTag {
@@ -117,6 +120,9 @@ struct Effect {
   bool mutually_locked_maintenance = false;
   std::vector<int> sif;
   std::string note;
+  // Declared response time of the final element (a valve's stroke time), ms;
+  // only `cemv response` reads it (docs/response-time.md).
+  std::uint32_t actuator_ms = 0;
 };
 
 struct Intersection {
@@ -141,6 +147,12 @@ struct Matrix {
   std::string title;
   std::uint32_t cycle_ms = 100;
   std::map<int, std::string> sif_groups;
+  // Process safety time per SIF group, ms (IEC 61508-4; HIMatrix Safety
+  // Manual 3.2.1), for the groups that declare one (JSON: the object form of a
+  // sif_groups entry). Groups without an entry declare none.
+  std::map<int, std::uint32_t> process_safety_time_ms;
+  // The controller's watchdog time, ms (HIMatrix 3.2.3); absent = not declared.
+  std::optional<std::uint32_t> watchdog_ms;
   std::optional<SecureWrite> secure_write;
   std::optional<GroupDeactivation> group_deactivation;
   std::vector<Cause> causes;          // kept sorted by id

@@ -8,6 +8,7 @@
 // matrix built in code, so nothing here assumes the loader ran: ids may repeat,
 // intersections may dangle, vectors may be unsorted.
 #include "model/validate.hpp"
+#include "model/validate_timing.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -64,6 +65,7 @@ const std::vector<RuleInfo> kRules = {
     {"E-TAG-IN-AND-OUT", E, "6.1.3", "a tag is both written by an effect and read by the matrix"},
     {"E-TAG-KIND-CONFLICT", E, "6.3.4", "a tag is read as an analog value by one cause and as a Boolean elsewhere"},
     {"E-TIMED-CAUSE-ZERO", E, "6.3.6", "a timed cause with duration 0 would never be active"},
+    {"E-WATCHDOG-CYCLE", E, "HIMatrix 3.2.3", "the watchdog time is shorter than the cycle"},
     {"E-XOON-COUNT", E, "6.5.2", "the X of an XooN assignment exceeds N, the number of its intersections"},
     {"E-XOON-MIXED-TYPE", E, "6.5.2", "the intersections of one XooN assignment are not all of one type"},
     {"E-XOON-MIXED-X", E, "6.5.2", "the intersections of one effect carry different X values (only one XooN assignment per effect)"},
@@ -83,10 +85,13 @@ const std::vector<RuleInfo> kRules = {
     {"W-OVERRIDE-UNUSED", W, "13.2.1", "an override time on an effect without V or R intersections has no effect"},
     {"W-PREWARNING-BEYOND-LIMIT", W, "6.3.5", "the prewarning is at or beyond the limit (high: >= limit, low: <= limit), which disables it"},
     {"W-PROCESS-DATA-UNUSED", W, "13.2.5", "a process data tag without pass-through and without mask has no effect"},
+    {"W-PST-CONTROLLER", W, "HIMatrix 3.2.3", "a process safety time is not longer than twice the watchdog time (or cycle)"},
     {"W-REF-COMMENT", W, "6.1.3", "an internal reference names a comment-only cause or effect, which is never active"},
     {"W-REF-CYCLE", W, "8.3", "internal references form a cycle: one reader sees the previous scan cycle's value"},
     {"W-RESET-OPERATOR-ONLY", W, "6.5.2", "an effect with S or R intersections has no reset tag: only the operator can reset it"},
     {"W-RESET-TAG-UNUSED", W, "13.2.1", "a reset/override tag on an effect with only N intersections has no effect"},
+    {"W-SIF-NO-PST", W, "HIMatrix 3.2.1", "a SIF group with members declares no process safety time"},
+    {"W-SIF-PST-NO-MEMBERS", W, "6.2.1", "a SIF group declares a process safety time but has no members"},
     {"W-SIF-UNDEFINED", W, "6.2.1", "an element names a SIF group that sif_groups does not define"},
     {"W-SOFT-BYPASS-PREALARM", W, "6.3.6", "the soft bypass prealarm is set without a bypass time or is not shorter than it"},
     {"W-SOFT-BYPASS-UNUSED", W, "6.3.6", "a soft bypass time on a cause whose soft bypass is not allowed"},
@@ -162,6 +167,7 @@ class Validator {
     tags();
     references();
     connectivity();
+    for (auto& f : detail::timing_findings(m_)) add(f.rule, Where{f.rank, f.id, 0, f.element}, std::move(f.message));
     std::stable_sort(out_.begin(), out_.end(), [](const Finding& x, const Finding& y) {
       return std::tie(x.d.rule, x.where.rank, x.where.a, x.where.b, x.d.message) <
              std::tie(y.d.rule, y.where.rank, y.where.a, y.where.b, y.d.message);

@@ -287,6 +287,35 @@ const std::vector<RuleCase>& rule_cases() {
       {"RefMissingMatrixLevel", "E-REF-MISSING",
        [](Matrix& m) { m.secure_write->enable_tag = "Effect[8]"; },
        [](Matrix& m) { m.secure_write->enable_tag = "Effect[3]"; }, "matrix"},
+      {"WatchdogShorterThanCycle", "E-WATCHDOG-CYCLE", [](Matrix& m) { m.watchdog_ms = 99; },
+       [](Matrix& m) { m.watchdog_ms = 100; }, "matrix"},
+      {"SifNoPst", "W-SIF-NO-PST", [](Matrix& m) { m.process_safety_time_ms.clear(); },
+       [](Matrix& m) { m.sif_groups[2] = "no members"; },  // a group nobody belongs to needs no time
+       "matrix"},
+      {"SifPstNoMembers", "W-SIF-PST-NO-MEMBERS",
+       [](Matrix& m) {
+         m.sif_groups[2] = "empty";
+         m.process_safety_time_ms[2] = 5000;
+       },
+       [](Matrix& m) {
+         m.sif_groups[2] = "used";
+         m.process_safety_time_ms[2] = 5000;
+         effect(m, 2).sif = {2};
+       },
+       "matrix"},
+      {"PstWithinControllerShareOfCycle", "W-PST-CONTROLLER",
+       [](Matrix& m) { m.process_safety_time_ms[1] = 200; },
+       [](Matrix& m) { m.process_safety_time_ms[1] = 201; }, "matrix"},
+      {"PstWithinControllerShareOfWatchdog", "W-PST-CONTROLLER",
+       [](Matrix& m) {
+         m.watchdog_ms = 250;
+         m.process_safety_time_ms[1] = 500;
+       },
+       [](Matrix& m) {
+         m.watchdog_ms = 250;
+         m.process_safety_time_ms[1] = 501;
+       },
+       "matrix"},
       {"SifGroupRange", "E-SIF-GROUP-RANGE", [](Matrix& m) { m.sif_groups[65] = "far"; },
        [](Matrix& m) { m.sif_groups[64] = "far"; }, "matrix"},
       {"SifRangeNumber", "E-SIF-RANGE", [](Matrix& m) { cause(m, 1).sif = {0}; },

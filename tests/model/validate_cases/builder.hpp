@@ -116,6 +116,7 @@ inline Matrix clean_matrix() {
   m.title = "Tank 100 overfill protection";
   m.cycle_ms = 100;
   m.sif_groups = {{1, "Tank 100 level"}};
+  m.process_safety_time_ms = {{1, 30000}};
   m.secure_write = SecureWrite{"EN_SWC"};
   m.group_deactivation = GroupDeactivation{"EN_GDM", "SET_GDM"};
   return m;

@@ -1,0 +1,45 @@
+// Not a benchmark target of its own in make bench: each engine alone on one
+// path's response property at T (proof) and T - 1 (counterexample), to see
+// which engine carries cemv response's probes. Usage:
+//   response_engines MATRIX CAUSE EFFECT T [SECONDS]
+#include <chrono>
+#include <cstdlib>
+#include <iostream>
+
+#include "checker/engines/portfolio.hpp"
+#include "encoder/encode.hpp"
+#include "formats/matrix_json.hpp"
+#include "properties/monitor.hpp"
+#include "properties/parser.hpp"
+#include "response/paths.hpp"
+#include "response/property.hpp"
+
+using namespace cemv;
+
+int main(int argc, char** argv) {
+  if (argc < 5) return 2;
+  model::Matrix m = formats::load_matrix(argv[1]);
+  const int cause = std::atoi(argv[2]), effect = std::atoi(argv[3]);
+  const long long t = std::atoll(argv[4]);
+  const int seconds = argc > 5 ? std::atoi(argv[5]) : 30;
+  response::Path path;
+  for (const auto& p : response::response_paths(m, {}))
+    if (p.effect == effect && p.causes == std::vector<int>{cause}) path = p;
+  for (long long bound : {t, t - 1}) {
+    auto file = properties::parse_properties(
+        response::response_property_text(m, path, response::Mode::Normal, bound, "probe"), m, "probe");
+    const auto& prop = file.properties.at(0);
+    for (const char* engine : {"invariants+induction", "k-induction", "pdr", "accelerated-bmc", "bmc"}) {
+      z3::context ctx;
+      auto enc = encoder::encode(ctx, m, properties::property_roots(prop, file.assumptions, m));
+      auto mon = properties::compile_monitor(*enc, prop, file.assumptions);
+      auto prover = checker::make_prover(engine);
+      auto start = std::chrono::steady_clock::now();
+      auto r = prover->prove({&enc->ts, mon.good, mon.assumption},
+                             checker::Limits::within(std::chrono::seconds(seconds), static_cast<int>(bound + 2)));
+      double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      std::cout << "T=" << bound << " " << engine << ": " << checker::to_string(r.verdict) << " " << r.reason
+                << " k=" << r.k << " " << s << " s" << std::endl;
+    }
+  }
+}

@@ -1,0 +1,62 @@
+// `cemv response`: the worst-case response time of every path of every SIF
+// group, proved exactly, and held against the group's process safety time
+// (docs/response-time.md). The public header of response/.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "model/matrix.hpp"
+#include "response/paths.hpp"
+#include "response/search.hpp"
+
+namespace cemv::response {
+
+struct ResponseOptions {
+  std::vector<int> sifs;      // empty = every declared group
+  bool conservative = false;  // the controller's share from watchdog_ms instead of cycle_ms
+  double timeout_s = 0.0;     // per decided property
+  int jobs = 1;               // paths decided in parallel
+  std::string out_dir;        // counterexample scenarios ("" = none written)
+};
+
+enum class Verdict { Ok, Over, NoPst, Unbounded, Unknown };
+const char* to_string(Verdict v);
+
+struct PathResult {
+  Path path;
+  std::string sif_name;
+  Figure logic;                              // the normal figure
+  std::optional<Figure> degraded;            // voted paths only
+  std::optional<long long> logic_ms;         // T x cycle_ms
+  std::optional<long long> total_ms;
+  std::optional<long long> degraded_total_ms;
+  std::optional<std::uint32_t> process_safety_time_ms;
+  std::optional<long long> margin_ms;        // PST - total
+  std::optional<double> margin_percent;      // of the PST
+  std::uint32_t sensor_ms = 0;               // the slowest trigger cause's
+  std::uint32_t actuator_ms = 0;
+  long long controller_ms = 0;               // 2 x cycle_ms, or 2 x watchdog_ms
+  Verdict verdict = Verdict::Unknown;
+};
+
+struct ResponseResult {
+  std::string matrix_name;
+  std::string matrix_signature;
+  std::uint32_t cycle_ms = 0;
+  std::optional<std::uint32_t> watchdog_ms;
+  bool conservative = false;
+  std::vector<PathResult> paths;
+};
+
+// Throws std::invalid_argument for options the matrix cannot satisfy (a SIF
+// group it does not declare, --conservative without watchdog_ms).
+ResponseResult analyse(const model::Matrix& m, const ResponseOptions& options);
+
+// The exit status of `cemv check`'s rules: 1 some path over or unbounded, 3
+// some unknown and nothing over, else 0.
+int exit_code(const ResponseResult& r);
+
+}  // namespace cemv::response

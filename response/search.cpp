@@ -1,0 +1,111 @@
+#include "response/search.hpp"
+
+#include <filesystem>
+#include <stdexcept>
+
+#include "checker/check.hpp"
+#include "formats/diagnostics.hpp"
+#include "properties/parser.hpp"
+
+namespace cemv::response {
+
+namespace {
+
+struct Probe {
+  checker::PropertyVerdict verdict = checker::PropertyVerdict::Unknown;
+  std::string reason;
+  std::string method;
+  std::string scenario;
+};
+
+Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles, const SearchOptions& o) {
+  const std::string name = property_name(p, mode);
+  const std::string text = response_property_text(m, p, mode, cycles, name);
+  properties::PropertyFile file;
+  try {
+    file = properties::parse_properties(text, m, "cemv-response:" + name);
+  } catch (const formats::LoadError& e) {
+    // cemv wrote this text: a parse error is cemv's fault, not the input's.
+    std::string what;
+    for (const auto& i : e.issues()) what += "\n" + i.str();
+    throw std::logic_error("cemv response wrote a property the parser refuses:" + what + "\n" + text);
+  }
+  checker::CheckOptions options;
+  options.property_timeout_s = o.timeout_s;
+  options.jobs = 1;
+  options.out_dir = o.out_dir;
+  options.support = false;
+  checker::CheckResult r = checker::check_properties(m, {file}, options);
+  Probe out;
+  const checker::PropertyResult& pr = r.properties.at(0);
+  out.verdict = pr.verdict;
+  out.reason = pr.reason;
+  out.method = pr.method;
+  if (!pr.scenario_file.empty()) out.scenario = std::filesystem::path(pr.scenario_file).filename().string();
+  return out;
+}
+
+}  // namespace
+
+std::string property_name(const Path& p, Mode mode) {
+  return "response." + p.key() + (mode == Mode::Degraded ? ".degraded" : "");
+}
+
+long long search_cap(const Path& p) { return 2 * p.estimate + 64; }
+
+// Probes in this order: the estimate E; then E - 1 (when E is proved) or
+// E + 1 and the cap 2E + 64 (when E is falsified); then bisection between the
+// largest falsified and the smallest proved bound. The largest falsified
+// bound only grows, so the last scenario the checker writes for the
+// property's name is that of T - 1.
+Figure least_response(const model::Matrix& m, const Path& p, Mode mode, const SearchOptions& o) {
+  Figure f;
+  long long lo = -1;  // largest bound falsified (-1: none needed below 0)
+  long long hi = -1;  // smallest bound proved (-1: none yet)
+  std::string lo_scenario;
+  const long long cap = search_cap(p);
+  auto probe = [&](long long t) -> bool {  // false: stop (unknown)
+    Probe r = decide(m, p, mode, t, o);
+    ++f.probes;
+    switch (r.verdict) {
+      case checker::PropertyVerdict::Proved:
+        hi = t;
+        f.method = r.method;
+        return true;
+      case checker::PropertyVerdict::Falsified:
+        lo = t;
+        lo_scenario = r.scenario;
+        return true;
+      case checker::PropertyVerdict::Vacuous:
+        f.reason = "vacuous: " + r.reason;
+        return false;
+      default:
+        f.reason = r.reason.empty() ? "not decided" : r.reason;
+        return false;
+    }
+  };
+  const long long first = std::min(p.estimate, cap);
+  if (!probe(first)) return f;
+  if (hi == first) {
+    if (first > 0 && !probe(first - 1)) return f;
+  } else {
+    if (!probe(first + 1)) return f;
+    if (hi < 0 && first + 1 < cap && !probe(cap)) return f;
+    if (hi < 0) {
+      f.kind = Figure::Kind::Unbounded;
+      f.cycles = lo;
+      f.counterexample = lo_scenario;
+      return f;
+    }
+  }
+  while (hi - lo > 1) {
+    long long mid = lo + (hi - lo) / 2;
+    if (!probe(mid)) return f;
+  }
+  f.kind = Figure::Kind::Exact;
+  f.cycles = hi;
+  f.counterexample = lo >= 0 ? lo_scenario : "";
+  return f;
+}
+
+}  // namespace cemv::response

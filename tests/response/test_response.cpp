@@ -1,0 +1,233 @@
+// `cemv response` on small matrices whose answer the semantics fixes
+// (docs/semantics.md T.2, C.6, E.7, E.8, I.4): every figure is the one the
+// runtime takes, and every T-1 counterexample replays on the runtime with the
+// effect not yet active (docs/response-time.md).
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "formats/matrix_json.hpp"
+#include "response/analysis.hpp"
+#include "response/report.hpp"
+
+namespace {
+
+using namespace cemv;
+using response::Figure;
+using response::Verdict;
+
+// A matrix with one SIF group: `causes` and `effects` are JSON array bodies.
+model::Matrix matrix(const std::string& causes, const std::string& effects, const std::string& intersections,
+                     const std::string& extra = "") {
+  std::string text = R"({"format": "cemv-matrix/1", "name": "T", "cycle_ms": 100,
+    "sif_groups": {"1": {"name": "S", "process_safety_time_ms": 5000}},)" +
+                     extra + R"("causes": [)" + causes + R"(], "effects": [)" + effects +
+                     R"(], "intersections": [)" + intersections + "]}";
+  return formats::parse_matrix(text, "test.json");
+}
+
+std::string cause(int id, const std::string& tag, const std::string& more = "") {
+  return R"({"id": )" + std::to_string(id) + R"(, "name": "C)" + std::to_string(id) + R"(", "sif": [1], "tags": [{"name": ")" +
+         tag + R"("}])" + (more.empty() ? "" : ", " + more) + "}";
+}
+std::string effect(int id, const std::string& tag, const std::string& more = "") {
+  return R"({"id": )" + std::to_string(id) + R"(, "name": "E)" + std::to_string(id) + R"(", "sif": [1], "tags": [{"name": ")" +
+         tag + R"("}])" + (more.empty() ? "" : ", " + more) + "}";
+}
+std::string link(int c, int e, const std::string& type = "N") {
+  return R"({"cause": )" + std::to_string(c) + R"(, "effect": )" + std::to_string(e) + R"(, "type": ")" + type + R"("})";
+}
+
+std::filesystem::path scratch(const std::string& name) {
+  auto dir = std::filesystem::temp_directory_path() / ("cemv-response-test-" + std::to_string(::getpid())) / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+response::ResponseResult analyse(const model::Matrix& m, const std::filesystem::path& out, bool conservative = false) {
+  response::ResponseOptions o;
+  o.out_dir = out.string();
+  o.timeout_s = 120;
+  o.conservative = conservative;
+  return response::analyse(m, o);
+}
+
+const response::PathResult& only_path(const response::ResponseResult& r, int effect_id) {
+  for (const auto& p : r.paths)
+    if (p.path.effect == effect_id) return p;
+  throw std::runtime_error("no path to effect " + std::to_string(effect_id));
+}
+
+std::string read(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// The scenario replays on the runtime: `cemv simulate` checks its
+// expectations (the property's signals after the last cycle) and exits 0.
+void expect_replays(const model::Matrix& m, const std::filesystem::path& dir, const std::string& scenario) {
+  ASSERT_FALSE(scenario.empty());
+  const auto matrix_file = dir / "matrix.json";
+  formats::save_matrix(m, matrix_file);
+  std::string cmd = std::string(CEMV_BINARY) + " simulate " + matrix_file.string() + " " + (dir / scenario).string() +
+                    " > " + (dir / "simulate.log").string() + " 2>&1";
+  EXPECT_EQ(std::system(cmd.c_str()), 0) << read(dir / "simulate.log");
+}
+
+// The last cycle of the T-1 scenario expects the effect's output at its
+// normal (not tripped) value: a DTT tag still 1.
+void expect_not_yet_active(const std::filesystem::path& dir, const std::string& scenario, int effect) {
+  std::string text = read(dir / scenario);
+  std::string key = "\"effect[" + std::to_string(effect) + "].tag[1]\": true";
+  EXPECT_NE(text.find(key), std::string::npos) << text;
+}
+
+TEST(Response, DirectPathWithoutDelayIsTwoCycles) {
+  auto m = matrix(cause(1, "S1"), effect(1, "Y1"), link(1, 1), R"("watchdog_ms": 250,)");
+  auto dir = scratch("direct");
+  auto r = analyse(m, dir);
+  const auto& p = only_path(r, 1);
+  EXPECT_EQ(p.logic.kind, Figure::Kind::Exact);
+  EXPECT_EQ(p.logic.cycles, 0);
+  EXPECT_EQ(*p.total_ms, 200);
+  EXPECT_EQ(*p.margin_ms, 4800);
+  EXPECT_EQ(p.verdict, Verdict::Ok);
+  EXPECT_TRUE(p.logic.counterexample.empty());  // nothing below 0 to falsify
+  auto c = analyse(m, dir, true);
+  EXPECT_EQ(*only_path(c, 1).total_ms, 500);  // twice watchdog_ms
+}
+
+TEST(Response, OnDelayOfTwoSecondsTakesTwentyCycles) {
+  auto m = matrix(cause(1, "S1", R"("time": {"mode": "on_delay", "ms": 2000}, "sensor_ms": 300)"),
+                  effect(1, "Y1", R"("actuator_ms": 1500)"), link(1, 1));
+  auto dir = scratch("on_delay");
+  auto r = analyse(m, dir);
+  const auto& p = only_path(r, 1);
+  ASSERT_EQ(p.logic.kind, Figure::Kind::Exact) << p.logic.reason;
+  EXPECT_EQ(p.logic.cycles, 20);  // T.2: started in cycle s, expires in s + 20
+  EXPECT_EQ(*p.logic_ms, 2000);
+  EXPECT_EQ(*p.total_ms, 300 + 2000 + 200 + 1500);
+  EXPECT_EQ(p.verdict, Verdict::Ok);
+  EXPECT_EQ(p.logic.counterexample, "response.c1.e1.scenario.json");
+  expect_replays(m, dir, p.logic.counterexample);
+  expect_not_yet_active(dir, p.logic.counterexample, 1);
+}
+
+TEST(Response, OutputDelayAddsItsCycles) {
+  auto m = matrix(cause(1, "S1"), effect(1, "Y1", R"("output_delay_ms": 500)"), link(1, 1));
+  auto dir = scratch("output_delay");
+  const auto r = analyse(m, dir);
+  const auto& p = only_path(r, 1);
+  ASSERT_EQ(p.logic.kind, Figure::Kind::Exact) << p.logic.reason;
+  EXPECT_EQ(p.logic.cycles, 5);
+  expect_replays(m, dir, p.logic.counterexample);
+  expect_not_yet_active(dir, p.logic.counterexample, 1);
+}
+
+// I.4: a reference to an element evaluated earlier in the scan reads its
+// current value (no cycle); one that closes a cycle reads the previous
+// cycle's value and adds that cycle.
+TEST(Response, ChainThroughAReferenceAddsItsCycleOnlyWhenItReadsThePreviousValue) {
+  // Forward chain: cause 1 -> effect 1 -> cause 2 (reads Effect[1], ETT) -> effect 2.
+  auto forward = matrix(cause(1, "S1") + "," + R"({"id": 2, "name": "C2", "sif": [1], "tags": [{"name": "Effect[1]", "ett": true}]})",
+                        effect(1, "Y1") + "," + effect(2, "Y2"), link(1, 1) + "," + link(2, 2));
+  auto dir = scratch("chain");
+  auto r = analyse(forward, dir);
+  const auto& p = only_path(r, 2);
+  ASSERT_EQ(p.path.causes, std::vector<int>{1});
+  ASSERT_EQ(p.logic.kind, Figure::Kind::Exact) << p.logic.reason;
+  EXPECT_EQ(p.logic.cycles, 0);
+  // A closing reference: cause 1 (or: S1, Effect[2]) -> effect 1; cause 2
+  // (Effect[1]) -> effect 2. Effect 2 feeds cause 1 and effect 1 feeds cause
+  // 2: a cycle, whose smallest node, cause 1, goes first and reads effect 2's
+  // previous value. The path S3 (cause 3) -> effect 2 -> cause 1 -> effect 1
+  // crosses that reference and takes one cycle.
+  auto closing = matrix(R"({"id": 1, "name": "C1", "sif": [1], "function": "or", "tags": [{"name": "S1"}, {"name": "Effect[2]", "ett": true}]},)"
+                        R"({"id": 2, "name": "C2", "sif": [1], "tags": [{"name": "Effect[1]", "ett": true}]},)"
+                        R"({"id": 3, "name": "C3", "sif": [1], "tags": [{"name": "S3"}]})",
+                        effect(1, "Y1") + "," + effect(2, "Y2"), link(1, 1) + "," + link(2, 2) + "," + link(3, 2));
+  auto dir3 = scratch("chain3");
+  auto r3 = analyse(closing, dir3);
+  bool found = false;
+  for (const auto& q : r3.paths)
+    if (q.path.effect == 1 && q.path.causes == std::vector<int>{3}) {
+      found = true;
+      ASSERT_EQ(q.logic.kind, Figure::Kind::Exact) << q.logic.reason;
+      EXPECT_EQ(q.logic.cycles, 1);
+      expect_replays(closing, dir3, q.logic.counterexample);
+    }
+  EXPECT_TRUE(found);
+}
+
+TEST(Response, TwoOutOfThreeWithOneBadInputReportsItsDegradedFigure) {
+  // Discrete switches (de-energize-to-trip): 2oo3 with "degrade" becomes 1oo2
+  // when one of them goes bad (C.4).
+  auto m = matrix(R"({"id": 1, "name": "C1", "sif": [1], "function": "2oo3", "bad_quality": "degrade",
+                      "time": {"mode": "on_delay", "ms": 1000},
+                      "tags": [{"name": "LS_A"}, {"name": "LS_B"}, {"name": "LS_C"}]})",
+                  effect(1, "Y1"), link(1, 1));
+  auto dir = scratch("degraded");
+  const auto r = analyse(m, dir);
+  const auto& p = only_path(r, 1);
+  ASSERT_EQ(p.logic.kind, Figure::Kind::Exact) << p.logic.reason;
+  EXPECT_EQ(p.logic.cycles, 10);
+  ASSERT_TRUE(p.degraded);
+  ASSERT_EQ(p.degraded->kind, Figure::Kind::Exact) << p.degraded->reason;
+  EXPECT_EQ(p.degraded->cycles, 10);
+  EXPECT_EQ(*p.degraded_total_ms, 1200);
+  expect_replays(m, dir, p.degraded->counterexample);
+}
+
+TEST(Response, OffDelayAndTimedCausesRespondAtOnce) {
+  auto m = matrix(cause(1, "S1", R"("time": {"mode": "off_delay", "ms": 3000})") + "," +
+                      cause(2, "S2", R"("time": {"mode": "timed", "ms": 5000})"),
+                  effect(1, "Y1") + "," + effect(2, "Y2", R"("output_delay_ms": 200)"), link(1, 1) + "," + link(2, 2));
+  auto r = analyse(m, scratch("timers"));
+  const auto& off = only_path(r, 1);
+  ASSERT_EQ(off.logic.kind, Figure::Kind::Exact) << off.logic.reason;
+  EXPECT_EQ(off.logic.cycles, 0);  // the off-delay delays only the end of a trip
+  const auto& timed = only_path(r, 2);
+  ASSERT_EQ(timed.logic.kind, Figure::Kind::Exact) << timed.logic.reason;
+  EXPECT_EQ(timed.logic.cycles, 2);  // the pulse starts with the demand; the output delay follows
+}
+
+// A mask switched by an operator is maintenance and assumed off; a mask the
+// logic drives (here: cause 2's activity) holds the outputs off for ever.
+TEST(Response, MaskedPathIsUnbounded) {
+  auto m = matrix(cause(1, "S1") + "," + cause(2, "S2"),
+                  effect(1, "Y1", R"("process_data": {"tag": "BPCS_1", "mask_tag": "Cause[2]"})") + "," +
+                      effect(2, "Y2", R"("process_data": {"tag": "BPCS_2", "mask_tag": "MASK_2"})"),
+                  link(1, 1) + "," + link(1, 2));
+  auto dir = scratch("masked");
+  auto r = analyse(m, dir);
+  const auto& p = only_path(r, 1);
+  EXPECT_EQ(p.logic.kind, Figure::Kind::Unbounded);
+  EXPECT_EQ(p.verdict, Verdict::Unbounded);
+  EXPECT_EQ(response::exit_code(r), 1);
+  expect_replays(m, dir, p.logic.counterexample);
+  const auto& switched = only_path(r, 2);
+  ASSERT_EQ(switched.logic.kind, Figure::Kind::Exact) << switched.logic.reason;
+  EXPECT_EQ(switched.logic.cycles, 0);
+}
+
+TEST(Response, OverTheProcessSafetyTimeFails) {
+  auto m = matrix(cause(1, "S1", R"("time": {"mode": "on_delay", "ms": 5000})"), effect(1, "Y1"), link(1, 1));
+  auto r = analyse(m, scratch("over"));
+  const auto& p = only_path(r, 1);
+  EXPECT_EQ(*p.total_ms, 5200);
+  EXPECT_EQ(*p.margin_ms, -200);
+  EXPECT_EQ(p.verdict, Verdict::Over);
+  EXPECT_EQ(response::exit_code(r), 1);
+  std::string json = response::response_report(r, "m.json", response::Format::Json, "");
+  EXPECT_NE(json.find("\"schema\": \"cemv-response/1\""), std::string::npos) << json;
+  EXPECT_NE(json.find("\"verdict\": \"over\""), std::string::npos) << json;
+}
+
+}  // namespace
