@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/trace_pictures.hpp"
 #include "formats/matrix_json.hpp"
 #include "formats/scenario.hpp"
 #include "formats/trace.hpp"
@@ -65,7 +66,7 @@ std::filesystem::path matrix_of(const std::vector<std::string>& files) {
   return *named;
 }
 
-int run_simulate(const std::vector<std::string>& files, const std::string& trace_file) {
+int run_simulate(const std::vector<std::string>& files, const std::string& trace_file, TracePictures pictures) {
   const std::string scenario_file = files.back();
   model::Matrix m = formats::load_valid_matrix(matrix_of(files), "simulated");
   formats::Scenario sc = formats::load_scenario(scenario_file, m);
@@ -88,13 +89,17 @@ int run_simulate(const std::vector<std::string>& files, const std::string& trace
     rt.snapshot(snap);
     refused_total += static_cast<std::uint64_t>(rt.commands_refused());
     timing.record(c + 1, in, snap);
+    pictures.record(in, snap);
     if (!trace_file.empty()) {
       std::vector<std::optional<bool>> output_values;
       for (const auto& name : outputs) output_values.push_back(rt.output(name));
       trace.add_cycle(c, ex.step_of_cycle[c], in, rt.commands_refused(), snap, output_values);
     }
     for (const auto& outcome : checker.after_cycle(c, values))
-      if (!outcome.ok) std::cout << outcome.failure_text(m.cycle_ms) << "\n";
+      if (!outcome.ok) {
+        std::cout << outcome.failure_text(m.cycle_ms) << "\n";
+        pictures.mark(outcome, m.cycle_ms);
+      }
   }
 
   timing.print(std::cout, m.cycle_ms);
@@ -105,7 +110,9 @@ int run_simulate(const std::vector<std::string>& files, const std::string& trace
             << checker.failed() << " failed";
   if (refused_total)
     std::cout << ", " << refused_total << (refused_total == 1 ? " command" : " commands") << " refused";
-  std::cout << "\n" << (checker.failed() ? "FAIL" : "PASS") << "\n";
+  std::cout << "\n";
+  pictures.write(m, "Scenario " + scenario_file + " on matrix " + m.name, std::cout);
+  std::cout << (checker.failed() ? "FAIL" : "PASS") << "\n";
 
   if (!trace_file.empty() && !trace.write(trace_file, sig)) {
     std::cerr << "error: " << trace_file << ": cannot write the trace\n";
@@ -127,7 +134,10 @@ void add_simulate_commands(CLI::App& app, Context& ctx) {
       ->required()
       ->expected(1, 2);
   cmd->add_option("--trace", trace_file, "write the per-cycle trace (inputs, every observable) as JSON");
-  cmd->callback([&ctx]() { ctx.exit_code = run_simulate(files, trace_file); });
+  static std::string svg_file, vcd_file;
+  cmd->add_option("--svg", svg_file, "write the run's timing diagram as SVG")->type_name("FILE");
+  cmd->add_option("--vcd", vcd_file, "write the run as a value change dump (VCD, IEEE 1364)")->type_name("FILE");
+  cmd->callback([&ctx]() { ctx.exit_code = run_simulate(files, trace_file, TracePictures(svg_file, vcd_file)); });
 }
 
 }  // namespace cemv::cli
