@@ -20,5 +20,6 @@ void add_csv_commands(CLI::App& app, Context& ctx);       // export-csv, import-
 void add_simulate_commands(CLI::App& app, Context& ctx);  // simulate
 void add_smt_commands(CLI::App& app, Context& ctx);       // export-smt
 void add_check_commands(CLI::App& app, Context& ctx);     // check
+void add_evidence_commands(CLI::App& app, Context& ctx);  // evidence
 
 }  // namespace cemv::cli

@@ -38,6 +38,7 @@ int main(int argc, char** argv) {
   cemv::cli::add_smt_commands(app, ctx);
 #ifdef CEMV_WITH_CHECK  // defined when the checker and the property language are built
   cemv::cli::add_check_commands(app, ctx);
+  cemv::cli::add_evidence_commands(app, ctx);
 #endif
   try {
     app.parse(argc, argv);
