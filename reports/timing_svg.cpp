@@ -90,15 +90,17 @@ class Drawing {
     double header = 46 + 16 * static_cast<double>(d_.marks.size());
     double axis_top = header + 18;
     double y = axis_top + 6;
+    double rows_end = y;
+    for (const auto& r : rows_) rows_end += row_height(r.kind);
     std::ostringstream body;
+    draw_folds(body, axis_top, rows_end);  // under the rows: the waveforms run across
     for (const auto& r : rows_) {
       double h = row_height(r.kind);
       draw_row(body, r, y, h);
       y += h;
     }
-    double rows_end = y;
     std::ostringstream over;
-    draw_folds_and_marks(over, axis_top, rows_end);
+    draw_marks(over, axis_top, rows_end);
     draw_axes(over, axis_top, rows_end);
     std::vector<std::string> foot = footer();
     double height = rows_end + 30 + 15 * static_cast<double>(foot.size()) + 8;
@@ -304,18 +306,21 @@ class Drawing {
     (void)bottom;
   }
 
-  void draw_folds_and_marks(std::ostringstream& o, double axis_top, double rows_end) const {
+  void draw_folds(std::ostringstream& o, double axis_top, double rows_end) const {
     for (std::size_t i = 0; i < cols_.size(); ++i) {
       if (!cols_[i].folded) continue;
       std::size_t n = cols_[i].last - cols_[i].first + 1;
       double a = xs_[i] + 8, b = xs_[i + 1] - 8;
       o << "<rect class=\"fold\" x=\"" << num(a) << "\" y=\"" << num(axis_top) << "\" width=\"" << num(b - a)
-        << "\" height=\"" << num(rows_end - axis_top) << "\" fill-opacity=\"0.85\"><title>cycles "
+        << "\" height=\"" << num(rows_end - axis_top) << "\"><title>cycles "
         << cols_[i].first + 1 << "-" << cols_[i].last + 1 << " folded: " << n
         << " cycles without a change</title></rect>\n";
       o << "<text class=\"small\" text-anchor=\"middle\" x=\"" << num((a + b) / 2) << "\" y=\""
         << num(axis_top + 12) << "\">" << n << "</text>\n";
     }
+  }
+
+  void draw_marks(std::ostringstream& o, double axis_top, double rows_end) const {
     for (const auto& mk : d_.marks)
       for (std::size_t i = 0; i < cols_.size(); ++i)
         if (cols_[i].first <= mk.cycle && mk.cycle <= cols_[i].last) {
