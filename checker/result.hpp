@@ -77,6 +77,8 @@ struct PropertyResult {
   std::optional<ConcreteTrace> trace;   // Falsified / Reachable: the replayed run
   int violation_cycle = -1;             // 0-based cycle of the violation / witness
   std::string scenario_file;            // the trace as cemv-scenario/1 (under --out)
+  std::string diagram_file;             // its timing diagram, SVG (under --out; written by the CLI)
+  std::string vcd_file;                 // the trace as a VCD (under --out; written by the CLI)
   std::string timing_table;             // readable table of the signals that matter
   double seconds = 0.0;                 // wall time (not in deterministic outputs)
   std::vector<std::string> matters;     // observable keys the property reads (for tables)

@@ -28,6 +28,8 @@
 #include "properties/parser.hpp"
 #include "properties/standard.hpp"
 #include "reports/check_report.hpp"
+#include "reports/timing_svg.hpp"
+#include "reports/vcd.hpp"
 
 namespace cemv::cli {
 
@@ -136,6 +138,23 @@ std::vector<Destination> destinations(const CheckArgs& a) {
     add(spec.substr(0, colon), spec.substr(colon + 1), "--report '" + spec + "'");
   }
   return out;
+}
+
+// Beside each counterexample or witness scenario under --out, its timing
+// diagram (NAME.svg) and its waveforms (NAME.vcd), named in the reports.
+void write_pictures(const model::Matrix& m, checker::CheckResult& r) {
+  const std::string suffix = ".scenario.json";
+  for (auto& p : r.properties) {
+    const std::string& f = p.scenario_file;
+    if (!p.trace || f.size() <= suffix.size() || f.compare(f.size() - suffix.size(), suffix.size(), suffix) != 0)
+      continue;
+    std::string base = f.substr(0, f.size() - suffix.size());
+    write_output(base + ".svg", reports::timing_svg(m, *p.trace, reports::diagram_of(p)));
+    p.diagram_file = base + ".svg";
+    std::string what = p.verdict == PropertyVerdict::Reachable ? "witness of " : "counterexample to ";
+    write_output(base + ".vcd", reports::vcd(m, *p.trace, {"", CEMV_VERSION, what + p.name}));
+    p.vcd_file = base + ".vcd";
+  }
 }
 
 // Writes every report and, when none went to standard output, a one-line
@@ -295,6 +314,7 @@ int run_check(const CheckArgs& a) {
   result.property_files = skeleton.property_files;
   result.standard = skeleton.standard;
   result.shard = skeleton.shard;
+  write_pictures(m, result);
   publish(result, a, outputs);
   return checker::exit_code(verdicts_of(result));
 }
@@ -318,7 +338,7 @@ void add_check_commands(CLI::App& app, Context& ctx) {
       ->type_name("FORMAT:FILE")
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
-  cmd->add_option("--out", a.out_dir, "folder for counterexample scenarios (created if missing)")
+  cmd->add_option("--out", a.out_dir, "folder for counterexample scenarios, their timing diagrams (.svg) and waveforms (.vcd); created if missing")
       ->type_name("DIR");
   cmd->add_option("--jobs", a.jobs, "worker threads over the properties")->capture_default_str();
   cmd->add_option("--shard", a.shard, "check only shard i of n (1 <= i <= n), for CI runners")

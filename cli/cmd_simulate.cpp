@@ -17,6 +17,7 @@
 #include "cli/commands.hpp"
 #include "cli/matrix_input.hpp"
 #include "cli/output.hpp"
+#include "cli/trace_pictures.hpp"
 #include "formats/matrix_json.hpp"
 #include "formats/scenario.hpp"
 #include "formats/trace.hpp"
@@ -78,6 +79,7 @@ std::string matrix_of(const std::vector<std::string>& files, const std::string& 
 struct SimulateOptions {
   std::vector<std::string> files;
   std::string trace_file;
+  std::string svg_file, vcd_file;  // the run's timing diagram and value change dump
   bool trace_changes = false;
   std::string format = "text";
   std::string out = "-";
@@ -118,6 +120,7 @@ int run_simulate(const SimulateOptions& o, bool quiet) {
   check_writable(o.out);
   const bool tracing = !o.trace_file.empty();
   if (tracing) check_writable(o.trace_file);
+  TracePictures pictures(o.svg_file, o.vcd_file);  // checks its destinations now, before the run
   if (o.trace_changes && !tracing) throw std::invalid_argument("simulate: --trace-changes needs --trace FILE");
   if (tracing && o.trace_file == o.out && o.out != "-")
     throw std::invalid_argument("simulate: --trace and -o name the same file");
@@ -166,6 +169,7 @@ int run_simulate(const SimulateOptions& o, bool quiet) {
     const model::CycleInput& in = ex.cycles[c];
     rt.step(in);
     rt.snapshot(snap);
+    pictures.record(in, snap);
     refused_total += static_cast<std::uint64_t>(rt.commands_refused());
     if (!json_format) timing.record(c + 1, in, snap);
     if (trace) {
@@ -174,6 +178,8 @@ int run_simulate(const SimulateOptions& o, bool quiet) {
       trace->add_cycle(c, ex.step_of_cycle[c], in, rt.commands_refused(), snap, output_values);
     }
     std::vector<formats::ExpectationOutcome> outcomes = checker.after_cycle(c, values);
+    for (const auto& outcome : outcomes)
+      if (!outcome.ok) pictures.mark(outcome, m.cycle_ms);
     if (json_format) {
       // The step ends with this cycle when its expectations are due now.
       for (const auto& check : ex.checks) {
@@ -204,6 +210,8 @@ int run_simulate(const SimulateOptions& o, bool quiet) {
   }
 
   const bool pass = checker.failed() == 0;
+  std::ostringstream pictures_named;  // one line per file written
+  pictures.write(m, "Scenario " + scenario_file + " on matrix " + m.name, pictures_named);
   if (json_format) {
     nlohmann::ordered_json j;
     j["format"] = "cemv-simulation/1";
@@ -227,7 +235,7 @@ int run_simulate(const SimulateOptions& o, bool quiet) {
          << " cycles, " << checker.checked() << " expectations, " << checker.failed() << " failed";
     if (refused_total)
       text << ", " << refused_total << (refused_total == 1 ? " command" : " commands") << " refused";
-    text << "\n" << (pass ? "PASS" : "FAIL") << "\n";
+    text << "\n" << pictures_named.str() << (pass ? "PASS" : "FAIL") << "\n";
     result.write(text.str());
   }
   // The trace is complete before the result is: a reader that sees PASS finds
@@ -260,6 +268,8 @@ void add_simulate_commands(CLI::App& app, Context& ctx) {
   cmd->add_option("--format", o->format, "text (default: failures, timing table, summary) or json "
                                          "(cemv-simulation/1, docs/scenario.md)")
       ->check(CLI::IsMember({"text", "json"}));
+  cmd->add_option("--svg", o->svg_file, "write the run's timing diagram as SVG")->type_name("FILE");
+  cmd->add_option("--vcd", o->vcd_file, "write the run as a value change dump (VCD, IEEE 1364)")->type_name("FILE");
   cmd->add_option("-o,--output", o->out, "Write the result here instead of standard output");
   add_quiet_flag(cmd, ctx);
   cmd->callback([o, &ctx]() { ctx.exit_code = run_simulate(*o, ctx.quiet); });

@@ -42,5 +42,6 @@ int mutation_report(const model::Matrix& m, const testgen::TestSuite& suite, con
 void add_mutate_commands(CLI::App& app, Context& ctx);    // mutate
 void add_diff_commands(CLI::App& app, Context& ctx);      // diff
 void add_response_commands(CLI::App& app, Context& ctx);  // response
+void add_evidence_commands(CLI::App& app, Context& ctx);  // evidence
 
 }  // namespace cemv::cli

@@ -65,6 +65,8 @@ void details(std::ostringstream& out, const PropertyResult& p, const CheckReport
     if (p.verdict == PropertyVerdict::Reachable && p.violation_cycle >= 0)
       out << "    witnessed at cycle " << p.violation_cycle + 1 << "\n";
     if (!p.scenario_file.empty()) out << "    scenario: " << p.scenario_file << "\n";
+    if (!p.diagram_file.empty()) out << "    diagram: " << p.diagram_file << "\n";
+    if (!p.vcd_file.empty()) out << "    waveforms: " << p.vcd_file << "\n";
     if (!p.timing_table.empty()) indented(out, p.timing_table, "    ");
   }
 }

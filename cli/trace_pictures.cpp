@@ -1,0 +1,42 @@
+#include "cli/trace_pictures.hpp"
+
+#include "cli/output.hpp"
+#include "reports/vcd.hpp"
+
+namespace cemv::cli {
+
+TracePictures::TracePictures(std::string svg_file, std::string vcd_file)
+    : svg_file_(std::move(svg_file)), vcd_file_(std::move(vcd_file)) {
+  if (!svg_file_.empty()) check_writable(svg_file_);
+  if (!vcd_file_.empty()) check_writable(vcd_file_);
+}
+
+void TracePictures::record(const model::CycleInput& in, const std::vector<int>& snapshot) {
+  if (svg_file_.empty() && vcd_file_.empty()) return;
+  trace_.inputs.push_back(in);
+  trace_.observables.push_back(snapshot);
+}
+
+void TracePictures::mark(const formats::ExpectationOutcome& failed, std::uint32_t cycle_ms) {
+  std::string text = failed.failure_text(cycle_ms);
+  // "FAIL steps[1] (cycle 21, t = 2000 ms): WHAT": the diagram says the cycle itself.
+  auto colon = text.find("): ");
+  marks_.push_back({failed.cycle, "expectation failed: " + (colon == std::string::npos ? text : text.substr(colon + 3))});
+}
+
+void TracePictures::write(const model::Matrix& m, const std::string& title, std::ostream& out) const {
+  if (!svg_file_.empty()) {
+    reports::TimingDiagram d;
+    d.title = title;
+    d.all_changing = true;
+    d.marks = marks_;
+    write_output(svg_file_, reports::timing_svg(m, trace_, d));
+    out << "diagram: " << svg_file_ << "\n";
+  }
+  if (!vcd_file_.empty()) {
+    write_output(vcd_file_, reports::vcd(m, trace_, {"", CEMV_VERSION, title}));
+    out << "waveforms: " << vcd_file_ << "\n";
+  }
+}
+
+}  // namespace cemv::cli

@@ -1,0 +1,35 @@
+// The pictures of one replayed run (`cemv simulate --svg FILE --vcd FILE`):
+// records the cycles as the replay goes and, at the end, writes the timing
+// diagram and the value change dump through cli/output.hpp (docs/reports.md).
+#pragma once
+
+#include <cstddef>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "checker/result.hpp"
+#include "formats/scenario.hpp"
+#include "model/matrix.hpp"
+#include "reports/timing_svg.hpp"
+
+namespace cemv::cli {
+
+class TracePictures {
+ public:
+  // Empty names: nothing is recorded or written. The destinations are checked
+  // here, before the run.
+  TracePictures(std::string svg_file, std::string vcd_file);
+  void record(const model::CycleInput& in, const std::vector<int>& snapshot);
+  // A failed expectation, marked at its cycle.
+  void mark(const formats::ExpectationOutcome& failed, std::uint32_t cycle_ms);
+  // Writes the files and names them on `out`, one line each.
+  void write(const model::Matrix& m, const std::string& title, std::ostream& out) const;
+
+ private:
+  std::string svg_file_, vcd_file_;
+  checker::ConcreteTrace trace_;
+  std::vector<reports::TimingMark> marks_;
+};
+
+}  // namespace cemv::cli

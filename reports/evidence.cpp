@@ -1,0 +1,271 @@
+#include "reports/evidence.hpp"
+
+#include <ctime>
+#include <set>
+#include <type_traits>
+#include <sstream>
+
+#include "reports/check_report.hpp"
+#include "reports/timing_svg.hpp"
+
+namespace cemv::reports {
+
+namespace {
+
+std::string esc(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+std::string base64(const std::string& s) {
+  static const char* t = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  std::size_t i = 0;
+  for (; i + 2 < s.size(); i += 3) {
+    unsigned v = (unsigned char)s[i] << 16 | (unsigned char)s[i + 1] << 8 | (unsigned char)s[i + 2];
+    out += {t[v >> 18], t[(v >> 12) & 63], t[(v >> 6) & 63], t[v & 63]};
+  }
+  if (i + 1 == s.size()) {
+    unsigned v = (unsigned char)s[i] << 16;
+    out += {t[v >> 18], t[(v >> 12) & 63], '=', '='};
+  } else if (i + 2 == s.size()) {
+    unsigned v = (unsigned char)s[i] << 16 | (unsigned char)s[i + 1] << 8;
+    out += {t[v >> 18], t[(v >> 12) & 63], t[(v >> 6) & 63], '='};
+  }
+  return out;
+}
+
+// Colours after the manual's online view (10.6.1): red for "Active - Alarm
+// profile" (here: stored trips and elements a counterexample involves),
+// yellow for "Bypass, simulation", orange for "Override", grey where nothing
+// is processed ("Comment only", "X", "*").
+const char* kCss = R"(
+body{font-family:"DejaVu Sans",Arial,Helvetica,sans-serif;font-size:11pt;color:#111827;margin:24px}
+h1{font-size:18pt;margin:0 0 4px}h2{font-size:14pt;border-bottom:2px solid #1f2937;padding-bottom:2px;margin-top:28px}
+h3{font-size:12pt;margin:18px 0 6px}.meta{color:#374151}
+table{border-collapse:collapse;margin:6px 0}th,td{border:1px solid #9ca3af;padding:3px 6px;vertical-align:top;text-align:left}
+th{background:#f3f4f6}.num{text-align:right}
+.pagehead,.pagefoot{font-size:8.5pt;color:#4b5563}
+.pagehead{border-bottom:1px solid #d1d5db;margin-bottom:12px;padding-bottom:4px}
+.pagefoot{border-top:1px solid #d1d5db;margin-top:24px;padding-top:4px}
+.ok{background:#dcfce7}.bad{background:#fee2e2}.warn{background:#fef3c7}.unk{background:#e5e7eb}
+table.grid td,table.grid th{text-align:center;min-width:22px;padding:2px 4px;font-size:9.5pt}
+table.grid td.cause,table.grid th.effect{text-align:left}
+th.effect{writing-mode:vertical-rl;transform:rotate(180deg);white-space:nowrap;height:auto}
+.t-N{background:#dbeafe}.t-S{background:#fecaca}.t-V{background:#fed7aa}.t-R{background:#bbf7d0}
+.t-X,.comment{background:#e5e7eb;color:#6b7280}.t-Note{color:#6b7280}
+.bypass{box-shadow:inset 4px 0 0 #facc15}.involved{outline:2px solid #dc2626;outline-offset:-2px}
+.legend span{display:inline-block;padding:1px 6px;margin-right:6px;border:1px solid #9ca3af}
+img.diagram{max-width:100%;border:1px solid #d1d5db}
+pre{white-space:pre-wrap;font-size:9pt;background:#f9fafb;border:1px solid #e5e7eb;padding:6px}
+@media screen{.pagefoot.print,.pagehead.print{display:none}}
+@media print{
+ @page{size:A4;margin:18mm 12mm 16mm 12mm}
+ body{margin:0;font-size:9.5pt}
+ .pagehead.print{position:fixed;top:-12mm;left:0;right:0;border:none}
+ .pagefoot.print{position:fixed;bottom:-11mm;left:0;right:0;border:none}
+ .pagehead.screen,.pagefoot.screen{display:none}
+ section.page{break-before:page}
+ h2,h3{break-after:avoid}tr,img,.cex{break-inside:avoid}
+}
+)";
+
+const char* verdict_class(checker::PropertyVerdict v) {
+  switch (v) {
+    case checker::PropertyVerdict::Proved:
+    case checker::PropertyVerdict::Reachable: return "ok";
+    case checker::PropertyVerdict::Unknown: return "unk";
+    default: return "bad";
+  }
+}
+
+class Writer {
+ public:
+  Writer(const model::Matrix& m, const EvidenceInputs& in) : m_(m), in_(in) {
+    for (const auto& p : in.check.properties)
+      if (p.verdict == checker::PropertyVerdict::Falsified)
+        for (const auto& e : property_elements(p)) involved_.insert(e);
+  }
+
+  std::string html() {
+    std::string stamp = "matrix " + m_.name + " · signature " + in_.check.matrix_signature + " · cemv " +
+                        in_.check.tool_version + " · " + in_.date;
+    o_ << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>Evidence: "
+       << esc(m_.name) << "</title>\n<style>" << kCss << "</style>\n</head>\n<body>\n";
+    o_ << "<div class=\"pagehead print\">Evidence report · " << esc(stamp) << "</div>\n";
+    o_ << "<div class=\"pagefoot print\">" << esc(stamp) << "</div>\n";
+    o_ << "<div class=\"pagehead screen\">" << esc(stamp) << "</div>\n";
+    summary();
+    grid();
+    validation();
+    properties();
+    tests();
+    o_ << "<div class=\"pagefoot screen\">" << esc(stamp) << "</div>\n</body>\n</html>\n";
+    return o_.str();
+  }
+
+ private:
+  void summary() {
+    o_ << "<section>\n<h1>Evidence report: " << esc(m_.name) << "</h1>\n";
+    if (!m_.title.empty()) o_ << "<p class=\"meta\">" << esc(m_.title) << "</p>\n";
+    std::size_t errors = 0, warnings = 0;
+    for (const auto& d : in_.validation) (d.severity == model::Severity::Error ? errors : warnings)++;
+    auto counts = verdict_counts(in_.check);
+    o_ << "<table>\n";
+    row("Matrix file", esc(in_.matrix_file));
+    row("Matrix signature (SHA-256 of the canonical form)", "<code>" + esc(in_.check.matrix_signature) + "</code>");
+    row("Size", std::to_string(m_.causes.size()) + " causes, " + std::to_string(m_.effects.size()) +
+                    " effects, " + std::to_string(m_.intersections.size()) + " intersections; cycle " +
+                    std::to_string(m_.cycle_ms) + " ms");
+    row("Validation (11.5)", std::to_string(errors) + " errors, " + std::to_string(warnings) + " warnings");
+    std::string v;
+    for (std::size_t i = 0; i < counts.size(); ++i)
+      if (counts[i])
+        v += (v.empty() ? "" : ", ") + std::to_string(counts[i]) + " " +
+             verdict_name(static_cast<checker::PropertyVerdict>(i));
+    row("Properties", std::to_string(in_.check.properties.size()) + (v.empty() ? "" : ": " + v));
+    std::string files;
+    for (const auto& f : in_.check.property_files) files += (files.empty() ? "" : ", ") + esc(f);
+    if (in_.check.standard) files += std::string(files.empty() ? "" : ", ") + "the standard properties";
+    row("Property sources", files.empty() ? "none given" : files);
+    row("Test generation", in_.coverage_json.empty() ? "no test generation results given"
+                                                     : "from " + esc(in_.coverage_file));
+    row("Tool", "cemv " + esc(in_.check.tool_version));
+    row("Date", esc(in_.date));
+    o_ << "</table>\n</section>\n";
+  }
+
+  void row(const std::string& k, const std::string& v) { o_ << "<tr><th>" << k << "</th><td>" << v << "</td></tr>\n"; }
+
+  void grid() {
+    o_ << "<section class=\"page\">\n<h2>1. Cause &amp; effect matrix</h2>\n";
+    o_ << "<p class=\"legend\">Intersections: <span class=\"t-N\">N normal</span><span class=\"t-S\">S stored"
+          "</span><span class=\"t-V\">V override</span><span class=\"t-R\">R reset</span><span class=\"t-X\">X "
+          "not specified</span>* note only. Rows and columns: <span class=\"bypass\">bypass possible</span>"
+          "<span class=\"comment\">comment only</span><span class=\"involved\">in a counterexample</span></p>\n";
+    o_ << "<table class=\"grid\">\n<tr><th>Cause</th><th>Tags</th>";
+    for (const auto& e : m_.effects)
+      o_ << "<th class=\"effect " << element_class(e) << "\" title=\"" << esc(e.description) << "\">E"
+         << e.id << " " << esc(e.name) << "</th>";
+    o_ << "</tr>\n";
+    for (const auto& c : m_.causes) {
+      o_ << "<tr><td class=\"cause " << element_class(c) << "\" title=\"" << esc(c.description) << "\">C" << c.id
+         << " " << esc(c.name) << "</td><td>";
+      for (std::size_t i = 0; i < c.tags.size(); ++i) o_ << (i ? ", " : "") << esc(c.tags[i].name);
+      o_ << "</td>";
+      for (const auto& e : m_.effects) {
+        const auto* x = m_.find_intersection(c.id, e.id);
+        if (!x) {
+          o_ << "<td></td>";
+          continue;
+        }
+        std::string t = model::to_string(x->type);
+        o_ << "<td class=\"t-" << (x->type == model::IntersectionType::Note ? "Note" : t) << "\">" << esc(t);
+        if (x->xoon) o_ << "<sub>" << *x->xoon << "</sub>";
+        o_ << "</td>";
+      }
+      o_ << "</tr>\n";
+    }
+    o_ << "</table>\n</section>\n";
+  }
+
+  template <class E>
+  std::string element_class(const E& e) const {
+    std::string cls;
+    std::string key = (std::is_same_v<E, model::Cause> ? "cause[" : "effect[") + std::to_string(e.id) + "]";
+    if constexpr (std::is_same_v<E, model::Cause>) {
+      if (e.function == model::CauseFunction::Comment) cls += " comment";
+      if (e.bypass_tag || e.soft_bypass.allowed) cls += " bypass";
+    } else {
+      if (e.function == model::EffectFunction::Comment) cls += " comment";
+      if (e.bypass_tag || e.soft_bypass_allowed) cls += " bypass";
+    }
+    if (involved_.count(key)) cls += " involved";
+    return cls;
+  }
+
+  void validation() {
+    o_ << "<section class=\"page\">\n<h2>2. Validation (11.5)</h2>\n";
+    if (in_.validation.empty()) {
+      o_ << "<p class=\"ok\">No findings: the matrix passes every validation rule.</p>\n</section>\n";
+      return;
+    }
+    o_ << "<table>\n<tr><th>Severity</th><th>Rule</th><th>Element</th><th>Section</th><th>Finding</th></tr>\n";
+    for (const auto& d : in_.validation)
+      o_ << "<tr class=\"" << (d.severity == model::Severity::Error ? "bad" : "warn") << "\"><td>"
+         << model::to_string(d.severity) << "</td><td>" << esc(d.rule) << "</td><td>" << esc(d.element)
+         << "</td><td>" << esc(d.section) << "</td><td>" << esc(d.message) << "</td></tr>\n";
+    o_ << "</table>\n</section>\n";
+  }
+
+  void properties() {
+    o_ << "<section class=\"page\">\n<h2>3. Properties</h2>\n";
+    if (in_.check.properties.empty()) {
+      o_ << "<p>No properties given.</p>\n</section>\n";
+      return;
+    }
+    o_ << "<p>Every answer is checked independently before it is reported: counterexamples and witnesses are "
+          "replayed on the reference runtime and judged by the concrete property evaluator; proofs are "
+          "re-proved by a fresh solver (docs/checker.md).</p>\n";
+    o_ << "<table>\n<tr><th>Property</th><th>Kind</th><th>Verdict</th><th>Method</th><th>Source</th></tr>\n";
+    for (const auto& p : in_.check.properties) {
+      o_ << "<tr><td><b>" << esc(p.name) << "</b>";
+      if (!p.description.empty()) o_ << "<br>" << esc(p.description);
+      o_ << "</td><td>" << esc(p.kind) << "</td><td class=\"" << verdict_class(p.verdict) << "\">"
+         << esc(outcome_text(p)) << "</td><td>" << esc(p.method.empty() ? "-" : p.method) << "</td><td>"
+         << esc(p.file.empty() ? "standard" : p.file + ":" + std::to_string(p.line)) << "</td></tr>\n";
+    }
+    o_ << "</table>\n";
+    for (const auto& p : in_.check.properties) {
+      if (!p.trace) continue;
+      o_ << "<div class=\"cex\">\n<h3>" << esc(p.name) << ": "
+         << (p.verdict == checker::PropertyVerdict::Reachable ? "witness" : "counterexample") << "</h3>\n";
+      o_ << "<p>" << esc(outcome_text(p)) << ", " << p.trace->inputs.size() << " cycles.</p>\n";
+      o_ << "<img class=\"diagram\" alt=\"timing diagram of " << esc(p.name)
+         << "\" src=\"data:image/svg+xml;base64," << base64(timing_svg(m_, *p.trace, diagram_of(p))) << "\">\n";
+      if (!p.timing_table.empty()) o_ << "<pre>" << esc(p.timing_table) << "</pre>\n";
+      o_ << "</div>\n";
+    }
+    o_ << "</section>\n";
+  }
+
+  void tests() {
+    o_ << "<section class=\"page\">\n<h2>4. Test generation: coverage and mutation figures</h2>\n";
+    if (in_.coverage_json.empty())
+      o_ << "<p class=\"warn\">No test generation results given (<code>cemv evidence --coverage FILE</code> "
+            "adds them).</p>\n";
+    else
+      o_ << "<p>From <code>" << esc(in_.coverage_file) << "</code>:</p>\n<pre>" << esc(in_.coverage_json)
+         << "</pre>\n";
+    o_ << "</section>\n";
+  }
+
+  const model::Matrix& m_;
+  const EvidenceInputs& in_;
+  std::set<std::string> involved_;
+  std::ostringstream o_;
+};
+
+}  // namespace
+
+std::string utc_date(long long epoch_seconds) {
+  std::time_t t = static_cast<std::time_t>(epoch_seconds);
+  std::tm tm{};
+  gmtime_r(&t, &tm);
+  char buf[40];
+  std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M UTC", &tm);
+  return buf;
+}
+
+std::string evidence_html(const model::Matrix& m, const EvidenceInputs& in) { return Writer(m, in).html(); }
+
+}  // namespace cemv::reports

@@ -1,0 +1,49 @@
+// Timing diagrams of a concrete run as self-contained SVG (docs/reports.md,
+// "Timing diagrams"), drawn the way the manual explains time behaviour
+// (chapter 13): one row per signal, time running to the right. Digital signals
+// are waveforms, counts and votings are buses with their value written in,
+// analog inputs are stepped plots with the limit, prewarning and hysteresis
+// lines of every cause that reads them, timers are bars that grow while they
+// run, operator commands are markers, and the cycle of a violation or of a
+// failed expectation is marked. Long stretches in which nothing drawn changes
+// are folded into one narrow column that says how many cycles it hides, so
+// runs of 3 to 3,000 cycles stay readable. No scripts, no external resources;
+// the same run always gives the same bytes.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "checker/result.hpp"
+#include "model/matrix.hpp"
+
+namespace cemv::reports {
+
+// A marked cycle: a violation, a witness, a failed expectation.
+struct TimingMark {
+  std::size_t cycle = 0;  // 0-based
+  std::string label;      // "violated: req5.stored_holds"
+};
+
+struct TimingDiagram {
+  std::string title;
+  // Observables drawn whether or not they change, in this order (keys as
+  // model::observables spells them). Unknown keys are ignored.
+  std::vector<std::string> shown;
+  // Also draw every other observable that changes during the run (after the
+  // shown ones, in model::observables order). Input tags are drawn when they
+  // change, always.
+  bool all_changing = false;
+  std::vector<TimingMark> marks;
+};
+
+// The diagram of `trace` (inputs indexed by model::InputTable(m), observables
+// in model::observables(m) order).
+std::string timing_svg(const model::Matrix& m, const checker::ConcreteTrace& trace, const TimingDiagram& d);
+
+// The diagram of one property result with a trace (a counterexample or a
+// witness): its inputs that change, the signals it reads, the violation marked.
+TimingDiagram diagram_of(const checker::PropertyResult& p);
+
+}  // namespace cemv::reports

@@ -1,0 +1,233 @@
+// The timing diagram (SVG) and value change dump (VCD) writers on a real run:
+// an example scenario replayed on the reference runtime. Golden files under
+// golden/ pin the exact bytes (CEMV_UPDATE_GOLDEN=1 rewrites them; review the
+// diff); the VCD is also read back by a small reader here and must give every
+// value of the run at every cycle.
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "formats/matrix_json.hpp"
+#include "formats/scenario.hpp"
+#include "model/vocabulary.hpp"
+#include "reports/timing_svg.hpp"
+#include "reports/vcd.hpp"
+#include "runtime/runtime.hpp"
+
+namespace {
+
+using cemv::checker::ConcreteTrace;
+namespace model = cemv::model;
+namespace reports = cemv::reports;
+
+const std::string kExample = std::string(CEMV_SOURCE_DIR) + "/examples/tank-overfill/";
+
+ConcreteTrace run(const model::Matrix& m, const std::vector<model::CycleInput>& cycles) {
+  cemv::runtime::Runtime rt(m);
+  ConcreteTrace t;
+  std::vector<int> snap;
+  for (const auto& in : cycles) {
+    rt.step(in);
+    rt.snapshot(snap);
+    t.inputs.push_back(in);
+    t.observables.push_back(snap);
+  }
+  return t;
+}
+
+ConcreteTrace scenario_run(const model::Matrix& m, const std::string& file) {
+  auto sc = cemv::formats::load_scenario(kExample + file, m);
+  return run(m, cemv::formats::expand_scenario(sc, m).cycles);
+}
+
+void golden(const std::string& name, const std::string& actual) {
+  std::string path = std::string(CEMV_GOLDEN_DIR) + "/" + name;
+  if (std::getenv("CEMV_UPDATE_GOLDEN")) {
+    std::ofstream(path, std::ios::binary) << actual;
+    return;
+  }
+  std::ifstream in(path, std::ios::binary);
+  ASSERT_TRUE(in) << path << " missing (CEMV_UPDATE_GOLDEN=1 writes it)";
+  std::stringstream expected;
+  expected << in.rdbuf();
+  EXPECT_EQ(expected.str(), actual) << "differs from " << path;
+}
+
+std::size_t count(const std::string& s, const std::string& what) {
+  std::size_t n = 0;
+  for (auto p = s.find(what); p != std::string::npos; p = s.find(what, p + 1)) ++n;
+  return n;
+}
+
+TEST(TimingSvg, ScenarioRunMatchesGolden) {
+  model::Matrix m = cemv::formats::load_valid_matrix(kExample + "matrix.json", "drawn");
+  ConcreteTrace t = scenario_run(m, "scenario-1-overfill-trip.json");
+  reports::TimingDiagram d;
+  d.title = "scenario-1-overfill-trip";
+  d.all_changing = true;
+  d.marks.push_back({t.inputs.size() - 1, "expectation failed: example mark"});
+  std::string svg = reports::timing_svg(m, t, d);
+  EXPECT_EQ(svg, reports::timing_svg(m, t, d));  // deterministic
+  EXPECT_EQ(svg.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\"", 0), 0u);
+  EXPECT_EQ(svg.find("<script"), std::string::npos);
+  EXPECT_EQ(svg.find("href"), std::string::npos);  // self-contained
+  // The analog level transmitters with the cause's limit, prewarning and release lines.
+  EXPECT_NE(svg.find(">LT_100A<"), std::string::npos);
+  EXPECT_NE(svg.find("high limit 90"), std::string::npos);
+  EXPECT_NE(svg.find("prewarning 85"), std::string::npos);
+  EXPECT_GE(count(svg, "class=\"bad\""), 1u);    // LT_100B's bad quality
+  EXPECT_GE(count(svg, "class=\"timer\""), 1u);  // the 2 s on-delay running
+  EXPECT_EQ(count(svg, "class=\"mark\""), 1u);
+  golden("timing_scenario1.svg", svg);
+}
+
+// 3,000 cycles of which only a handful change: the quiet stretches fold and
+// the picture keeps a sensible width, and says what it folded.
+TEST(TimingSvg, LongRunFoldsConstantStretches) {
+  model::Matrix m = cemv::formats::load_valid_matrix(kExample + "matrix.json", "drawn");
+  model::InputTable table(m);
+  std::vector<model::CycleInput> cycles(3000, model::default_cycle_input(m));
+  for (std::size_t k = 1500; k < 1600; ++k)
+    for (const char* tag : {"LT_100A", "LT_100B", "LT_100C"}) cycles[k].tags[*table.find(tag)].value = 95.0f;
+  ConcreteTrace t = run(m, cycles);
+  reports::TimingDiagram d;
+  d.title = "long";
+  d.shown = {"cause[1].active", "cause[1].timer_running"};
+  d.marks.push_back({1520, "violated: example"});
+  std::string svg = reports::timing_svg(m, t, d);
+  auto w = svg.find("width=\"");
+  double width = std::stod(svg.substr(w + 7));
+  EXPECT_LT(width, 2500.0);
+  EXPECT_NE(svg.find("3000 cycles of 100 ms"), std::string::npos);
+  EXPECT_NE(svg.find("Folded: cycles 4-1499 (1496 cycles"), std::string::npos);
+  EXPECT_NE(svg.find("unchanged cycles folded"), std::string::npos);
+  golden("timing_long.svg", svg);
+}
+
+// ---- VCD ------------------------------------------------------------------
+
+// A small reader of what the writer emits: variables with their scope path,
+// and the value of each code at each time.
+struct VcdFile {
+  std::map<std::string, std::string> code_of;  // "TANK.inputs.LT_100A" -> code
+  std::map<std::string, std::string> type_of;  // code -> "wire"/"real"/"integer"
+  std::map<std::uint64_t, std::map<std::string, std::string>> changes;  // time -> code -> value
+  std::string timescale;
+
+  explicit VcdFile(const std::string& text) {
+    std::istringstream in(text);
+    std::vector<std::string> scope;
+    std::string tok;
+    bool defs = true;
+    std::uint64_t now = 0;
+    while (in >> tok) {
+      if (defs) {
+        if (tok == "$scope") {
+          std::string kind, name;
+          in >> kind >> name >> tok;
+          scope.push_back(name);
+        } else if (tok == "$upscope") {
+          in >> tok;
+          scope.pop_back();
+        } else if (tok == "$var") {
+          std::string type, size, code, name, end;
+          in >> type >> size >> code >> name >> end;
+          EXPECT_EQ(end, "$end");
+          std::string path;
+          for (const auto& s : scope) path += s + ".";
+          code_of[path + name] = code;
+          type_of[code] = type;
+        } else if (tok == "$timescale") {
+          std::string a;
+          while (in >> a && a != "$end") timescale += (timescale.empty() ? "" : " ") + a;
+        } else if (tok == "$enddefinitions") {
+          in >> tok;
+          defs = false;
+        } else if (tok[0] == '$') {
+          while (tok != "$end" && in >> tok) {}
+        }
+        continue;
+      }
+      if (tok == "$dumpvars" || tok == "$end") continue;
+      if (tok[0] == '#') {
+        now = std::stoull(tok.substr(1));
+      } else if (tok[0] == 'b' || tok[0] == 'r') {
+        std::string code;
+        in >> code;
+        changes[now][code] = tok;
+      } else {
+        changes[now][tok.substr(1)] = tok.substr(0, 1);
+      }
+    }
+  }
+
+  // The value of `code` at time `t` (the last change at or before t).
+  std::string at(const std::string& code, std::uint64_t t) const {
+    std::string v = "?";
+    for (const auto& [time, vals] : changes) {
+      if (time > t) break;
+      if (auto it = vals.find(code); it != vals.end()) v = it->second;
+    }
+    return v;
+  }
+};
+
+TEST(Vcd, ReadsBackEveryValueOfTheRun) {
+  model::Matrix m = cemv::formats::load_valid_matrix(kExample + "matrix.json", "dumped");
+  ConcreteTrace t = scenario_run(m, "scenario-1-overfill-trip.json");
+  std::string text = reports::vcd(m, t, {"", "test", "scenario 1"});
+  EXPECT_EQ(text, reports::vcd(m, t, {"", "test", "scenario 1"}));
+  VcdFile f(text);
+  EXPECT_EQ(f.timescale, "1 ms");
+  model::InputTable table(m);
+  const std::string top = m.name + ".";
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    const auto& tag = table.tags()[i];
+    ASSERT_TRUE(f.code_of.count(top + "inputs." + tag.name)) << tag.name;
+    std::string code = f.code_of[top + "inputs." + tag.name];
+    for (std::size_t k = 0; k < t.inputs.size(); ++k) {
+      std::string v = f.at(code, k * m.cycle_ms);
+      if (tag.kind == model::TagKind::Analog) {
+        ASSERT_EQ(v[0], 'r');
+        EXPECT_EQ(std::stof(v.substr(1)), t.inputs[k].tags[i].value) << tag.name << " cycle " << k + 1;
+      } else {
+        EXPECT_EQ(v, t.inputs[k].tags[i].value != 0 ? "1" : "0") << tag.name << " cycle " << k + 1;
+      }
+    }
+  }
+  // Every status field, in its element's scope.
+  const auto obs = model::observables(m);
+  std::size_t checked = 0;
+  for (std::size_t i = 0; i < obs.size(); ++i) {
+    const auto& o = obs[i];
+    std::string scope_prefix = o.kind == model::Node::Kind::Cause ? "cause_" : "effect_";
+    std::string found;
+    for (const auto& [path, code] : f.code_of) {
+      std::string want_scope = top + scope_prefix + std::to_string(o.id) + "_";
+      if (path.rfind(want_scope, 0) != 0) continue;
+      std::string leaf = path.substr(path.rfind('.') + 1);
+      if (o.field != "tag" ? leaf == o.field
+                           : leaf == "out_" + m.find_effect(o.id)->tags[std::size_t(o.tag - 1)].name)
+        found = code;
+    }
+    ASSERT_FALSE(found.empty()) << o.key;
+    for (std::size_t k = 0; k < t.inputs.size(); ++k) {
+      std::string v = f.at(found, k * m.cycle_ms);
+      int expected = t.observables[k][i];
+      int actual = v[0] == 'b' ? std::stoi(v.substr(1), nullptr, 2) : std::stoi(v);
+      EXPECT_EQ(actual, o.type == model::FieldType::Bool ? (expected != 0) : expected) << o.key << " cycle " << k + 1;
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 100u);
+  // A cause's scope also shows its input tags, under the same code.
+  EXPECT_EQ(f.code_of[top + "cause_1_LT100_HH.in_LT_100A"], f.code_of[top + "inputs.LT_100A"]);
+  golden("scenario1.vcd", text);
+}
+
+}  // namespace
