@@ -52,33 +52,8 @@ const CommandInput* Encoding::find_command(const model::Command& c) const {
 
 std::vector<model::Command> Encoding::canonical_commands(
     const std::vector<model::Command>& cmds) const {
-  std::vector<std::pair<std::size_t, model::Command>> picked;
-  auto add = [&](const model::Command& c) {
-    const CommandInput* ci = find_command(c);
-    if (!ci) return;
-    std::size_t pos = static_cast<std::size_t>(ci - commands.data());
-    for (auto& p : picked)
-      if (p.first == pos) {
-        p.second = c;  // a repeat: the last value wins
-        return;
-      }
-    picked.emplace_back(pos, c);
-  };
-  for (const auto& c : cmds) {
-    if (c.op == model::CommandOp::ClearAlarms && c.cause != 0 && c.effect != 0) {
-      model::Command a = c, b = c;  // O.10: both named, both cleared
-      a.effect = 0;
-      b.cause = 0;
-      add(a);
-      add(b);
-    } else {
-      add(c);
-    }
-  }
-  std::sort(picked.begin(), picked.end(),
-            [](const auto& a, const auto& b) { return a.first < b.first; });
-  std::vector<model::Command> out;
-  for (auto& p : picked) out.push_back(p.second);
+  std::vector<model::Command> out = order.canonical(cmds);
+  std::erase_if(out, [&](const model::Command& c) { return find_command(c) == nullptr; });
   return out;
 }
 
@@ -356,42 +331,39 @@ void Builder::build_commands() {
   commands_without_interplay();
 }
 
-// The simulatable tags of the cone (O.8): external cause input tags in
-// InputTable order, then output tags by effect id and position.
+// The simulatable tags of the cone (O.8), in the model's order
+// (model::CommandOrder::simulatable_tags), so that a slice processes its
+// commands in the order of the whole matrix.
 void Builder::collect_simulations() {
-  std::vector<std::pair<std::size_t, std::string>> inputs;
+  std::set<std::string> read, written;  // tag keys
   for (const auto* cz : causes_)
     for (const auto& t : cz->tags) {
       if (model::parse_internal_ref(t.name)) continue;
       std::string key = model::tag_key(t.name);
       if (cz->mutually_locked_maintenance) readers_[key].push_back(cz);
-      auto idx = *enc_.inputs.find(t.name);
-      if (std::find_if(inputs.begin(), inputs.end(), [&](auto& p) { return p.first == idx; }) ==
-          inputs.end())
-        inputs.emplace_back(idx, key);
+      read.insert(key);
     }
-  std::sort(inputs.begin(), inputs.end());
-  auto add_sim = [&](const std::string& key, const std::string& name, bool analog, bool output) {
-    if (sims_.count(key)) return;
+  for (const auto* ef : effects_)
+    for (const auto& t : ef->tags) {
+      std::string key = model::tag_key(t.name);
+      if (ef->mutually_locked_maintenance) writers_[key].push_back(ef);
+      written.insert(key);
+    }
+  for (const auto& name : enc_.order.simulatable_tags()) {
+    std::string key = model::tag_key(name);
+    bool input = read.count(key) > 0;
+    if (!input && !written.count(key)) continue;
+    auto idx = enc_.inputs.find(name);
+    bool analog = input && idx && enc_.inputs.tags()[*idx].kind == model::TagKind::Analog;
     std::string sp = "sim[" + name + "]";
     z3::sort sort = analog ? fp32_ : c_.bool_sort();
     expr on = bool_state(sp + ".on", false);
     expr val = ts_.make_statevar(sp + ".value", sort);
     ts_.set_init(val, analog ? fconst(0.0f) : B(false));
     // M.2: group deactivation ends every simulation before the commands.
-    sims_.emplace(key, Simulation{name, analog, output, on && !gd_, val, on, val});
+    sims_.emplace(key, Simulation{name, analog, !input, on && !gd_, val, on, val});
     sim_order_.push_back(key);
-  };
-  for (auto& [idx, key] : inputs) {
-    const auto& tag = enc_.inputs.tags()[idx];
-    add_sim(key, tag.name, tag.kind == model::TagKind::Analog, false);
   }
-  for (const auto* ef : effects_)
-    for (const auto& t : ef->tags) {
-      std::string key = model::tag_key(t.name);
-      if (ef->mutually_locked_maintenance) writers_[key].push_back(ef);
-      add_sim(key, t.name, false, true);
-    }
 }
 
 // Tag soft bypass states before the commands (M.2 ends them first).
@@ -1016,6 +988,7 @@ void Builder::finish_previous_refs() {
 
 void Builder::build(const std::vector<Node>& roots) {
   enc_.inputs = model::InputTable(m_);
+  enc_.order = model::CommandOrder(m_);
   enc_.tag_value.assign(enc_.inputs.size(), std::nullopt);
   enc_.tag_bad.assign(enc_.inputs.size(), std::nullopt);
   const auto& order = graph_.evaluation_order();
