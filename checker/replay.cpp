@@ -35,14 +35,7 @@ std::vector<model::CycleInput> cycle_inputs(const Trace& trace, const encoder::E
     }
     for (const auto& ci : enc.commands) {
       if (trace.input(k, name_of(ci.var)).i == 0) continue;
-      model::Command c;
-      c.op = ci.op;
-      c.cause = ci.cause;
-      c.effect = ci.effect;
-      c.tag = ci.tag;
-      c.group = ci.group;
-      c.on = ci.on;
-      c.tag_name = ci.tag_name;
+      model::Command c = ci.command();
       if (ci.value) c.value = number_of(trace.input(k, name_of(*ci.value)));
       in.commands.push_back(c);
     }

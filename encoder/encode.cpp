@@ -16,6 +16,18 @@ using model::Node;
 using z3::expr;
 using detail::Builder;
 
+model::Command CommandInput::command() const {
+  model::Command c;
+  c.op = op;
+  c.cause = cause;
+  c.effect = effect;
+  c.tag = tag;
+  c.group = group;
+  c.on = on;
+  c.tag_name = tag_name;
+  return c;
+}
+
 const CommandInput* Encoding::find_command(const model::Command& c) const {
   for (const auto& ci : commands) {
     if (ci.op != c.op) continue;

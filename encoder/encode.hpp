@@ -30,6 +30,10 @@ struct CommandInput {
   std::string tag_name; // SimulateTag / StopSimulation (empty: stop every simulation)
   z3::expr var;
   std::optional<z3::expr> value;
+
+  // The concrete command this input stands for (value 0: the value input's
+  // value is the trace's, not the encoding's).
+  model::Command command() const;
 };
 
 struct Encoding {

@@ -252,15 +252,7 @@ TEST(Cone, SlicesCreateTheirCommandsInTheMatrixOrder) {
       auto enc = encoder::encode(ctx, m, r);
       std::optional<std::size_t> last;
       for (const auto& ci : enc->commands) {
-        model::Command c;
-        c.op = ci.op;
-        c.cause = ci.cause;
-        c.effect = ci.effect;
-        c.tag = ci.tag;
-        c.group = ci.group;
-        c.on = ci.on;
-        c.tag_name = ci.tag_name;
-        auto rank = order.rank(c);
+        auto rank = order.rank(ci.command());
         ASSERT_TRUE(rank) << "seed " << seed << ": " << ci.var;
         if (last) {
           ASSERT_LT(*last, *rank) << "seed " << seed << ": " << ci.var;
