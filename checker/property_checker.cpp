@@ -10,8 +10,8 @@
 #include "checker/counterexample.hpp"
 #include "checker/engines/bmc.hpp"
 #include "checker/engines/portfolio.hpp"
+#include "checker/property_problem.hpp"
 #include "checker/replay.hpp"
-#include "checker/shrink.hpp"
 #include "checker/support.hpp"
 #include "encoder/encode.hpp"
 #include "formats/matrix_json.hpp"
@@ -157,6 +157,30 @@ Judgement judge(const model::Matrix& m, const properties::PropertyFile& f, const
   return j;
 }
 
+// The input tags a property reads are resolved to positions in the matrix's
+// input table (properties/ast.hpp). A support trial deletes elements, and a
+// deleted bypass, inhibit or reset tag leaves the table, moving the positions
+// after it: rewrite them for the trial matrix. False when a tag the property
+// reads is gone (the element cannot be deleted without changing the property).
+bool remap_inputs(Expr& e, const model::InputTable& from, const model::InputTable& to) {
+  if (e.kind == Expr::Kind::InputValue || e.kind == Expr::Kind::InputBad) {
+    auto index = to.find(from.tags()[e.input].name);
+    if (!index) return false;
+    e.input = *index;
+  }
+  for (auto& a : e.args)
+    if (!remap_inputs(a, from, to)) return false;
+  return true;
+}
+
+bool remap_inputs(properties::PropertyFile& f, properties::Property& p, const model::InputTable& from,
+                  const model::InputTable& to) {
+  bool ok = remap_inputs(p.body, from, to) && remap_inputs(p.trigger, from, to) && remap_inputs(p.response, from, to);
+  for (auto& a : p.assumptions) ok = ok && remap_inputs(a.expr, from, to);
+  for (auto& a : f.assumptions) ok = ok && remap_inputs(a.expr, from, to);
+  return ok;
+}
+
 }  // namespace
 
 PropertyChecker::PropertyChecker(const model::Matrix& m, const properties::PropertyFile& file,
@@ -169,37 +193,18 @@ PropertyChecker::PropertyChecker(const model::Matrix& m, const properties::Prope
   z3::context ctx;
   auto enc = encoder::encode(ctx, m_, roots_);
   has_antecedent_ = properties::compile_monitor(*enc, p_, file_.assumptions).antecedent.has_value();
+  // Input names are the same in every encoding of this matrix: the cone's
+  // (with the inputs the monitor added) names every input a sliced problem
+  // has; the unsliced retry leaves the others free.
+  preferred_ = plant_at_rest(*enc, m_);
 }
 
 ProblemFactory PropertyChecker::factory(const model::Matrix& m, Goal goal, bool sliced) const {
-  std::vector<model::Node> roots = sliced ? properties::property_roots(p_, file_.assumptions, m)
-                                          : std::vector<model::Node>{};
-  const properties::Property* p = &p_;
-  const properties::PropertyFile* f = &file_;
-  auto modify = options_.modify_encoding;
-  return [m, roots, p, f, goal, modify](z3::context& ctx) {
-    std::shared_ptr<encoder::Encoding> enc = encoder::encode(ctx, m, roots);
-    if (modify) modify(*enc);
-    properties::Monitor mon = properties::compile_monitor(*enc, *p, f->assumptions);
-    // Analog inputs range over the finite single-precision values: what a
-    // scenario can write (docs/scenario.md), so every trace the checker finds
-    // can be replayed and handed over as a file. The encoder already excludes
-    // NaN; the infinities go here.
-    z3::expr assumption = mon.assumption;
-    // (As comparisons with the largest float, which every consumer of the
-    // encoding's terms already interprets.)
-    const z3::expr max = enc->ts.float_const(std::numeric_limits<float>::max());
-    const z3::expr min = enc->ts.float_const(-std::numeric_limits<float>::max());
-    for (const auto& in : enc->ts.inputvars())
-      if (in.var.is_fpa())
-        assumption = assumption && z3::expr(ctx, Z3_mk_fpa_geq(ctx, in.var, min)) &&
-                     z3::expr(ctx, Z3_mk_fpa_leq(ctx, in.var, max));
-    z3::expr good = mon.good;
-    if (goal == Goal::Antecedent) good = mon.antecedent ? !*mon.antecedent : ctx.bool_val(true);
-    if (goal == Goal::Assumptions) good = ctx.bool_val(false);
-    OwnedProblem op{enc, SafetyProblem{&enc->ts, good, assumption}};
-    return op;
-  };
+  ProblemOptions o;
+  o.goal = goal;
+  o.sliced = sliced;
+  o.modify_encoding = options_.modify_encoding;
+  return property_problem(m, file_, p_, o);
 }
 
 ProverResult PropertyChecker::decide(const model::Matrix& m, Goal goal, bool sliced,
@@ -214,17 +219,18 @@ ProverResult PropertyChecker::decide(const model::Matrix& m, Goal goal, bool sli
     limits.max_depth = 0;
     return Bmc{}.prove(op.problem, limits);
   }
-  return Portfolio(factory(m, goal, sliced)).run(limits);
+  PortfolioOptions o;
+  o.preferred = preferred_;
+  return Portfolio(factory(m, goal, sliced), o).run(limits);
 }
 
 bool PropertyChecker::confirm_trace(const ProverResult& r, bool sliced, PropertyResult& out) const {
   z3::context ctx;
   OwnedProblem op = factory(m_, Goal::Property, sliced)(ctx);
   const auto& enc = *std::static_pointer_cast<encoder::Encoding>(op.owner);
-  Limits limits;
-  limits.deadline = std::min(deadline_, Clock::now() + std::chrono::seconds(10));
-  Trace readable = shrink_trace(op.problem, r.cex, plant_at_rest(enc, m_), limits);
-  std::vector<model::CycleInput> inputs = cycle_inputs(readable, enc, m_);
+  // The portfolio has made the trace readable (inputs at rest where the
+  // violation allows) and re-checked it on this problem.
+  std::vector<model::CycleInput> inputs = cycle_inputs(r.cex, enc, m_);
   ConcreteTrace runtime_trace = run_on_runtime(m_, inputs);
   Judgement j = judge(m_, file_, p_, runtime_trace);
   if (!j.violated) {
@@ -283,16 +289,47 @@ PropertyChecker::Vacuity PropertyChecker::vacuity() const {
 
 void PropertyChecker::find_support(PropertyResult& out) const {
   std::vector<Deletion> candidates = candidate_deletions(m_, roots_);
-  auto reprove = [&](const model::Matrix& trial) {
-    if (Clock::now() >= deadline_) return ReproveOutcome::Undecided;
+  const model::InputTable table(m_);
+  // The problem of the property on an edited matrix, its input tags found
+  // again there; nullopt when a tag it reads is gone.
+  struct Trial {
+    properties::PropertyFile file;
+    properties::Property property;
+  };
+  auto prove = [&](const model::Matrix& trial, bool checked) -> std::optional<ProverResult> {
+    auto t = std::make_shared<Trial>(Trial{file_, p_});
+    if (!remap_inputs(t->file, t->property, table, model::InputTable(trial))) return std::nullopt;
     Limits limits;
     limits.deadline = deadline_;
-    ProverResult r = Portfolio(factory(trial, Goal::Property, true)).run(limits);
-    if (r.verdict == Verdict::Proved) return ReproveOutcome::Proved;
-    if (r.verdict == Verdict::Falsified) return ReproveOutcome::NotProved;
-    return ReproveOutcome::Undecided;
+    ProblemOptions o;
+    o.modify_encoding = options_.modify_encoding;
+    PortfolioOptions po;
+    po.preferred = preferred_;
+    // A trial only steers the search: its answer is not reported, so it
+    // skips the re-check and the readable counterexample. The support found
+    // is proved once more below, checked.
+    po.recheck = checked;
+    po.shrink_budget = std::chrono::milliseconds(0);
+    return Portfolio(property_problem(trial, t->file, t->property, o), po).run(limits);
   };
-  out.support = minimal_support(m_, candidates, reprove, out.support_minimal);
+  auto reprove = [&](const model::Matrix& trial) {
+    if (Clock::now() >= deadline_) return ReproveOutcome::Undecided;
+    std::optional<ProverResult> r = prove(trial, false);
+    if (!r || r->verdict == Verdict::Falsified) return ReproveOutcome::NotProved;
+    return r->verdict == Verdict::Proved ? ReproveOutcome::Proved : ReproveOutcome::Undecided;
+  };
+  model::Matrix reduced = m_;
+  out.support = minimal_support(m_, candidates, reprove, out.support_minimal, &reduced);
+  if (out.support.size() == candidates.size()) return;  // nothing deleted: the proof above stands
+  std::optional<ProverResult> r = prove(reduced, true);
+  if (r && r->verdict == Verdict::Proved) return;
+  if (r && r->verdict == Verdict::Falsified)
+    throw InternalError("the support of property " + p_.name + " does not carry its proof: a trial was proved, " +
+                        "its re-proof is falsified");
+  // Undecided within the limits: claim nothing smaller than the whole cone.
+  out.support.clear();
+  for (const auto& d : candidates) out.support.push_back(d.element);
+  out.support_minimal = false;
 }
 
 PropertyResult PropertyChecker::run() {

@@ -15,7 +15,9 @@
 #include <vector>
 
 #include "checker/check.hpp"
+#include "checker/property_problem.hpp"
 #include "checker/prover.hpp"
+#include "checker/shrink.hpp"
 #include "checker/result.hpp"
 #include "model/graph.hpp"
 #include "properties/ast.hpp"
@@ -31,12 +33,6 @@ class PropertyChecker {
   PropertyResult run();
 
  private:
-  // What a problem asks of the property's monitor.
-  enum class Goal {
-    Property,     // `good` in every cycle
-    Antecedent,   // never the antecedent (falsified = the antecedent is reachable)
-    Assumptions,  // never any cycle at all (falsified = the assumptions can hold)
-  };
   ProblemFactory factory(const model::Matrix& m, Goal goal, bool sliced) const;
   ProverResult decide(const model::Matrix& m, Goal goal, bool sliced, Clock::time_point deadline) const;
   // Replays `r.cex`; fills the trace fields of `out`. False when the runtime
@@ -58,6 +54,7 @@ class PropertyChecker {
   Clock::time_point deadline_;
   std::vector<model::Node> roots_;
   bool has_antecedent_ = false;
+  PreferredValue preferred_;  // the plant at rest, for readable counterexamples
 };
 
 // --standard: the candidate elements of the whole matrix that no proved

@@ -1,8 +1,11 @@
 #include "checker/shrink.hpp"
 
+#include <optional>
 #include <unordered_set>
+#include <vector>
 
 #include "checker/engines/solving.hpp"
+#include "checker/reduce.hpp"
 #include "encoder/unroller.hpp"
 
 namespace cemv::checker {
@@ -12,7 +15,8 @@ namespace {
 z3::expr constant_of(const encoder::TransitionSystem& ts, const z3::expr& var, const Value& v) {
   z3::context& ctx = ts.ctx();
   if (var.is_bool()) return ctx.bool_val(v.i != 0);
-  if (var.is_int()) return ctx.int_val(static_cast<int64_t>(v.i));
+  // An analog value the reduction made an integer (checker/reduce.hpp).
+  if (var.is_int()) return ctx.int_val(static_cast<int64_t>(v.is_float ? float_key(v.f) : v.i));
   return ts.float_const(v.is_float ? v.f : static_cast<float>(v.i));
 }
 
@@ -40,32 +44,63 @@ Trace shrink_trace(const SafetyProblem& problem, const Trace& cex, const Preferr
   }
   s.add(!u.at(problem.good, last));
 
-  // One literal per (cycle, input with a preferred value), in a fixed order.
-  z3::expr_vector literals(ctx);
+  // One literal per (cycle, input with a preferred value), in a fixed order,
+  // standing for "this input keeps its preferred value in this cycle".
+  std::vector<z3::expr> literals, meaning;
   for (int k = 0; k <= last; ++k)
     for (const auto& in : ts.inputvars()) {
       std::optional<Value> v = preferred(in.name);
       if (!v) continue;
       z3::expr lit = ctx.bool_const(("shrink." + std::to_string(k) + "." + in.name).c_str());
-      s.add(z3::implies(lit, u.var_at(in.var, k) == constant_of(ts, in.var, *v)));
+      z3::expr at_rest = u.var_at(in.var, k) == constant_of(ts, in.var, *v);
+      s.add(z3::implies(lit, at_rest));
       literals.push_back(lit);
+      meaning.push_back(at_rest);
     }
+  auto vector_of = [&](const std::vector<bool>& on, std::optional<std::size_t> extra = std::nullopt) {
+    z3::expr_vector out(ctx);
+    for (std::size_t i = 0; i < literals.size(); ++i)
+      if (on[i] || extra == i) out.push_back(literals[i]);
+    return out;
+  };
   try {
     Watchdog watchdog(ctx, limits);
-    for (int round = 0; round < 64; ++round) {
+    // 1. Shrink: drop the literals of each unsat core until satisfiable.
+    std::vector<bool> kept(literals.size(), true);
+    std::optional<z3::model> model;
+    for (int round = 0; round < 64 && !model; ++round) {
       set_timeout(s, limits);
-      z3::check_result r = s.check(literals);
-      if (r == z3::sat) return trace_from_model(ts, u, s.get_model(), last);
+      z3::check_result r = s.check(vector_of(kept));
+      if (r == z3::sat) {
+        model = s.get_model();
+        break;
+      }
       if (r != z3::unsat) return cex;
       z3::expr_vector core = s.unsat_core();
       if (core.size() == 0) return cex;
       std::unordered_set<unsigned> drop;
       for (unsigned i = 0; i < core.size(); ++i) drop.insert(core[i].id());
-      z3::expr_vector kept(ctx);
-      for (unsigned i = 0; i < literals.size(); ++i)
-        if (!drop.count(literals[i].id())) kept.push_back(literals[i]);
-      literals = kept;
+      for (std::size_t i = 0; i < literals.size(); ++i)
+        if (drop.count(literals[i].id())) kept[i] = false;
     }
+    if (!model) return cex;
+    // 2. Grow: a core drops more than the violation needs. Take back every
+    // dropped literal the model already satisfies, and try the others one by
+    // one, in order: what is left is a maximal set of inputs at rest.
+    for (std::size_t i = 0; i < literals.size(); ++i) {
+      if (kept[i]) continue;
+      if (model->eval(meaning[i], true).is_true()) {
+        kept[i] = true;
+        continue;
+      }
+      if (limits.over()) break;
+      set_timeout(s, limits);
+      if (s.check(vector_of(kept, i)) == z3::sat) {
+        kept[i] = true;
+        model = s.get_model();
+      }
+    }
+    return trace_from_model(ts, u, *model, last);
   } catch (const z3::exception&) {
     // A limit or a solver failure: the engine's own (already re-checked)
     // trace stands.

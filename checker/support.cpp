@@ -74,7 +74,7 @@ std::vector<Deletion> candidate_deletions(const model::Matrix& m, const std::vec
 
 std::vector<SupportElement> minimal_support(const model::Matrix& m, const std::vector<Deletion>& candidates,
                                             const std::function<ReproveOutcome(const model::Matrix&)>& reprove,
-                                            bool& minimal) {
+                                            bool& minimal, model::Matrix* reduced) {
   minimal = true;
   model::Matrix current = m;
   std::vector<SupportElement> kept;
@@ -95,6 +95,7 @@ std::vector<SupportElement> minimal_support(const model::Matrix& m, const std::v
     if (r == ReproveOutcome::Undecided) minimal = false;
     kept.push_back(d.element);
   }
+  if (reduced) *reduced = std::move(current);
   return kept;
 }
 

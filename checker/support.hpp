@@ -32,9 +32,11 @@ std::vector<Deletion> candidate_deletions(const model::Matrix& m, const std::vec
 enum class ReproveOutcome { Proved, NotProved, Undecided };
 
 // Greedy minimisation. `reprove` decides the property on an edited matrix.
-// Returns the kept elements; `minimal` is false when some re-proof was undecided.
+// Returns the kept elements; `minimal` is false when some re-proof was
+// undecided. `reduced` receives the matrix with every deletion that stayed:
+// the one whose proof the support claims.
 std::vector<SupportElement> minimal_support(const model::Matrix& m, const std::vector<Deletion>& candidates,
                                             const std::function<ReproveOutcome(const model::Matrix&)>& reprove,
-                                            bool& minimal);
+                                            bool& minimal, model::Matrix* reduced = nullptr);
 
 }  // namespace cemv::checker

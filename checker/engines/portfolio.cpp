@@ -16,7 +16,8 @@
 #include "checker/engines/kinduction.hpp"
 #include "checker/engines/pdr.hpp"
 #include "checker/engines/solving.hpp"
-#include "checker/trace_shrink.hpp"
+#include "checker/reduce.hpp"
+#include "checker/shrink.hpp"
 
 namespace cemv::checker {
 
@@ -35,7 +36,7 @@ std::unique_ptr<Prover> make_prover(const std::string& name, int max_k) {
 
 namespace {
 
-const std::vector<std::string> kProofOrder{"invariants+induction", "k-induction", "pdr"};
+const std::vector<std::string> kProofOrder{"k-induction", "invariants+induction", "pdr"};
 
 int proof_rank(const std::string& engine) {
   auto it = std::find(kProofOrder.begin(), kProofOrder.end(), engine);
@@ -48,6 +49,8 @@ struct Lane {
   std::atomic<bool> cancel{false};
   std::optional<ProverResult> result;
   std::exception_ptr error;
+  int tier = 0;  // starts once the provers of earlier tiers are done (PortfolioOptions::tiers)
+  bool started = false;
   std::thread thread;
 };
 
@@ -67,16 +70,18 @@ ProverResult Portfolio::run(const Limits& limits) {
     lane->engine = name;
     lanes.push_back(std::move(lane));
   }
-  for (auto& lane_ptr : lanes) {
-    Lane* lane = lane_ptr.get();
+  const ProblemFactory make = options_.reduce ? reducing(make_) : make_;
+  auto start_lane = [&](Lane* lane) {
+    lane->started = true;
     lane->thread = std::thread([&, lane] {
       std::optional<ProverResult> r;
       std::exception_ptr error;
       try {
         z3::context ctx;
-        OwnedProblem owned = make_(ctx);
+        OwnedProblem owned = make(ctx);
         Limits mine = limits;
         mine.cancel = &lane->cancel;
+        if (lane->engine == "bmc") mine.max_depth = std::min(mine.max_depth, options_.bmc_depth);
         r = make_prover(lane->engine, options_.max_k)->prove(owned.problem, mine);
       } catch (...) {
         error = std::current_exception();
@@ -86,8 +91,13 @@ ProverResult Portfolio::run(const Limits& limits) {
       lane->error = error;
       changed.notify_all();
     });
+  };
+  for (auto& lane : lanes) {
+    for (std::size_t t = 0; t < options_.tiers.size(); ++t)
+      if (std::count(options_.tiers[t].begin(), options_.tiers[t].end(), lane->engine)) lane->tier = static_cast<int>(t);
+    if (lane->tier == 0) start_lane(lane.get());
   }
-  auto finished = [](const Lane& l) { return l.result.has_value() || l.error; };
+  auto finished = [](const Lane& l) { return !l.started || l.result.has_value() || l.error; };
   auto find = [&](const std::string& name) -> Lane* {
     for (auto& l : lanes)
       if (l->engine == name) return l.get();
@@ -118,7 +128,8 @@ ProverResult Portfolio::run(const Limits& limits) {
           answer = bmc->result;
           break;
         }
-        const bool bmc_can_reach = static_cast<int>(falsifier->result->cex.length()) - 1 <= limits.max_depth;
+        const bool bmc_can_reach = static_cast<int>(falsifier->result->cex.length()) - 1 <=
+                                   std::min(limits.max_depth, options_.bmc_depth);
         if (!bmc_can_reach || finished(*bmc)) {
           bmc->cancel = true;
           answer = falsifier->result;
@@ -146,14 +157,33 @@ ProverResult Portfolio::run(const Limits& limits) {
         }
       }
       bool errors = false;
-      if (std::all_of(lanes.begin(), lanes.end(), [&](const auto& l) { return finished(*l); })) break;
+      // The slower engines join when the quick ones are done without an
+      // answer, or after a grace period: an easy property is decided on two
+      // cores without five threads competing for them.
+      // Tier t starts when every prover of the earlier tiers has finished
+      // (BMC runs on: it is the falsifier), or t grace periods after the start.
+      int open_tier = 0;
+      const auto now = std::chrono::steady_clock::now();
+      for (int t = 1; t < static_cast<int>(options_.tiers.size()); ++t) {
+        bool earlier_done = true;
+        for (auto& l : lanes)
+          if (l->tier < t && l->engine != "bmc" && !finished(*l)) earlier_done = false;
+        if (earlier_done || now - start >= t * options_.grace) open_tier = t;
+        else break;
+      }
+      for (auto& l : lanes)
+        if (l->tier <= open_tier && !l->started && !l->cancel) start_lane(l.get());
+      const bool grace_over = open_tier + 1 >= static_cast<int>(options_.tiers.size());
+      if (std::all_of(lanes.begin(), lanes.end(), [&](const auto& l) { return l->started && finished(*l); }))
+        break;
       for (auto& l : lanes) errors = errors || l->error;
       if (errors) break;
-      changed.wait(lock);
+      changed.wait_until(lock, grace_over ? limits.deadline : start + (open_tier + 1) * options_.grace);
     }
     for (auto& l : lanes) l->cancel = true;
   }
-  for (auto& l : lanes) l->thread.join();
+  for (auto& l : lanes)
+    if (l->started) l->thread.join();
   for (auto& l : lanes)
     if (l->error) {
       try {
@@ -182,12 +212,26 @@ ProverResult Portfolio::run(const Limits& limits) {
     return r;
   }
   if (answer->verdict == Verdict::Falsified) {
+    // Readable: every input the violation does not need kept at its
+    // preferred value (checker/shrink.hpp), on the reduced problem, where
+    // the solver works in integers.
     z3::context ctx;
-    OwnedProblem owned = make_(ctx);
-    answer->cex = shrink_counterexample(owned.problem, answer->cex);
-    answer->k = static_cast<int>(answer->cex.length()) - 1;
+    OwnedProblem owned = make(ctx);
+    Limits shrink_limits = limits;
+    shrink_limits.deadline = std::min(limits.deadline, std::chrono::steady_clock::now() + options_.shrink_budget);
+    shrink_limits.cancel = nullptr;
+    PreferredValue preferred = options_.preferred;
+    if (!preferred) preferred = [](const std::string&) { return std::optional<Value>(Value{}); };
+    answer->cex = shrink_trace(owned.problem, answer->cex, preferred, shrink_limits);
   }
-  if (options_.recheck) check::recheck(make_, *answer);
+  if (options_.recheck) check::recheck(make, *answer);
+  if (answer->verdict == Verdict::Falsified && options_.reduce) {
+    // Back to the problem as the caller stated it, and replayed there too.
+    z3::context ctx;
+    OwnedProblem original = make_(ctx);
+    answer->cex = lift_trace(original.problem, answer->cex);
+    if (options_.recheck) check::replay_counterexample(original.problem, answer->cex);
+  }
   answer->seconds = seconds_since(start);
   return *answer;
 }

@@ -2,31 +2,54 @@
 // of the problem (Z3 is not thread-safe within one context), built by the
 // caller's factory. The first definitive answer ends the race, yet the result
 // is deterministic:
-// - Falsified: the counterexample of BMC, which is a shortest one; when another
+// - Falsified: the counterexample of BMC, which is a shortest one, when there
+//   is one within BMC's bound (PortfolioOptions::bmc_depth); when another
 //   engine finds one first, BMC is allowed to finish (it must succeed at that
 //   depth or less). A counterexample deeper than BMC's bound (the accelerated
 //   unrolling's) is reported as that engine found it.
 // - Proved: the first engine in the preference order
-//   invariants+induction, k-induction, pdr that proves it; engines earlier in
+//   k-induction, invariants+induction, pdr that proves it; engines earlier in
 //   the order are waited for (each stops at its own bound), later ones stopped.
-// A counterexample's inputs that the violation does not need are set to zero
-// (trace_shrink.hpp). The answer is re-checked in a fresh context before it
+// The engines work on the reduced problem (checker/reduce.hpp); a
+// counterexample is lifted back to the caller's problem and replayed there.
+// Engines start in tiers (PortfolioOptions::tiers), so that easy properties
+// do not share two cores among five threads.
+// A counterexample's inputs that the violation does not need keep their
+// preferred value (checker/shrink.hpp; zero when none is given). The answer is re-checked in a fresh context before it
 // is returned.
 #pragma once
 
+#include <chrono>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "checker/prover.hpp"
+#include "checker/shrink.hpp"
 
 namespace cemv::checker {
 
 struct PortfolioOptions {
   // Engine names: "bmc", "k-induction", "invariants+induction", "pdr", "accelerated-bmc".
-  std::vector<std::string> engines{"invariants+induction", "k-induction", "pdr", "bmc", "accelerated-bmc"};
+  std::vector<std::string> engines{"k-induction", "invariants+induction", "bmc", "pdr", "accelerated-bmc"};
+  // When each engine starts: tier t once every prover of the earlier tiers has
+  // finished without an answer, or t * `grace` after the start. Two threads
+  // first, for two cores: most properties are decided there.
+  std::vector<std::vector<std::string>> tiers{{"k-induction", "bmc"}, {"invariants+induction"},
+                                              {"pdr", "accelerated-bmc"}};
+  std::chrono::milliseconds grace{1500};
   int max_k = 10;        // k-induction's bound inside the portfolio
+  // BMC's depth inside the portfolio. A counterexample that short is BMC's,
+  // a shortest one; a longer one is the accelerated unrolling's (complete
+  // for every length, as a macro step may be one cycle). The bound keeps the
+  // wait for BMC's answer finite, so the choice never depends on timing.
+  int bmc_depth = 32;
   bool recheck = true;   // checker/check/ on the answer
+  bool reduce = true;    // the engines work on the reduced problem (checker/reduce.hpp)
+  // What a counterexample's inputs should read where the violation does not
+  // need otherwise (by input name); empty = 0, FALSE, 0.0 for every input.
+  PreferredValue preferred;
+  std::chrono::milliseconds shrink_budget{10000};
 };
 
 // A prover by name, for the portfolio and the command line; throws

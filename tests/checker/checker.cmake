@@ -17,6 +17,12 @@ if(TARGET cemv_checker)
 endif()
 
 if(TARGET cemv_checker)
+  add_executable(test_checker_reduce ${CMAKE_CURRENT_LIST_DIR}/test_reduce.cpp)
+  target_link_libraries(test_checker_reduce PRIVATE cemv_checker_problems GTest::gtest_main)
+  gtest_discover_tests(test_checker_reduce DISCOVERY_MODE PRE_TEST)
+endif()
+
+if(TARGET cemv_checker)
   add_executable(test_checker_portfolio ${CMAKE_CURRENT_LIST_DIR}/test_portfolio.cpp)
   target_link_libraries(test_checker_portfolio PRIVATE cemv_checker_problems GTest::gtest_main)
   gtest_discover_tests(test_checker_portfolio DISCOVERY_MODE PRE_TEST)
@@ -27,4 +33,11 @@ endif()
 if(TARGET cemv_checker)
   add_executable(cemv_checker_measure ${CMAKE_CURRENT_LIST_DIR}/measure.cpp)
   target_link_libraries(cemv_checker_measure PRIVATE cemv_checker_problems)
+endif()
+
+# Not in make test: cemv_checker_probe MATRIX PROPS SECONDS [NAME...] runs
+# every engine alone on every property, then the portfolio.
+if(TARGET cemv_checker)
+  add_executable(cemv_checker_probe ${CMAKE_CURRENT_LIST_DIR}/probe.cpp)
+  target_link_libraries(cemv_checker_probe PRIVATE cemv_checker)
 endif()

@@ -1,0 +1,537 @@
+#include "checker/reduce.hpp"
+
+#include <bit>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "encoder/encode.hpp"
+#include "encoder/evaluate.hpp"
+
+namespace cemv::checker {
+
+std::int64_t float_key(float f) {
+  const std::uint32_t bits = std::bit_cast<std::uint32_t>(f);
+  const std::int64_t magnitude = bits & 0x7fffffffu;
+  return (bits & 0x80000000u) ? -magnitude : magnitude;
+}
+
+float key_float(std::int64_t key) {
+  const std::uint32_t magnitude = static_cast<std::uint32_t>(key < 0 ? -key : key);
+  return std::bit_cast<float>(key < 0 ? (0x80000000u | magnitude) : magnitude);
+}
+
+namespace {
+
+using z3::expr;
+
+bool is_variable(const expr& e) {
+  return e.is_app() && e.num_args() == 0 && e.decl().decl_kind() == Z3_OP_UNINTERPRETED;
+}
+
+// The variables of a term, by Z3 AST id.
+void collect_variables(const expr& e, std::unordered_set<unsigned>& out, std::unordered_set<unsigned>& seen) {
+  if (!seen.insert(e.id()).second || !e.is_app()) return;
+  if (is_variable(e)) {
+    out.insert(e.id());
+    return;
+  }
+  for (unsigned i = 0; i < e.num_args(); ++i) collect_variables(e.arg(i), out, seen);
+}
+std::unordered_set<unsigned> variables_of(const expr& e) {
+  std::unordered_set<unsigned> out, seen;
+  collect_variables(e, out, seen);
+  return out;
+}
+
+void conjuncts(const expr& e, std::vector<expr>& out) {
+  if (e.is_app() && e.decl().decl_kind() == Z3_OP_AND) {
+    for (unsigned i = 0; i < e.num_args(); ++i) conjuncts(e.arg(i), out);
+  } else if (!(e.is_true())) {
+    out.push_back(e);
+  }
+}
+
+struct Unsupported {};
+
+// Reduction 2: Float32 terms as integers of the same order. Throws
+// Unsupported at the first operation that is not a comparison, a choice or a
+// constant (arithmetic needs the real thing).
+class FloatsAsIntegers {
+ public:
+  explicit FloatsAsIntegers(z3::context& c) : c_(c) {}
+
+  void map_variable(const expr& fp_var, const expr& int_var) {
+    memo_.emplace(fp_var.id(), std::make_pair(fp_var, int_var));
+  }
+
+  expr operator()(const expr& e) {
+    if (auto it = memo_.find(e.id()); it != memo_.end()) return it->second.second;
+    expr r = rewrite(e);
+    memo_.emplace(e.id(), std::make_pair(e, r));  // the key kept alive: Z3 reuses freed ids
+    return r;
+  }
+
+ private:
+  expr rewrite(const expr& e) {
+    if (!e.is_app()) throw Unsupported{};
+    const Z3_decl_kind k = e.decl().decl_kind();
+    if (e.is_fpa()) {
+      if (e.num_args() == 0 && k != Z3_OP_UNINTERPRETED) return c_.int_val(constant_key(e));
+      if (k == Z3_OP_ITE) return z3::ite((*this)(e.arg(0)), (*this)(e.arg(1)), (*this)(e.arg(2)));
+      throw Unsupported{};  // arithmetic, conversions, or an unmapped variable
+    }
+    if (e.num_args() > 0 && e.arg(0).is_fpa()) {
+      auto a = [&](unsigned i) { return (*this)(e.arg(i)); };
+      switch (k) {
+        case Z3_OP_FPA_LE: return a(0) <= a(1);
+        case Z3_OP_FPA_LT: return a(0) < a(1);
+        case Z3_OP_FPA_GE: return a(0) >= a(1);
+        case Z3_OP_FPA_GT: return a(0) > a(1);
+        case Z3_OP_FPA_EQ:
+        case Z3_OP_EQ: return a(0) == a(1);
+        case Z3_OP_DISTINCT:
+          if (e.num_args() == 2) return a(0) != a(1);
+          throw Unsupported{};
+        case Z3_OP_FPA_IS_NAN:
+        case Z3_OP_FPA_IS_INF: return c_.bool_val(false);  // only finite values remain
+        default: throw Unsupported{};
+      }
+    }
+    if (e.num_args() == 0) return e;
+    z3::expr_vector args(c_);
+    bool changed = false;
+    for (unsigned i = 0; i < e.num_args(); ++i) {
+      expr r = (*this)(e.arg(i));
+      changed = changed || r.id() != e.arg(i).id();
+      args.push_back(r);
+    }
+    return changed ? e.decl()(args) : e;
+  }
+
+  std::int64_t constant_key(const expr& e) {
+    expr bits = expr(c_, Z3_mk_fpa_to_ieee_bv(c_, e)).simplify();
+    if (!bits.is_numeral()) throw Unsupported{};
+    const float f = std::bit_cast<float>(static_cast<std::uint32_t>(bits.get_numeral_uint64()));
+    if (!std::isfinite(f)) throw Unsupported{};
+    return float_key(f);
+  }
+
+  z3::context& c_;
+  std::unordered_map<unsigned, std::pair<expr, expr>> memo_;
+};
+
+// What the reduced problem owns: the original (whose context and encoding
+// the terms live in) and the new transition system.
+struct Reduced {
+  std::shared_ptr<void> original;
+  encoder::TransitionSystem ts;
+};
+
+// The problem's parts as the reductions rewrite them.
+struct Work {
+  struct State {
+    std::string name;
+    expr var, init, next;
+  };
+  struct Fact {
+    std::string name;  // "" for a conjunct of the assumption, else a constraint's name
+    expr term;
+  };
+  std::vector<State> states;
+  std::vector<expr> inputs;
+  std::vector<std::string> input_names;
+  std::vector<Fact> facts;
+  std::vector<std::pair<std::string, expr>> lemmas;
+  expr good;
+};
+
+Work parts_of(const SafetyProblem& p) {
+  const auto& ts = *p.ts;
+  Work w{{}, {}, {}, {}, {}, p.good};
+  for (const auto& sv : ts.statevars()) w.states.push_back({sv.name, sv.var, sv.init, sv.next});
+  for (const auto& in : ts.inputvars()) {
+    w.inputs.push_back(in.var);
+    w.input_names.push_back(in.name);
+  }
+  std::vector<expr> parts;
+  conjuncts(p.assumption, parts);
+  for (auto& a : parts) w.facts.push_back({"", a});
+  for (const auto& c : ts.constraints()) w.facts.push_back({c.name, c.term});
+  for (const auto& l : ts.lemmas()) w.lemmas.emplace_back(l.name, l.term);
+  return w;
+}
+
+// Folds the Boolean constants a substitution leaves behind (`and` with
+// FALSE, `ite` on TRUE, ...), and nothing else: Z3's simplify() would also
+// rewrite Float32 terms into operators the encoder's Evaluator, which
+// re-simulates traces, does not interpret.
+class FoldBooleans {
+ public:
+  expr operator()(const expr& e) {
+    if (auto it = memo_.find(e.id()); it != memo_.end()) return it->second.second;
+    expr r = fold(e);
+    // The key term is kept alive with its result: Z3 reuses the id of a
+    // freed term.
+    memo_.emplace(e.id(), std::make_pair(e, r));
+    return r;
+  }
+
+ private:
+  expr fold(const expr& e) {
+    if (!e.is_app() || e.num_args() == 0) return e;
+    z3::context& c = e.ctx();
+    std::vector<expr> a;
+    for (unsigned i = 0; i < e.num_args(); ++i) a.push_back((*this)(e.arg(i)));
+    switch (e.decl().decl_kind()) {
+      case Z3_OP_NOT:
+        if (a[0].is_true()) return c.bool_val(false);
+        if (a[0].is_false()) return c.bool_val(true);
+        return !a[0];
+      case Z3_OP_AND: {
+        z3::expr_vector kept(c);
+        for (auto& x : a) {
+          if (x.is_false()) return c.bool_val(false);
+          if (!x.is_true()) kept.push_back(x);
+        }
+        return kept.empty() ? c.bool_val(true) : kept.size() == 1 ? kept[0] : z3::mk_and(kept);
+      }
+      case Z3_OP_OR: {
+        z3::expr_vector kept(c);
+        for (auto& x : a) {
+          if (x.is_true()) return c.bool_val(true);
+          if (!x.is_false()) kept.push_back(x);
+        }
+        return kept.empty() ? c.bool_val(false) : kept.size() == 1 ? kept[0] : z3::mk_or(kept);
+      }
+      case Z3_OP_ITE:
+        if (a[0].is_true()) return a[1];
+        if (a[0].is_false()) return a[2];
+        break;
+      case Z3_OP_IMPLIES:
+        if (a[0].is_false() || a[1].is_true()) return c.bool_val(true);
+        if (a[0].is_true()) return a[1];
+        break;
+      default: break;
+    }
+    z3::expr_vector args(c);
+    bool changed = false;
+    for (unsigned i = 0; i < a.size(); ++i) {
+      changed = changed || a[i].id() != e.arg(i).id();
+      args.push_back(a[i]);
+    }
+    return changed ? e.decl()(args) : e;
+  }
+  std::unordered_map<unsigned, std::pair<expr, expr>> memo_;
+};
+
+void substitute(Work& w, const z3::expr_vector& from, const z3::expr_vector& to) {
+  if (from.empty()) return;
+  FoldBooleans fold;
+  auto sub = [&](expr& e) {
+    expr copy = e;
+    e = fold(copy.substitute(from, to));
+  };
+  for (auto& s : w.states) sub(s.init), sub(s.next);
+  for (auto& f : w.facts) sub(f.term);
+  for (auto& l : w.lemmas) sub(l.second);
+  sub(w.good);
+}
+
+// The literals of Boolean inputs that the assumption fixes in every cycle
+// (`assume not issued(simulate_tag)` fixes each simulate command to FALSE).
+void forced_literals(const expr& e, bool positive, const std::unordered_set<unsigned>& inputs,
+                     std::vector<std::pair<expr, bool>>& out) {
+  if (!e.is_app()) return;
+  const Z3_decl_kind k = e.decl().decl_kind();
+  if (is_variable(e) && e.is_bool() && inputs.count(e.id())) out.emplace_back(e, positive);
+  else if (k == Z3_OP_NOT) forced_literals(e.arg(0), !positive, inputs, out);
+  else if ((k == Z3_OP_AND && positive) || (k == Z3_OP_OR && !positive))
+    for (unsigned i = 0; i < e.num_args(); ++i) forced_literals(e.arg(i), positive, inputs, out);
+}
+
+}  // namespace
+
+std::vector<std::pair<std::string, bool>> forced_inputs(const SafetyProblem& p) {
+  std::unordered_set<unsigned> inputs;
+  for (const auto& in : p.ts->inputvars()) inputs.insert(in.var.id());
+  std::vector<std::pair<expr, bool>> literals;
+  forced_literals(p.assumption, true, inputs, literals);
+  std::vector<std::pair<std::string, bool>> out;
+  std::unordered_map<unsigned, bool> seen;
+  for (auto& [var, value] : literals) {
+    auto [it, fresh] = seen.emplace(var.id(), value);
+    if (!fresh) {
+      if (it->second != value) return {};  // contradictory: leave the problem as it is
+      continue;
+    }
+    out.emplace_back(var.decl().name().str(), value);
+  }
+  return out;
+}
+
+namespace {
+
+// Reduction 0 (propagation): inputs the assumption fixes become constants,
+// and so does every state variable whose next-state function, with those
+// constants, gives back its initial value: by induction it never changes. The
+// greatest such set is found by dropping the variables that do change until
+// none does (sequential constant propagation).
+void propagate_constants(Work& w, const SafetyProblem& p) {
+  z3::context& c = p.ts->ctx();
+  z3::expr_vector from(c), to(c);
+  for (auto& [name, value] : forced_inputs(p))
+    for (const auto& in : w.inputs)
+      if (in.decl().name().str() == name) {
+        from.push_back(in);
+        to.push_back(c.bool_val(value));
+      }
+  substitute(w, from, to);
+  std::vector<bool> constant(w.states.size());
+  for (std::size_t i = 0; i < w.states.size(); ++i) constant[i] = variables_of(w.states[i].init).empty();
+  for (bool changed = true; changed;) {
+    changed = false;
+    z3::expr_vector sf(c), st(c);
+    for (std::size_t i = 0; i < w.states.size(); ++i)
+      if (constant[i]) sf.push_back(w.states[i].var), st.push_back(w.states[i].init);
+    for (std::size_t i = 0; i < w.states.size(); ++i) {
+      if (!constant[i]) continue;
+      expr n = sf.empty() ? w.states[i].next : w.states[i].next.substitute(sf, st).simplify();
+      if (!z3::eq(n, w.states[i].init.simplify())) {
+        constant[i] = false;
+        changed = true;
+      }
+    }
+  }
+  z3::expr_vector sf(c), st(c);
+  std::vector<Work::State> kept;
+  for (std::size_t i = 0; i < w.states.size(); ++i) {
+    if (constant[i]) sf.push_back(w.states[i].var), st.push_back(w.states[i].init);
+    else kept.push_back(w.states[i]);
+  }
+  w.states = std::move(kept);
+  substitute(w, sf, st);
+}
+
+// Reduction 1: the variables `good` reaches through next-state and initial
+// functions, and through every fact (assumption conjunct or constraint) that
+// reads one of them or any state variable. What is left out are input-only
+// facts over inputs nothing kept reads: they are dropped when, together, they
+// are satisfiable (each cycle can then meet them independently); otherwise
+// nothing is dropped.
+void cone_of_influence(Work& w, z3::context& c) {
+  std::unordered_map<unsigned, std::size_t> state_of, input_of;
+  for (std::size_t i = 0; i < w.states.size(); ++i) state_of[w.states[i].var.id()] = i;
+  for (std::size_t i = 0; i < w.inputs.size(); ++i) input_of[w.inputs[i].id()] = i;
+  std::vector<std::unordered_set<unsigned>> fact_vars;
+  for (const auto& f : w.facts) fact_vars.push_back(variables_of(f.term));
+  std::vector<bool> state(w.states.size()), input(w.inputs.size()), fact(w.facts.size());
+  std::vector<unsigned> work;
+  auto add = [&](unsigned var) {
+    if (auto s = state_of.find(var); s != state_of.end() && !state[s->second]) {
+      state[s->second] = true;
+      work.push_back(var);
+    } else if (auto i = input_of.find(var); i != input_of.end() && !input[i->second]) {
+      input[i->second] = true;
+    }
+  };
+  auto kept = [&](unsigned v) {
+    auto s = state_of.find(v);
+    if (s != state_of.end()) return true;  // any state variable keeps its fact
+    auto i = input_of.find(v);
+    return i != input_of.end() && input[i->second];
+  };
+  for (unsigned v : variables_of(w.good)) add(v);
+  for (bool more = true; more;) {
+    while (!work.empty()) {
+      unsigned v = work.back();
+      work.pop_back();
+      const auto& sv = w.states[state_of[v]];
+      for (unsigned u : variables_of(sv.next)) add(u);
+      for (unsigned u : variables_of(sv.init)) add(u);
+    }
+    more = false;
+    for (std::size_t f = 0; f < w.facts.size(); ++f) {
+      if (fact[f]) continue;
+      for (unsigned v : fact_vars[f]) fact[f] = fact[f] || kept(v);
+      if (fact[f]) {
+        more = true;
+        for (unsigned v : fact_vars[f]) add(v);
+      }
+    }
+  }
+  z3::solver dropped(c);
+  for (std::size_t f = 0; f < w.facts.size(); ++f)
+    if (!fact[f]) dropped.add(w.facts[f].term);
+  if (dropped.check() != z3::sat) return;
+  Work out{{}, {}, {}, {}, {}, w.good};
+  for (std::size_t i = 0; i < w.states.size(); ++i)
+    if (state[i]) out.states.push_back(w.states[i]);
+  for (std::size_t i = 0; i < w.inputs.size(); ++i)
+    if (input[i]) out.inputs.push_back(w.inputs[i]), out.input_names.push_back(w.input_names[i]);
+  for (std::size_t f = 0; f < w.facts.size(); ++f)
+    if (fact[f]) out.facts.push_back(w.facts[f]);
+  std::unordered_set<unsigned> kept_states;
+  for (const auto& s : out.states) kept_states.insert(s.var.id());
+  for (const auto& l : w.lemmas) {
+    bool inside = true;
+    for (unsigned v : variables_of(l.second)) inside = inside && kept_states.count(v);
+    if (inside) out.lemmas.push_back(l);
+  }
+  w = std::move(out);
+}
+
+void collect_float_constants(const expr& e, std::vector<expr>& out, std::unordered_set<unsigned>& seen) {
+  if (!seen.insert(e.id()).second || !e.is_app()) return;
+  if (e.num_args() == 0) {
+    if (e.is_fpa() && e.decl().decl_kind() != Z3_OP_UNINTERPRETED) out.push_back(e);
+    return;
+  }
+  for (unsigned i = 0; i < e.num_args(); ++i) collect_float_constants(e.arg(i), out, seen);
+}
+
+// Simplification folds Float32 constants into new terms (+zero, say). The
+// encoder's Evaluator, which shrinks and re-checks traces, knows a constant
+// by the system's float_const: state each one that way.
+class FloatConstants {
+ public:
+  explicit FloatConstants(encoder::TransitionSystem& ts) : ts_(ts), from_(ts.ctx()), to_(ts.ctx()) {}
+  expr operator()(const expr& e) {
+    std::vector<expr> found;
+    collect_float_constants(e, found, seen_);
+    for (const auto& f : found) {
+      expr bits = expr(ts_.ctx(), Z3_mk_fpa_to_ieee_bv(ts_.ctx(), f)).simplify();
+      if (!bits.is_numeral()) throw Unsupported{};
+      from_.push_back(f);
+      to_.push_back(ts_.float_const(std::bit_cast<float>(static_cast<std::uint32_t>(bits.get_numeral_uint64()))));
+    }
+    expr copy = e;
+    return from_.empty() ? copy : copy.substitute(from_, to_);
+  }
+
+ private:
+  encoder::TransitionSystem& ts_;
+  z3::expr_vector from_, to_;
+  std::unordered_set<unsigned> seen_;
+};
+
+// The transition system of what is left, floats as integers or as they are.
+OwnedProblem build(const Work& w, const std::shared_ptr<void>& original, z3::context& c, bool as_integers) {
+  auto owner = std::make_shared<Reduced>(Reduced{original, encoder::TransitionSystem(c)});
+  encoder::TransitionSystem& r = owner->ts;
+  FloatsAsIntegers rewrite(c);
+  FloatConstants constants(r);
+  auto map = [&](const expr& e) { return as_integers ? rewrite(e) : constants(e); };
+  const expr max_key = c.int_val(float_key(std::numeric_limits<float>::max()));
+  for (std::size_t i = 0; i < w.inputs.size(); ++i) {
+    const bool to_int = as_integers && w.inputs[i].is_fpa();
+    expr v = r.make_inputvar(w.input_names[i], to_int ? c.int_sort() : w.inputs[i].get_sort());
+    if (to_int) {
+      rewrite.map_variable(w.inputs[i], v);
+      r.add_constraint(w.input_names[i] + ".finite", v >= -max_key && v <= max_key);
+    }
+  }
+  std::vector<expr> vars;
+  for (const auto& s : w.states) {
+    const bool to_int = as_integers && s.var.is_fpa();
+    expr v = r.make_statevar(s.name, to_int ? c.int_sort() : s.var.get_sort());
+    if (to_int) rewrite.map_variable(s.var, v);
+    vars.push_back(v);
+  }
+  for (std::size_t i = 0; i < w.states.size(); ++i) {
+    r.set_init(vars[i], map(w.states[i].init));
+    r.assign_next(vars[i], map(w.states[i].next));
+    if (as_integers && w.states[i].var.is_fpa())
+      r.add_lemma(w.states[i].name + ".finite", vars[i] >= -max_key && vars[i] <= max_key);
+  }
+  expr assumption = c.bool_val(true);
+  for (const auto& f : w.facts) {
+    expr t = map(f.term);
+    if (t.simplify().is_true()) continue;  // a float's not-NaN: no integer is NaN
+    if (f.name.empty()) assumption = assumption && t;
+    else r.add_constraint(f.name, t);
+  }
+  for (const auto& [name, term] : w.lemmas) {
+    try {
+      r.add_lemma(name, map(term));
+    } catch (const Unsupported&) {
+      // A lemma the integers cannot state is left out: lemmas only help.
+    }
+  }
+  expr good = map(w.good);
+  r.check_complete();
+  return OwnedProblem{owner, SafetyProblem{&owner->ts, good, assumption}};
+}
+
+}  // namespace
+
+OwnedProblem reduce(const OwnedProblem& original, Reduction* what) {
+  const SafetyProblem& p = original.problem;
+  z3::context& c = p.ts->ctx();
+  Work w = parts_of(p);
+  propagate_constants(w, p);
+  cone_of_influence(w, c);
+  bool as_integers = true;
+  std::optional<OwnedProblem> built;
+  try {
+    built = build(w, original.owner, c, true);
+  } catch (const Unsupported&) {
+    as_integers = false;
+    built = build(w, original.owner, c, false);
+  }
+  OwnedProblem out = std::move(*built);
+  if (what) {
+    what->state_vars_before = p.ts->statevars().size();
+    what->inputs_before = p.ts->inputvars().size();
+    what->state_vars_after = out.problem.ts->statevars().size();
+    what->inputs_after = out.problem.ts->inputvars().size();
+    what->floats_as_integers = as_integers;
+  }
+  return out;
+}
+
+ProblemFactory reducing(ProblemFactory make) {
+  return [make = std::move(make)](z3::context& ctx) { return reduce(make(ctx)); };
+}
+
+Trace lift_trace(const SafetyProblem& original, const Trace& reduced) {
+  const auto& ts = *original.ts;
+  std::unordered_map<std::string, std::size_t> position;
+  for (std::size_t i = 0; i < reduced.input_names.size(); ++i) position[reduced.input_names[i]] = i;
+  std::unordered_map<std::string, bool> forced;
+  for (auto& [name, value] : forced_inputs(original)) forced[name] = value;
+  Trace out;
+  for (const auto& in : ts.inputvars()) out.input_names.push_back(in.name);
+  for (const auto& sv : ts.statevars()) out.state_names.push_back(sv.name);
+  encoder::Encoding enc(ts.ctx());
+  enc.ts = ts;
+  encoder::Evaluator ev(enc);
+  for (const auto& cycle : reduced.cycles) {
+    Trace::Cycle lifted;
+    std::vector<encoder::Evaluator::Value> raw;
+    for (const auto& in : ts.inputvars()) {
+      Value v;
+      v.is_float = in.var.is_fpa();
+      if (auto it = position.find(in.name); it != position.end()) {
+        const Value& r = cycle.inputs[it->second];
+        if (v.is_float) v.f = r.is_float ? r.f : key_float(r.i);
+        else v.i = r.i;
+      } else if (auto f = forced.find(in.name); f != forced.end()) {
+        v.i = f->second ? 1 : 0;
+      }
+      lifted.inputs.push_back(v);
+      raw.push_back(encoder::Evaluator::Value{v.i, v.f});
+    }
+    for (std::size_t s = 0; s < ts.statevars().size(); ++s)
+      lifted.state.push_back(Value{ts.statevars()[s].var.is_fpa(), ev.state()[s].i, ev.state()[s].f});
+    ev.step_raw(raw);
+    out.cycles.push_back(std::move(lifted));
+  }
+  return out;
+}
+
+}  // namespace cemv::checker
