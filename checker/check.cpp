@@ -11,10 +11,6 @@
 #include "checker/property_checker.hpp"
 #include "formats/matrix_json.hpp"
 
-#ifndef CEMV_VERSION
-#define CEMV_VERSION "0"
-#endif
-
 namespace cemv::checker {
 
 CheckResult check_properties(const model::Matrix& m, const std::vector<properties::PropertyFile>& files,

@@ -20,7 +20,10 @@ struct ScenarioExpectation {
   int value = 0;
 };
 
-// `inputs`: one CycleInput per cycle, indexed by model::InputTable(m).
+// `inputs`: one CycleInput per cycle, indexed by model::InputTable(m). Each
+// cycle's commands are written in the order given, which is the order the
+// runtime ran them (cycle_inputs gives model::CommandOrder's), so that
+// `cemv simulate` on the file repeats the run.
 // `expect`: checked after the last cycle.
 std::string scenario_json(const model::Matrix& m, const std::vector<model::CycleInput>& inputs,
                           const std::string& description,

@@ -23,6 +23,7 @@ float number_of(const Value& v) { return v.is_float ? v.f : static_cast<float>(v
 std::vector<model::CycleInput> cycle_inputs(const Trace& trace, const encoder::Encoding& enc,
                                             const model::Matrix& m) {
   const model::CycleInput defaults = model::default_cycle_input(m);
+  const model::CommandOrder order(m);
   std::vector<model::CycleInput> out;
   out.reserve(trace.length());
   for (std::size_t k = 0; k < trace.length(); ++k) {
@@ -32,21 +33,16 @@ std::vector<model::CycleInput> cycle_inputs(const Trace& trace, const encoder::E
       if (enc.tag_value[i]) in.tags[i].value = number_of(trace.input(k, name_of(*enc.tag_value[i])));
       if (enc.tag_bad[i]) in.tags[i].bad_quality = trace.input(k, name_of(*enc.tag_bad[i])).i != 0;
     }
-    // enc.commands is in the encoding's processing order (docs/encoding.md,
-    // "Operator commands"), which is the order the runtime must be given.
     for (const auto& ci : enc.commands) {
       if (trace.input(k, name_of(ci.var)).i == 0) continue;
-      model::Command c;
-      c.op = ci.op;
-      c.cause = ci.cause;
-      c.effect = ci.effect;
-      c.tag = ci.tag;
-      c.group = ci.group;
-      c.on = ci.on;
-      c.tag_name = ci.tag_name;
+      model::Command c = ci.command();
       if (ci.value) c.value = number_of(trace.input(k, name_of(*ci.value)));
       in.commands.push_back(c);
     }
+    // The runtime processes commands in the order given (M.1); the encoding
+    // processes them as a set in the matrix's fixed order, and so must the
+    // runtime to reproduce the run.
+    in.commands = order.canonical(in.commands);
     out.push_back(std::move(in));
   }
   return out;

@@ -17,7 +17,8 @@ namespace cemv::checker {
 
 // The cycle inputs of an engine's trace: each encoded tag's value and quality
 // (tags outside the encoding keep the scenario defaults, which nothing encoded
-// reads), and the commands issued, in the encoding's canonical order.
+// reads), and the commands issued, in the matrix's fixed command order
+// (model::CommandOrder).
 std::vector<model::CycleInput> cycle_inputs(const Trace& trace, const encoder::Encoding& enc,
                                             const model::Matrix& m);
 

@@ -3,6 +3,8 @@
 // choices of the encoding itself are in docs/encoding.md.
 #include "encoder/encode.hpp"
 
+#include "encoder/builder.hpp"
+
 #include <algorithm>
 #include <map>
 #include <set>
@@ -12,6 +14,19 @@ namespace cemv::encoder {
 
 using model::Node;
 using z3::expr;
+using detail::Builder;
+
+model::Command CommandInput::command() const {
+  model::Command c;
+  c.op = op;
+  c.cause = cause;
+  c.effect = effect;
+  c.tag = tag;
+  c.group = group;
+  c.on = on;
+  c.tag_name = tag_name;
+  return c;
+}
 
 const CommandInput* Encoding::find_command(const model::Command& c) const {
   for (const auto& ci : commands) {
@@ -52,195 +67,12 @@ const CommandInput* Encoding::find_command(const model::Command& c) const {
 
 std::vector<model::Command> Encoding::canonical_commands(
     const std::vector<model::Command>& cmds) const {
-  std::vector<std::pair<std::size_t, model::Command>> picked;
-  auto add = [&](const model::Command& c) {
-    const CommandInput* ci = find_command(c);
-    if (!ci) return;
-    std::size_t pos = static_cast<std::size_t>(ci - commands.data());
-    for (auto& p : picked)
-      if (p.first == pos) {
-        p.second = c;  // a repeat: the last value wins
-        return;
-      }
-    picked.emplace_back(pos, c);
-  };
-  for (const auto& c : cmds) {
-    if (c.op == model::CommandOp::ClearAlarms && c.cause != 0 && c.effect != 0) {
-      model::Command a = c, b = c;  // O.10: both named, both cleared
-      a.effect = 0;
-      b.cause = 0;
-      add(a);
-      add(b);
-    } else {
-      add(c);
-    }
-  }
-  std::sort(picked.begin(), picked.end(),
-            [](const auto& a, const auto& b) { return a.first < b.first; });
-  std::vector<model::Command> out;
-  for (auto& p : picked) out.push_back(p.second);
+  std::vector<model::Command> out = order.canonical(cmds);
+  std::erase_if(out, [&](const model::Command& c) { return find_command(c) == nullptr; });
   return out;
 }
 
-namespace {
-
-// Term names start with the element as observable keys spell it
-// (model::observable_key), so each observable is the term named by its key.
-std::string cause_prefix(int id) { return model::to_string(Node{Node::Kind::Cause, id}); }
-std::string effect_prefix(int id) { return model::to_string(Node{Node::Kind::Effect, id}); }
-
-// T.2: whole cycles of a duration, rounded up, 64-bit.
-int cycles_of(std::uint64_t ms, std::uint32_t cycle_ms) {
-  if (ms == 0 || cycle_ms == 0) return 0;
-  return static_cast<int>((ms + cycle_ms - 1) / cycle_ms);
-}
-
-// A simulatable tag (O.8): its simulation state after this cycle's commands.
-struct Simulation {
-  std::string name;
-  bool analog = false;
-  bool output = false;
-  expr on;
-  expr value;
-  expr on_prev;    // state variable
-  expr value_prev; // state variable
-};
-
-class Builder {
- public:
-  Builder(z3::context& ctx, const model::Matrix& m, Encoding& enc)
-      : c_(ctx), m_(m), enc_(enc), ts_(enc.ts), graph_(m), first_(ctx), cmd_ok_(ctx), gd_(ctx),
-        fp32_(ctx.fpa_sort(8, 24)) {}
-
-  void build(const std::vector<Node>& roots);
-
- private:
-  expr B(bool b) { return c_.bool_val(b); }
-  expr I(int v) { return c_.int_val(v); }
-  expr count(const std::vector<expr>& bs) {
-    if (bs.empty()) return I(0);
-    expr sum = z3::ite(bs[0], I(1), I(0));
-    for (std::size_t i = 1; i < bs.size(); ++i) sum = sum + z3::ite(bs[i], I(1), I(0));
-    return sum;
-  }
-  expr any(const std::vector<expr>& bs) {
-    if (bs.empty()) return B(false);  // a nullary (or) prints as a bare symbol
-    if (bs.size() == 1) return bs[0];
-    z3::expr_vector v(c_);
-    for (const auto& b : bs) v.push_back(b);
-    return z3::mk_or(v);
-  }
-  expr bool_state(const std::string& name, bool init) {
-    expr v = ts_.make_statevar(name, c_.bool_sort());
-    ts_.set_init(v, B(init));
-    return v;
-  }
-  // An elapsed-cycles counter (T.2) saturating at d, with its range lemma.
-  expr counter(const std::string& name, int d) {
-    expr v = ts_.make_statevar(name, c_.int_sort());
-    ts_.set_init(v, I(0));
-    ts_.add_lemma(name + ".range", v >= 0 && v <= d);
-    return v;
-  }
-  expr sat_inc(const expr& e, int d) { return z3::ite(e >= d, I(d), e + 1); }
-  expr fconst(float v) { return ts_.float_const(v); }
-  expr fge(const expr& a, const expr& b) { return expr(c_, Z3_mk_fpa_geq(c_, a, b)); }
-  expr fle(const expr& a, const expr& b) { return expr(c_, Z3_mk_fpa_leq(c_, a, b)); }
-  expr flt(const expr& a, const expr& b) { return expr(c_, Z3_mk_fpa_lt(c_, a, b)); }
-  expr fabs_diff(const expr& a, const expr& b) {
-    expr d(c_, Z3_mk_fpa_sub(c_, ts_.rne(), a, b));
-    return expr(c_, Z3_mk_fpa_abs(c_, d));
-  }
-  expr not_nan(const expr& v) { return !expr(c_, Z3_mk_fpa_is_nan(c_, v)); }
-
-  // A per-cycle command input, gated by secure write (M.3). Creation order is
-  // the processing order (Encoding::canonical_commands).
-  expr command(CommandInput ci, const std::string& name) {
-    ci.var = ts_.make_inputvar(name, c_.bool_sort());
-    enc_.commands.push_back(ci);
-    return ci.var && cmd_ok_;
-  }
-  CommandInput cmd_of(model::CommandOp op) {
-    return CommandInput{op, 0, 0, 0, 0, true, "", B(false), std::nullopt};
-  }
-
-  // The raw input of a tag (I.1); created on first use.
-  expr raw_value(std::size_t index);
-  expr raw_bad(std::size_t index);
-  // A Boolean read of a tag slot by `reader` (E.1, C.8, M.2): an internal
-  // reference (I.3, I.4) or the raw input value; nullopt reader = matrix level.
-  expr bool_read(const std::string& name, const std::optional<Node>& reader);
-  expr ref_value(const model::InternalRef& r, const std::optional<Node>& reader);
-  expr edge_of(const std::string& state_name, const expr& now);
-
-  void build_matrix_level();
-  void build_commands();
-  // The steps of build_commands, in the order the encoding processes them.
-  void collect_simulations();
-  void make_tag_soft_bypass_states();
-  void command_simulate_tag();        // O.8
-  void command_stop_simulation();     // O.8
-  void command_soft_bypass_cause();   // O.5
-  void command_soft_bypass_tag();     // O.6
-  void command_soft_bypass_effect();  // O.7
-  void commands_without_interplay();  // O.9, O.10, O.1, O.2, O.3
-  expr sim_on(const std::string& name);
-  expr cause_locked_except(const model::Cause* cz, const std::string& key);
-  void build_cause(const model::Cause& cz);
-  void build_first_out();
-  void build_effect(const model::Effect& ef);
-  void finish_previous_refs();
-
-  z3::context& c_;
-  const model::Matrix& m_;
-  Encoding& enc_;
-  TransitionSystem& ts_;
-  model::DependencyGraph graph_;
-  expr first_;   // cycle 1 (T.3)
-  expr cmd_ok_;  // M.3: commands accepted in this cycle
-  expr gd_;      // M.2: group deactivation in this cycle
-  z3::sort fp32_;
-  std::set<Node> cone_;
-  std::vector<const model::Cause*> causes_;    // processed causes in the cone, by id
-  std::vector<const model::Effect*> effects_;  // processed effects in the cone, by id
-
-  std::map<std::size_t, expr> raw_value_, raw_bad_;
-  std::map<std::string, Simulation> sims_;     // by tag_key
-  std::vector<std::string> sim_order_;         // tag keys in processing order
-  std::map<std::string, std::vector<const model::Cause*>> readers_;   // tag key -> locked causes (O.6, O.8)
-  std::map<std::string, std::vector<const model::Effect*>> writers_;  // tag key -> locked effects (O.8)
-  std::map<int, std::vector<expr>> tag_sb_prev_;  // tag soft bypass (O.6): previous cycle, by cause
-  std::map<int, std::vector<expr>> tag_sb_;       // ... and at this point of the command sequence
-
-  // After phase 2 (commands).
-  struct CauseCommands {
-    expr sb_on;        // soft bypass after commands (before the C.1 expiry check)
-    expr sb_start;     // switched on in this cycle (timer starts)
-    expr sb_prev;      // state variable
-    std::vector<expr> tag_sb;  // tag soft bypass after commands
-    expr clear_alarms;
-    expr ack;
-  };
-  struct EffectCommands {
-    expr sb_on;
-    expr clear_alarms;
-    expr reset;   // reset_effect accepted
-    expr toggle;  // override_effect / stop_override accepted
-  };
-  std::map<int, CauseCommands> cause_cmds_;
-  std::map<int, EffectCommands> effect_cmds_;
-  std::map<int, expr> clear_first_out_;
-
-  std::map<int, expr> cause_active_;
-  std::map<int, expr> effect_active_;
-  std::map<std::pair<int, int>, expr> effect_tag_;
-  struct PrevRef {
-    model::InternalRef ref;
-    expr var;
-  };
-  std::map<std::tuple<int, int, int>, PrevRef> prev_refs_;
-  std::map<int, std::vector<std::pair<int, expr>>> first_out_groups_;
-};
+namespace detail {
 
 // ---- Inputs and reads ---------------------------------------------------------
 
@@ -356,42 +188,39 @@ void Builder::build_commands() {
   commands_without_interplay();
 }
 
-// The simulatable tags of the cone (O.8): external cause input tags in
-// InputTable order, then output tags by effect id and position.
+// The simulatable tags of the cone (O.8), in the model's order
+// (model::CommandOrder::simulatable_tags), so that a slice processes its
+// commands in the order of the whole matrix.
 void Builder::collect_simulations() {
-  std::vector<std::pair<std::size_t, std::string>> inputs;
+  std::set<std::string> read, written;  // tag keys
   for (const auto* cz : causes_)
     for (const auto& t : cz->tags) {
       if (model::parse_internal_ref(t.name)) continue;
       std::string key = model::tag_key(t.name);
       if (cz->mutually_locked_maintenance) readers_[key].push_back(cz);
-      auto idx = *enc_.inputs.find(t.name);
-      if (std::find_if(inputs.begin(), inputs.end(), [&](auto& p) { return p.first == idx; }) ==
-          inputs.end())
-        inputs.emplace_back(idx, key);
+      read.insert(key);
     }
-  std::sort(inputs.begin(), inputs.end());
-  auto add_sim = [&](const std::string& key, const std::string& name, bool analog, bool output) {
-    if (sims_.count(key)) return;
+  for (const auto* ef : effects_)
+    for (const auto& t : ef->tags) {
+      std::string key = model::tag_key(t.name);
+      if (ef->mutually_locked_maintenance) writers_[key].push_back(ef);
+      written.insert(key);
+    }
+  for (const auto& name : enc_.order.simulatable_tags()) {
+    std::string key = model::tag_key(name);
+    bool input = read.count(key) > 0;
+    if (!input && !written.count(key)) continue;
+    auto idx = enc_.inputs.find(name);
+    bool analog = input && idx && enc_.inputs.tags()[*idx].kind == model::TagKind::Analog;
     std::string sp = "sim[" + name + "]";
     z3::sort sort = analog ? fp32_ : c_.bool_sort();
     expr on = bool_state(sp + ".on", false);
     expr val = ts_.make_statevar(sp + ".value", sort);
     ts_.set_init(val, analog ? fconst(0.0f) : B(false));
     // M.2: group deactivation ends every simulation before the commands.
-    sims_.emplace(key, Simulation{name, analog, output, on && !gd_, val, on, val});
+    sims_.emplace(key, Simulation{name, analog, !input, on && !gd_, val, on, val});
     sim_order_.push_back(key);
-  };
-  for (auto& [idx, key] : inputs) {
-    const auto& tag = enc_.inputs.tags()[idx];
-    add_sim(key, tag.name, tag.kind == model::TagKind::Analog, false);
   }
-  for (const auto* ef : effects_)
-    for (const auto& t : ef->tags) {
-      std::string key = model::tag_key(t.name);
-      if (ef->mutually_locked_maintenance) writers_[key].push_back(ef);
-      add_sim(key, t.name, false, true);
-    }
 }
 
 // Tag soft bypass states before the commands (M.2 ends them first).
@@ -598,407 +427,6 @@ expr Builder::cause_locked_except(const model::Cause* cz, const std::string& key
   return any(busy);
 }
 
-// ---- Phase 3: causes -------------------------------------------------------------
-
-void Builder::build_cause(const model::Cause& cz) {
-  const Node self{Node::Kind::Cause, cz.id};
-  const std::string P = cause_prefix(cz.id);
-  const int n = static_cast<int>(cz.tags.size());
-  const bool analog = cz.input == model::InputKind::Analog && cz.analog.has_value();
-  const model::AnalogParams ap = analog ? *cz.analog : model::AnalogParams{};
-  const bool high = ap.limit_type == model::LimitType::High;
-  CauseCommands& cmds = cause_cmds_.at(cz.id);
-
-  // C.1: timed soft bypass, expiry checked at the start of the evaluation.
-  expr sb = cmds.sb_on;
-  expr bypass_timeout = B(false);
-  expr bypass_prealarm = B(false);
-  {
-    expr alarm = bool_state(P + ".bypass_timeout", false);
-    expr kept = alarm && !cmds.clear_alarms;
-    if (cz.soft_bypass.allowed && cz.soft_bypass.max_s > 0) {
-      const int d = cycles_of(std::uint64_t{cz.soft_bypass.max_s} * 1000, m_.cycle_ms);
-      expr cntv = counter(P + ".soft_bypass.elapsed", d);
-      expr elapsed = z3::ite(cmds.sb_start, I(0), cntv);
-      expr expired = sb && elapsed >= d;
-      sb = sb && !expired;
-      if (cz.soft_bypass.prealarm_s > 0) {
-        const int pre = cycles_of(std::uint64_t{cz.soft_bypass.prealarm_s} * 1000, m_.cycle_ms);
-        bypass_prealarm = sb && elapsed >= pre;
-      }
-      ts_.assign_next(cntv, z3::ite(sb, sat_inc(elapsed, d), I(0)));
-      bypass_timeout = kept || expired;
-    } else {
-      bypass_timeout = kept;
-    }
-    ts_.assign_next(alarm, bypass_timeout);
-  }
-  ts_.assign_next(cmds.sb_prev, sb);
-
-  // C.2: tag values and qualities.
-  std::vector<expr> values, bads;
-  for (int t = 0; t < n; ++t) {
-    const auto& tag = cz.tags[static_cast<std::size_t>(t)];
-    if (auto ref = model::parse_internal_ref(tag.name)) {
-      values.push_back(ref_value(*ref, self));
-      bads.push_back(B(false));
-      continue;
-    }
-    std::size_t idx = *enc_.inputs.find(tag.name);
-    expr raw = raw_value(idx);
-    expr bad = raw_bad(idx);
-    const Simulation& s = sims_.at(model::tag_key(tag.name));
-    values.push_back(z3::ite(s.on, s.value, raw));
-    bads.push_back(bad && !s.on);
-  }
-
-  // C.3: trip, taken out. C.4: voting with hysteresis.
-  expr hyst_mode = bool_state(P + ".trip_requested_prev", false);
-  const float relaxed = high ? ap.limit - ap.hysteresis : ap.limit + ap.hysteresis;
-  std::vector<expr> tripped, tripped_strict, out_bad, out;
-  for (int t = 0; t < n; ++t) {
-    const auto& tag = cz.tags[static_cast<std::size_t>(t)];
-    expr by_value = B(false), by_value_strict = B(false);
-    if (!analog) {
-      by_value = tag.ett ? values[t] : !values[t];
-      by_value_strict = by_value;
-    } else {
-      by_value_strict = high ? fge(values[t], fconst(ap.limit)) : fle(values[t], fconst(ap.limit));
-      expr relax = high ? fge(values[t], fconst(relaxed)) : fle(values[t], fconst(relaxed));
-      by_value = z3::ite(hyst_mode, relax, by_value_strict);
-    }
-    expr tsb = cmds.tag_sb[static_cast<std::size_t>(t)];
-    expr ob = cz.bad_quality == model::BadQuality::Degrade ? (bads[t] && !tsb) : B(false);
-    bool trip_bad = cz.bad_quality == model::BadQuality::Trip;
-    tripped.push_back(trip_bad ? (bads[t] || by_value) : by_value);
-    tripped_strict.push_back(trip_bad ? (bads[t] || by_value_strict) : by_value_strict);
-    out_bad.push_back(ob);
-    out.push_back(tsb || ob);
-  }
-  std::vector<expr> counted, counted_strict;
-  for (int t = 0; t < n; ++t) {
-    counted.push_back(tripped[t] && !out[t]);
-    counted_strict.push_back(tripped_strict[t] && !out[t]);
-  }
-  expr k = count(out);
-  expr cnt = count(counted);
-  expr cnt_strict = count(counted_strict);
-  expr any_bad_out = any(out_bad);
-  int X = 1;
-  if (cz.function == model::CauseFunction::And) X = n;
-  if (cz.function == model::CauseFunction::TwoOoThree) X = 2;
-  auto voting_code = [](int x, int of) -> int {
-    using V = model::Voting;
-    if (of == 1) return static_cast<int>(V::OneOoOne);
-    if (of == 2) return static_cast<int>(x == 1 ? V::OneOoTwo : V::TwoOoTwo);
-    return static_cast<int>(x == 1 ? V::OneOoThree : x == 2 ? V::TwoOoThree : V::ThreeOoThree);
-  };
-  expr tr = any_bad_out;  // m = 0
-  expr tr_strict = any_bad_out;
-  expr voting = z3::ite(any_bad_out, I(static_cast<int>(model::Voting::OneOoOne)),
-                        I(static_cast<int>(model::Voting::Bypass)));
-  for (int k0 = n - 1; k0 >= 0; --k0) {
-    int xk = std::max(1, X - k0);
-    tr = z3::ite(k == k0, cnt >= xk, tr);
-    tr_strict = z3::ite(k == k0, cnt_strict >= xk, tr_strict);
-    voting = z3::ite(k == k0, I(voting_code(xk, n - k0)), voting);
-  }
-  ts_.assign_next(hyst_mode, tr);
-
-  // C.5: delta alarm and prewarning (status only).
-  expr delta_alarm = B(false);
-  expr prewarning = B(false);
-  if (analog && ap.delta > 0.0f && n >= 2) {
-    std::vector<expr> pairs;
-    const float clear_below = ap.delta - ap.hysteresis;
-    for (int i = 0; i < n; ++i)
-      for (int j = i + 1; j < n; ++j) {
-        expr st = bool_state(
-            P + ".delta[" + std::to_string(i + 1) + "][" + std::to_string(j + 1) + "]", false);
-        expr diff = fabs_diff(values[i], values[j]);
-        expr now = z3::ite(fge(diff, fconst(ap.delta)), B(true),
-                           z3::ite(flt(diff, fconst(clear_below)), B(false), st));
-        ts_.assign_next(st, now);
-        pairs.push_back(now);
-      }
-    delta_alarm = any(pairs);
-  }
-  if (analog && ap.prewarning &&
-      (high ? *ap.prewarning < ap.limit : *ap.prewarning > ap.limit)) {
-    std::vector<expr> pw;
-    for (int t = 0; t < n; ++t)
-      pw.push_back(high ? fge(values[t], fconst(*ap.prewarning))
-                        : fle(values[t], fconst(*ap.prewarning)));
-    prewarning = any(pw);
-  }
-
-  // C.6: time function.
-  const int d = cycles_of(cz.time.ms, m_.cycle_ms);
-  expr tm = tr;
-  expr timer_running = B(false);
-  switch (cz.time.mode) {
-    case model::TimeMode::None:
-      break;
-    case model::TimeMode::OnDelay: {
-      // Counter = cycles TR has held before this cycle (saturating at D).
-      expr held = counter(P + ".on_delay.elapsed", d);
-      tm = tr && held >= d;
-      timer_running = tr && !tm;
-      ts_.assign_next(held, z3::ite(tr, sat_inc(held, d), I(0)));
-      break;
-    }
-    case model::TimeMode::OffDelay: {
-      expr tm_prev = bool_state(P + ".off_delay.tm_prev", false);
-      expr since = counter(P + ".off_delay.elapsed", d);
-      tm = tr || (tm_prev && since < d);
-      timer_running = !tr && tm;
-      ts_.assign_next(tm_prev, tm);
-      ts_.assign_next(since, z3::ite(tr, I(0), sat_inc(since, d)));
-      break;
-    }
-    case model::TimeMode::Timed: {
-      expr tr_prev = bool_state(P + ".timed.tr_prev", false);
-      expr running = bool_state(P + ".timed.running", false);
-      expr cntv = counter(P + ".timed.elapsed", d);
-      expr cont = running && cntv < d;
-      expr start = tr && !tr_prev && !cont;
-      tm = cont || (start && B(d > 0));
-      expr elapsed = z3::ite(start, I(0), cntv);
-      timer_running = tm;
-      ts_.assign_next(tr_prev, tr);
-      ts_.assign_next(running, tm);
-      ts_.assign_next(cntv, z3::ite(tm, sat_inc(elapsed, d), I(0)));
-      ts_.add_lemma(P + ".timed.running_bound", z3::implies(running, cntv <= d));
-      break;
-    }
-  }
-
-  // C.8 reads, C.7 latch, C.8 active.
-  expr hard = cz.bypass_tag ? bool_read(*cz.bypass_tag, self) : B(false);
-  expr inhibited = cz.inhibit_tag ? bool_read(*cz.inhibit_tag, self) : B(false);
-  expr bypassed = hard || sb;
-  expr latch_now = B(false);
-  bool has_latch = !cz.auto_ack && (cz.time.mode == model::TimeMode::None ||
-                                    cz.time.mode == model::TimeMode::OnDelay);
-  if (has_latch) {
-    expr latch = bool_state(P + ".ack_latch", false);
-    expr cleared = latch && !(cmds.ack && !tr);
-    latch_now = cleared || (tm && !bypassed && !inhibited);
-    ts_.assign_next(latch, latch_now);
-  }
-  expr active = (tm || latch_now) && !bypassed && !inhibited;
-  cause_active_.emplace(cz.id, active);
-
-  ts_.name_term(P + ".active", active);
-  ts_.name_term(P + ".trip_requested", tr);
-  ts_.name_term(P + ".tripped_tags", cnt);
-  ts_.name_term(P + ".voting", voting);
-  ts_.name_term(P + ".degraded", k > 0);
-  ts_.name_term(P + ".bypassed", bypassed);
-  ts_.name_term(P + ".soft_bypassed", sb);
-  ts_.name_term(P + ".inhibited", inhibited);
-  ts_.name_term(P + ".ack_required", latch_now);
-  ts_.name_term(P + ".hysteresis_active",
-                analog ? expr(hyst_mode && tr && !tr_strict) : B(false));
-  ts_.name_term(P + ".delta_alarm", delta_alarm);
-  ts_.name_term(P + ".prewarning", prewarning);
-  ts_.name_term(P + ".timer_running", timer_running);
-  ts_.name_term(P + ".bypass_timeout", bypass_timeout);
-  ts_.name_term(P + ".bypass_prealarm", bypass_prealarm);
-  if (cz.first_out_group >= 1 && cz.first_out_group <= model::kMaxFirstOutGroup)
-    first_out_groups_[cz.first_out_group].emplace_back(cz.id, active);
-  else
-    ts_.name_term(P + ".first_out", B(false));
-}
-
-// ---- Phase 4: first out (C.11) -------------------------------------------------
-
-void Builder::build_first_out() {
-  for (auto& [group, members] : first_out_groups_) {
-    std::sort(members.begin(), members.end(),
-              [](const auto& a, const auto& b) { return a.first < b.first; });
-    expr clear = clear_first_out_.at(group);
-    std::vector<expr> held, became, vars;
-    for (auto& [id, active] : members) {
-      std::string P = cause_prefix(id);
-      vars.push_back(bool_state(P + ".first_out", false));
-      held.push_back(vars.back() && !clear);
-      expr was = bool_state(P + ".active_prev", false);
-      ts_.assign_next(was, active);
-      became.push_back(active && !was);
-    }
-    expr holds = any(held);
-    expr earlier = B(false);
-    for (std::size_t i = 0; i < members.size(); ++i) {
-      expr now = held[i] || (!holds && became[i] && !earlier);
-      earlier = earlier || became[i];
-      ts_.assign_next(vars[i], now);
-      ts_.name_term(cause_prefix(members[i].first) + ".first_out", now);
-    }
-  }
-}
-
-// ---- Phase 3: effects -------------------------------------------------------------
-
-void Builder::build_effect(const model::Effect& ef) {
-  const Node self{Node::Kind::Effect, ef.id};
-  const std::string P = effect_prefix(ef.id);
-  EffectCommands& cmds = effect_cmds_.at(ef.id);
-
-  // E.2: requests per intersection type.
-  std::map<model::IntersectionType, std::vector<expr>> direct;
-  std::vector<expr> xoon_members;
-  std::optional<model::IntersectionType> xoon_type;
-  int xoon_x = 0;
-  std::vector<std::pair<int, expr>> linked;
-  for (const auto* is : m_.intersections_of_effect(ef.id)) {
-    if (!model::is_processed(is->type)) continue;
-    const model::Cause* cz = m_.find_cause(is->cause);
-    if (!cz || cz->function == model::CauseFunction::Comment) continue;
-    auto it = cause_active_.find(is->cause);
-    if (it == cause_active_.end()) throw std::logic_error("cause read before evaluation");
-    linked.emplace_back(is->cause, it->second);
-    if (is->xoon) {
-      xoon_members.push_back(it->second);
-      xoon_type = is->type;
-      xoon_x = xoon_x == 0 ? *is->xoon : std::min(xoon_x, *is->xoon);
-    } else {
-      direct[is->type].push_back(it->second);
-    }
-  }
-  auto req = [&](model::IntersectionType t) {
-    std::vector<expr> parts = direct[t];
-    if (xoon_type && *xoon_type == t) parts.push_back(count(xoon_members) >= xoon_x);
-    return any(parts);
-  };
-  expr reqN = req(model::IntersectionType::N);
-  expr reqS = req(model::IntersectionType::S);
-  expr reqV = req(model::IntersectionType::V);
-  expr reqR = req(model::IntersectionType::R);
-
-  // E.1: reads.
-  expr hard = ef.bypass_tag ? bool_read(*ef.bypass_tag, self) : B(false);
-  expr bypassed = hard || cmds.sb_on;
-  expr toggle = cmds.toggle;
-  if (ef.reset_tag) toggle = edge_of("prev." + P + ".reset_tag", bool_read(*ef.reset_tag, self));
-  expr od_prev = bool_state(P + ".output_delay_running_prev", false);
-
-  // E.3: override.
-  expr ov_now = B(false), fail_t = B(false), fail_c = B(false), prealarm = B(false);
-  expr was_running = B(false);
-  expr reset = cmds.reset;
-  if (ef.override_time) {
-    const int d = cycles_of(std::uint64_t{ef.override_time->max_s} * 1000, m_.cycle_ms);
-    expr ov = bool_state(P + ".override", false);
-    was_running = ov;
-    expr cntv = counter(P + ".override.elapsed", d);
-    expr alarm_t = bool_state(P + ".override_failed_timeout", false);
-    expr alarm_c = bool_state(P + ".override_failed_cause", false);
-    expr running = ov && !gd_;  // M.2
-    std::vector<expr> newcomers;
-    std::vector<std::pair<expr, expr>> snaps;  // (state, active)
-    for (auto& [cid, a] : linked) {
-      expr snap = bool_state(P + ".override.started_with[" + std::to_string(cid) + "]", false);
-      snaps.emplace_back(snap, a);
-      newcomers.push_back(a && !snap);
-    }
-    // Step 1: end conditions.
-    expr timeout = running && cntv >= d;
-    expr by_cause = running && any(newcomers);
-    expr gone = running && !(reqV || reqR);
-    running = running && !timeout && !by_cause && !gone;
-    // Step 2: toggle.
-    expr stop = toggle && running;
-    expr start = toggle && !running && (reqV || reqR) && !bypassed && !od_prev;
-    reset = reset || (toggle && !running && !start);
-    running = (running && !stop) || start;
-    ov_now = running;
-    expr elapsed = z3::ite(start, I(0), cntv);
-    fail_t = !start && ((alarm_t && !cmds.clear_alarms) || timeout);
-    fail_c = !start && ((alarm_c && !cmds.clear_alarms) || by_cause);
-    if (ef.override_time->prealarm_s > 0) {
-      const int pre = cycles_of(std::uint64_t{ef.override_time->prealarm_s} * 1000, m_.cycle_ms);
-      prealarm = running && elapsed >= pre;
-    }
-    for (auto& [snap, a] : snaps) ts_.assign_next(snap, z3::ite(start, a, snap));
-    ts_.assign_next(ov, running);
-    ts_.assign_next(cntv, z3::ite(running, sat_inc(elapsed, d), I(0)));
-    ts_.assign_next(alarm_t, fail_t);
-    ts_.assign_next(alarm_c, fail_c);
-  } else {
-    reset = reset || toggle;
-  }
-
-  // E.4 reset, E.5 latches.
-  expr s_latch = bool_state(P + ".s_latch", false);
-  expr r_latch = bool_state(P + ".r_latch", false);
-  expr req_r_prev = bool_state(P + ".req_r_prev", false);
-  expr s_now = (s_latch && !(reset && !reqS && !od_prev)) || reqS;
-  expr r_now = ((r_latch && !(reset && !reqR && !od_prev)) || reqR) &&
-               !(req_r_prev && !reqR && was_running);
-  ts_.assign_next(s_latch, s_now);
-  ts_.assign_next(r_latch, r_now);
-  ts_.assign_next(req_r_prev, reqR);
-  expr latched = s_now || r_now;
-
-  // E.6 active.
-  expr active = (reqN || s_now || ((reqV || r_now) && !ov_now)) && !bypassed;
-  effect_active_.emplace(ef.id, active);
-
-  // E.7 output delay.
-  expr os = active;
-  const int od = cycles_of(ef.output_delay_ms, m_.cycle_ms);
-  if (od > 0) {
-    expr os_prev = bool_state(P + ".output_state_prev", false);
-    expr held = counter(P + ".output_delay.elapsed", od);  // cycles active before this one
-    os = active && (os_prev || first_ || held >= od);
-    ts_.assign_next(os_prev, os);
-    ts_.assign_next(held, z3::ite(active, sat_inc(held, od), I(0)));
-  }
-  expr od_running = active && !os;
-  ts_.assign_next(od_prev, od_running);
-
-  // E.8 pass-through and mask, E.9 outputs, E.10 output simulation.
-  bool pass = false, has_mask = false;
-  expr process = B(false), mask = B(false);
-  if (ef.process_data && ef.process_data->tag) {
-    process = bool_read(*ef.process_data->tag, self);
-    pass = ef.process_data->pass_through;
-    if (ef.process_data->mask_tag) {
-      has_mask = true;
-      mask = bool_read(*ef.process_data->mask_tag, self);
-    }
-  }
-  for (std::size_t j = 0; j < ef.tags.size(); ++j) {
-    const auto& tag = ef.tags[j];
-    expr safe = B(tag.ett);
-    expr logic = tag.ett ? os : !os;
-    expr pv = tag.ett ? !process : process;
-    expr out = logic;
-    if (pass && has_mask) out = z3::ite(os, z3::ite(mask, pv, safe), pv);
-    else if (pass) out = z3::ite(os, safe, pv);
-    else if (has_mask) out = z3::ite(mask, pv, logic);
-    const Simulation& s = sims_.at(model::tag_key(tag.name));
-    out = z3::ite(s.on, s.value, out);
-    effect_tag_.emplace(std::make_pair(ef.id, static_cast<int>(j + 1)), out);
-    ts_.name_term(P + ".tag[" + std::to_string(j + 1) + "]", out);
-  }
-
-  ts_.name_term(P + ".active", active);
-  ts_.name_term(P + ".latched", latched);
-  ts_.name_term(P + ".ok_to_reset", latched && !reqS && !reqR && !od_running);
-  ts_.name_term(P + ".override_active", ov_now);
-  ts_.name_term(P + ".override_failed_timeout", fail_t);
-  ts_.name_term(P + ".override_failed_cause", fail_c);
-  ts_.name_term(P + ".override_prealarm", prealarm);
-  ts_.name_term(P + ".bypassed", bypassed);
-  ts_.name_term(P + ".soft_bypassed", cmds.sb_on);
-  ts_.name_term(P + ".masked", has_mask ? mask : B(false));
-  ts_.name_term(P + ".pass_through_active", pass ? expr(!os) : B(false));
-  ts_.name_term(P + ".output_delay_running", od_running);
-}
-
-// I.4: previous-cycle copies of references that close a cycle.
 void Builder::finish_previous_refs() {
   for (auto& [key, pr] : prev_refs_) {
     const auto& r = pr.ref;
@@ -1016,6 +444,7 @@ void Builder::finish_previous_refs() {
 
 void Builder::build(const std::vector<Node>& roots) {
   enc_.inputs = model::InputTable(m_);
+  enc_.order = model::CommandOrder(m_);
   enc_.tag_value.assign(enc_.inputs.size(), std::nullopt);
   enc_.tag_bad.assign(enc_.inputs.size(), std::nullopt);
   const auto& order = graph_.evaluation_order();
@@ -1048,7 +477,7 @@ void Builder::build(const std::vector<Node>& roots) {
     if (cone_.count(Node{o.kind, o.id}) && ts_.term(o.key)) enc_.observables.push_back(o);
 }
 
-}  // namespace
+}  // namespace detail
 
 std::unique_ptr<Encoding> encode(z3::context& ctx, const model::Matrix& m,
                                  const std::vector<Node>& roots) {

@@ -30,6 +30,10 @@ struct CommandInput {
   std::string tag_name; // SimulateTag / StopSimulation (empty: stop every simulation)
   z3::expr var;
   std::optional<z3::expr> value;
+
+  // The concrete command this input stands for (value 0: the value input's
+  // value is the trace's, not the encoding's).
+  model::Command command() const;
 };
 
 struct Encoding {
@@ -52,11 +56,14 @@ struct Encoding {
   // no effect in this encoding (target outside the cone, or never accepted).
   const CommandInput* find_command(const model::Command& c) const;
 
-  // The commands of one cycle as the encoding processes them: a set, in the
-  // encoding's fixed order (docs/encoding.md "Operator commands"); commands
-  // the encoding has no input for (always refused, or outside the cone) are
-  // dropped, repeats keep the last one's value. The runtime, given this list,
-  // must behave exactly as the encoding.
+  // The matrix's fixed command order (model::CommandOrder); the command
+  // inputs above were created in it.
+  model::CommandOrder order;
+
+  // The commands of one cycle as the encoding processes them: the model's
+  // canonical order (a set, repeats keep the last one's value) without the
+  // commands the encoding has no input for (always refused, or outside the
+  // cone). The runtime, given this list, must behave exactly as the encoding.
   std::vector<model::Command> canonical_commands(const std::vector<model::Command>& cmds) const;
 };
 

@@ -198,22 +198,22 @@ class RecordImporter {
     if (!type.empty() && type[0] == '#') return read_header(r);
     const RecordSchema* schema = find_schema(type);
     if (!schema) {
-      error(r.line, 1, "unknown record type '" + type +
-                           "' (expected property, sif_group, cause, cause_tag, effect, "
+      error(r.line, 1, "unknown record type " + in_quotes(type) +
+                           " (expected property, sif_group, cause, cause_tag, effect, "
                            "effect_tag, intersection or a '#' header)");
       return;
     }
     auto h = headers_.find(type);
     if (h == headers_.end()) {
-      error(r.line, 1, "'" + type + "' record before its header row '#" + type + "'");
+      error(r.line, 1, in_quotes(type) + " record before its header row " + in_quotes("#" + type));
       return;
     }
     const std::size_t width = schema->columns.size() + 1;
     for (std::size_t i = width; i < r.fields.size(); ++i)
       if (!r.fields[i].text.empty()) {
         error(r.line, static_cast<int>(i + 1),
-              "extra value '" + r.fields[i].text + "' beyond the " +
-                  std::to_string(schema->columns.size()) + " columns of '#" + type + "'");
+              "extra value " + in_quotes(r.fields[i].text) + " beyond the " +
+                  std::to_string(schema->columns.size()) + " columns of " + in_quotes("#" + type));
         break;  // still read the row, so later rows do not report follow-on errors
       }
     Row row{&r, &h->second, schema};
@@ -230,11 +230,11 @@ class RecordImporter {
     std::string type = r.fields[0].text.substr(1);
     const RecordSchema* schema = find_schema(type);
     if (!schema) {
-      error(r.line, 1, "unknown header '" + r.fields[0].text + "'");
+      error(r.line, 1, "unknown header " + in_quotes(r.fields[0].text));
       return;
     }
     if (headers_.count(type)) {
-      error(r.line, 1, "header '#" + type + "' repeated");
+      error(r.line, 1, "header " + in_quotes("#" + type) + " repeated");
       return;
     }
     std::vector<int> index(schema->columns.size(), -1);
@@ -244,13 +244,13 @@ class RecordImporter {
       if (name.empty()) continue;  // trailing empty cells a spreadsheet may add
       auto it = std::find(schema->columns.begin(), schema->columns.end(), name);
       if (it == schema->columns.end()) {
-        error(r.line, static_cast<int>(i + 1), "unknown column '" + name + "' for '" + type + "'");
+        error(r.line, static_cast<int>(i + 1), "unknown column " + in_quotes(name) + " for " + in_quotes(type));
         ok = false;
         continue;
       }
       auto k = static_cast<std::size_t>(it - schema->columns.begin());
       if (index[k] >= 0) {
-        error(r.line, static_cast<int>(i + 1), "column '" + name + "' repeated");
+        error(r.line, static_cast<int>(i + 1), "column " + in_quotes(name) + " repeated");
         ok = false;
         continue;
       }
@@ -258,7 +258,7 @@ class RecordImporter {
     }
     for (std::size_t k = 0; k < index.size(); ++k)
       if (index[k] < 0) {
-        error(r.line, 1, "header '#" + type + "' lacks column '" + schema->columns[k] + "'");
+        error(r.line, 1, "header " + in_quotes("#" + type) + " lacks column " + in_quotes(schema->columns[k]));
         ok = false;
       }
     if (ok) headers_[type] = std::move(index);
@@ -301,7 +301,7 @@ class RecordImporter {
     }
     auto v = parse_integer(f.text);
     if (!v || *v < lo || *v > hi) {
-      error(f.line, f.column, std::string(column) + ": '" + f.text + "' is not an integer in " +
+      error(f.line, f.column, std::string(column) + ": " + in_quotes(f.text) + " is not an integer in " +
                                   std::to_string(lo) + ".." + std::to_string(hi));
       return T{};
     }
@@ -321,7 +321,7 @@ class RecordImporter {
     if (trim(f.text).empty()) return fallback;
     auto v = parse_float(f.text);
     if (!v) {
-      error(f.line, f.column, std::string(column) + ": '" + f.text + "' is not a finite number");
+      error(f.line, f.column, std::string(column) + ": " + in_quotes(f.text) + " is not a finite number");
       return fallback;
     }
     return *v;
@@ -333,7 +333,7 @@ class RecordImporter {
     if (t.empty()) return fallback;
     if (t == "true") return true;
     if (t == "false") return false;
-    error(f.line, f.column, std::string(column) + ": '" + f.text + "' is not true or false");
+    error(f.line, f.column, std::string(column) + ": " + in_quotes(f.text) + " is not true or false");
     return fallback;
   }
 
@@ -344,7 +344,7 @@ class RecordImporter {
     if (trim(f.text).empty()) return fallback;
     auto v = enum_from<E>(f.text, values);
     if (!v) {
-      error(f.line, f.column, std::string(column) + ": '" + f.text + "' is not one of " +
+      error(f.line, f.column, std::string(column) + ": " + in_quotes(f.text) + " is not one of " +
                                   enum_choices<E>(values));
       return fallback;
     }
@@ -359,7 +359,7 @@ class RecordImporter {
       if (token.empty()) return;
       auto v = parse_integer(token);
       if (!v || *v < std::numeric_limits<int>::min() || *v > std::numeric_limits<int>::max())
-        error(f.line, f.column, "sif: '" + token + "' is not a SIF group number");
+        error(f.line, f.column, "sif: " + in_quotes(token) + " is not a SIF group number");
       else
         out.push_back(static_cast<int>(*v));
       token.clear();
@@ -377,13 +377,13 @@ class RecordImporter {
     const std::string key = std::string(trim(key_field.text));
     const std::string value = text(row, "value");
     if (!properties_seen_.insert(key).second) {
-      error(key_field.line, key_field.column, "property '" + key + "' repeated");
+      error(key_field.line, key_field.column, "property " + in_quotes(key) + " repeated");
       return;
     }
     if (key == "format") {
       if (value != kMatrixFormat)
         error(key_field.line, key_field.column + 1,
-              "format: '" + value + "' is not '" + kMatrixFormat + "'");
+              "format: " + in_quotes(value) + " is not " + in_quotes(kMatrixFormat));
     } else if (key == "name") {
       m_.name = value;
     } else if (key == "title") {
@@ -401,8 +401,8 @@ class RecordImporter {
     } else if (timing_property(key, row, key_field.line, key_field.column)) {
     } else {
       error(key_field.line, key_field.column,
-            "unknown property '" + key +
-                "' (expected format, name, title, cycle_ms, secure_write.enable_tag, "
+            "unknown property " + in_quotes(key) +
+                " (expected format, name, title, cycle_ms, secure_write.enable_tag, "
                 "group_deactivation.enable_tag, group_deactivation.set_tag, watchdog_ms, "
                 "sif_group.N.process_safety_time_ms, cause.ID.sensor_ms, effect.ID.actuator_ms)");
     }
@@ -644,7 +644,7 @@ class RecordImporter {
     auto type = enum_from<IntersectionType>(type_field.text, kIntersectionTypes);
     if (!type) {
       error(type_field.line, type_field.column,
-            "type: '" + type_field.text + "' is not one of N, S, V, R, X, *");
+            "type: " + in_quotes(type_field.text) + " is not one of N, S, V, R, X, *");
     } else {
       x.type = *type;
     }

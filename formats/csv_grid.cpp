@@ -256,7 +256,7 @@ class GridImporter {
         if (!marks) {
           warn(row.line, sheet_.column_of(0),
                "text row without " + std::string(kind == std::string("cause") ? "a cause" : "an effect") +
-                   " id or intersections ignored: '" + label + "'");
+                   " id or intersections ignored: " + in_quotes(label));
           continue;
         }
         c.unnamed = upper(kind) + "_LINE_" + std::to_string(row.line);

@@ -7,6 +7,7 @@
 
 #include "formats/csv_grid.hpp"
 #include "formats/csv_text.hpp"
+#include "model/text.hpp"
 
 namespace cemv::formats::grid {
 
@@ -53,7 +54,7 @@ class CellReader {
         if (i >= end) {
           if (!t.empty())
             warnings_.at(row.line, column,
-                 "stray value '" + t + "' right of the last " + column_kind + " column; ignored");
+                 "stray value " + model::in_quotes(t) + " right of the last " + column_kind + " column; ignored");
           continue;
         }
         if (t.empty()) {
@@ -66,7 +67,7 @@ class CellReader {
         const auto mark = parse_mark(t);
         if (!mark) {
           warnings_.at(row.line, column,
-               "stray value '" + t + "' at cause " + cause.name + " / effect " + effect.name +
+               "stray value " + model::in_quotes(t) + " at cause " + cause.name + " / effect " + effect.name +
                    " is not N, S, V, R, X or * (with optional footnotes like R(1)); ignored: no "
                    "intersection imported");
           continue;
@@ -75,7 +76,7 @@ class CellReader {
         if (letter >= 'a' && letter <= 'z') {
           letter = static_cast<char>(letter - 'a' + 'A');
           warnings_.at(row.line, column,
-               "lower-case mark '" + t + "' read as '" + std::string(1, letter) + "'");
+               "lower-case mark " + model::in_quotes(t) + " read as " + model::in_quotes(std::string(1, letter)));
         }
         Intersection x;
         x.cause = cause.id;

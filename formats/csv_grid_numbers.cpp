@@ -8,6 +8,7 @@
 #include "formats/csv_grid.hpp"
 #include "formats/csv_text.hpp"
 #include "model/matrix.hpp"
+#include "model/text.hpp"
 #include "model/vocabulary.hpp"
 
 namespace cemv::formats::grid {
@@ -47,11 +48,11 @@ void report_out_of_order(const std::vector<SheetElement>& elements,
     if (in_run[k]) continue;
     const auto& e = elements[order[k]];
     std::string place;
-    if (order[k] > 0) place += "after '" + elements[order[k] - 1].sheet_id + "'";
+    if (order[k] > 0) place += "after " + model::in_quotes(elements[order[k] - 1].sheet_id);
     if (order[k] + 1 < elements.size())
-      join_to(place, ", ", "before '" + elements[order[k] + 1].sheet_id + "'");
+      join_to(place, ", ", "before " + model::in_quotes(elements[order[k] + 1].sheet_id));
     warnings.at(e.line, e.column,
-         std::string(kind) + " id '" + e.sheet_id + "' out of order (" + place +
+         std::string(kind) + " id " + model::in_quotes(e.sheet_id) + " out of order (" + place +
              "); it keeps its number (" + kind + " " + std::to_string(e.id) +
              ") and the matrix lists " + kind + "s by number");
   }
@@ -103,8 +104,8 @@ void number_elements(std::vector<SheetElement>& elements, const char* kind, cons
         e.id = next_free++;
         if (!duplicate)
           warnings.at(e.line, e.column,
-               std::string(kind) + " id '" + e.sheet_id + "' ends in the same number as '" +
-                   elements[same_number->second].sheet_id + "'; numbered " + std::to_string(e.id));
+               std::string(kind) + " id " + model::in_quotes(e.sheet_id) + " ends in the same number as " +
+                   model::in_quotes(elements[same_number->second].sheet_id) + "; numbered " + std::to_string(e.id));
       }
     } else {
       e.id = static_cast<int>(i + 1);
@@ -125,8 +126,8 @@ void number_elements(std::vector<SheetElement>& elements, const char* kind, cons
     if (duplicate) {
       const auto& f = elements[first->second];
       warnings.at(e.line, e.column,
-           std::string(kind) + " id '" + e.sheet_id + "' repeats line " + std::to_string(f.line) +
-               " ('" + f.text + "'); both rows are kept as separate " + kind + "s: line " +
+           std::string(kind) + " id " + model::in_quotes(e.sheet_id) + " repeats line " + std::to_string(f.line) +
+               " (" + model::in_quotes(f.text) + "); both rows are kept as separate " + kind + "s: line " +
                std::to_string(f.line) + " is " + kind + " " + std::to_string(f.id) + " " + f.name +
                ", this one " + kind + " " + std::to_string(e.id) + " " + e.name +
                " (not merged: merging would lose one row's intersections; give it its own id "

@@ -205,6 +205,159 @@ std::vector<Observable> observables(const Matrix& m) {
   return out;
 }
 
+// ---- The fixed command order ------------------------------------------------
+
+CommandOrder::Key CommandOrder::key_of(const Command& c) {
+  using Op = CommandOp;
+  const int op = static_cast<int>(c.op);
+  switch (c.op) {
+    case Op::AckCause: return {op, c.cause, 0, 0, 0, true, ""};
+    case Op::ResetEffect:
+    case Op::OverrideEffect:
+    case Op::StopOverride: return {op, 0, c.effect, 0, 0, true, ""};
+    case Op::SoftBypassCause: return {op, c.cause, 0, 0, 0, c.on, ""};
+    case Op::SoftBypassTag: return {op, c.cause, 0, c.tag, 0, c.on, ""};
+    case Op::SoftBypassEffect: return {op, 0, c.effect, 0, 0, c.on, ""};
+    case Op::SimulateTag:
+    case Op::StopSimulation: return {op, 0, 0, 0, 0, true, tag_key(c.tag_name)};
+    case Op::ClearFirstOut: return {op, 0, 0, 0, c.group, true, ""};
+    case Op::ClearAlarms: return {op, c.cause, c.effect, 0, 0, true, ""};
+  }
+  return {op, c.cause, c.effect, c.tag, c.group, c.on, tag_key(c.tag_name)};
+}
+
+void CommandOrder::add(const Command& c) { rank_.emplace(key_of(c), rank_.size()); }
+
+CommandOrder::CommandOrder(const Matrix& m) {
+  using Op = CommandOp;
+  std::vector<const Cause*> causes;
+  std::vector<const Effect*> effects;
+  for (const auto& c : m.causes)
+    if (c.function != CauseFunction::Comment) causes.push_back(&c);
+  for (const auto& e : m.effects)
+    if (e.function != EffectFunction::Comment) effects.push_back(&e);
+
+  // O.8: cause input tags (InputTable order), then output tags.
+  std::vector<std::string> keys;
+  auto simulatable = [&](const std::string& name) {
+    std::string key = tag_key(name);
+    if (std::find(keys.begin(), keys.end(), key) != keys.end()) return;
+    keys.push_back(key);
+    simulatable_.push_back(name);
+  };
+  const InputTable table(m);
+  for (const auto& t : table.tags())
+    if (std::find(t.roles.begin(), t.roles.end(), TagRole::CauseInput) != t.roles.end())
+      simulatable(t.name);
+  for (const auto* e : effects)
+    for (const auto& t : e->tags) simulatable(t.name);
+
+  auto command = [](Op op) {
+    Command c;
+    c.op = op;
+    return c;
+  };
+  for (const auto& name : simulatable_) {
+    Command c = command(Op::SimulateTag);
+    c.tag_name = name;
+    add(c);
+  }
+  for (const auto& name : simulatable_) {
+    Command c = command(Op::StopSimulation);
+    c.tag_name = name;
+    add(c);
+  }
+  add(command(Op::StopSimulation));
+  for (const auto* cz : causes)
+    for (bool on : {true, false}) {
+      Command c = command(Op::SoftBypassCause);
+      c.cause = cz->id;
+      c.on = on;
+      add(c);
+    }
+  for (const auto* cz : causes)
+    for (int t = 1; t <= static_cast<int>(cz->tags.size()); ++t)
+      for (bool on : {true, false}) {
+        Command c = command(Op::SoftBypassTag);
+        c.cause = cz->id;
+        c.tag = t;
+        c.on = on;
+        add(c);
+      }
+  for (const auto* ef : effects)
+    for (bool on : {true, false}) {
+      Command c = command(Op::SoftBypassEffect);
+      c.effect = ef->id;
+      c.on = on;
+      add(c);
+    }
+  for (int g = 1; g <= kMaxFirstOutGroup; ++g) {
+    Command c = command(Op::ClearFirstOut);
+    c.group = g;
+    add(c);
+  }
+  for (const auto* cz : causes) {
+    Command c = command(Op::ClearAlarms);
+    c.cause = cz->id;
+    add(c);
+  }
+  for (const auto* ef : effects) {
+    Command c = command(Op::ClearAlarms);
+    c.effect = ef->id;
+    add(c);
+  }
+  for (const auto* cz : causes) {
+    Command c = command(Op::AckCause);
+    c.cause = cz->id;
+    add(c);
+  }
+  for (const auto* ef : effects)
+    for (Op op : {Op::ResetEffect, Op::OverrideEffect, Op::StopOverride}) {
+      Command c = command(op);
+      c.effect = ef->id;
+      add(c);
+    }
+}
+
+std::optional<std::size_t> CommandOrder::rank(const Command& c) const {
+  auto it = rank_.find(key_of(c));
+  if (it == rank_.end()) return std::nullopt;
+  return it->second;
+}
+
+std::vector<Command> CommandOrder::canonical(const std::vector<Command>& cmds) const {
+  // Sorted by (rank, key); a command naming nothing of the matrix ranks after all.
+  std::vector<std::pair<std::pair<std::size_t, Key>, Command>> picked;
+  auto pick = [&](const Command& c) {
+    Key key = key_of(c);
+    auto it = rank_.find(key);
+    std::pair<std::size_t, Key> at{it == rank_.end() ? rank_.size() : it->second, std::move(key)};
+    for (auto& p : picked)
+      if (p.first == at) {
+        p.second = c;  // a repeat: the last one wins
+        return;
+      }
+    picked.emplace_back(std::move(at), c);
+  };
+  for (const auto& c : cmds) {
+    if (c.op == CommandOp::ClearAlarms && c.cause != 0 && c.effect != 0) {
+      Command a = c, b = c;  // O.10: both named, both cleared
+      a.effect = 0;
+      b.cause = 0;
+      pick(a);
+      pick(b);
+    } else {
+      pick(c);
+    }
+  }
+  std::sort(picked.begin(), picked.end(),
+            [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<Command> out;
+  out.reserve(picked.size());
+  for (auto& p : picked) out.push_back(std::move(p.second));
+  return out;
+}
+
 TagValue default_tag_value(const Matrix& m, const InputTag& tag) {
   TagValue v;
   if (std::find(tag.roles.begin(), tag.roles.end(), TagRole::CauseInput) == tag.roles.end())

@@ -6,9 +6,11 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <vector>
 
 #include "model/matrix.hpp"
@@ -113,6 +115,55 @@ struct Command {
 struct CycleInput {
   std::vector<TagValue> tags;
   std::vector<Command> commands;
+};
+
+// ---- The fixed command order (M.1, docs/encoding.md "Operator commands") ----
+
+// The one order in which a cycle's commands are processed as a set. The
+// encoder creates its command inputs in this order, so the runtime, given a
+// cycle's commands in this order, computes exactly what the encoding computes:
+// every replay that compares the two (the differential test, the checker's
+// counterexamples and the scenarios written from them) orders commands here.
+//  1. simulate_tag, by simulatable tag (simulatable_tags());
+//  2. stop_simulation by simulatable tag, then for every tag (empty name);
+//  3. soft_bypass_cause by cause: on, then off;
+//  4. soft_bypass_tag by cause and tag position: on, then off;
+//  5. soft_bypass_effect by effect: on, then off;
+//  6. the commands without interplay: clear_first_out by group, clear_alarms
+//     of each cause, then of each effect, ack_cause by cause, then per effect
+//     reset_effect, override_effect, stop_override.
+// Causes and effects go in the matrix's order (by id), processed ones only
+// (M.4). The order is by target, not by configuration: whether the matrix can
+// ever accept a command (O.1-O.10) is semantics, decided by each implementation.
+class CommandOrder {
+ public:
+  CommandOrder() = default;
+  explicit CommandOrder(const Matrix& m);
+
+  // The tags O.8 lets an operator simulate, in order: external cause input
+  // tags in InputTable order (spelt as there), then output tags of processed
+  // effects by effect and position (spelt as the effect writes them).
+  const std::vector<std::string>& simulatable_tags() const { return simulatable_; }
+
+  // The commands of one cycle as a set in this order. A clear_alarms naming a
+  // cause and an effect counts as the two commands (O.10); repeats of one
+  // command (same op and target, same on/off) keep the last one, with its
+  // value and spelling. A command naming nothing of the matrix (an unknown
+  // element, tag position, tag or group), which every cycle refuses alike,
+  // goes after all others, ordered by op and target.
+  std::vector<Command> canonical(const std::vector<Command>& cmds) const;
+
+  // The position of a command in the order; nullopt for one naming nothing of
+  // the matrix (and for clear_alarms naming both or neither).
+  std::optional<std::size_t> rank(const Command& c) const;
+
+ private:
+  using Key = std::tuple<int, int, int, int, int, bool, std::string>;
+  static Key key_of(const Command& c);
+  void add(const Command& c);
+
+  std::vector<std::string> simulatable_;
+  std::map<Key, std::size_t> rank_;
 };
 
 // ---- Default inputs ---------------------------------------------------------

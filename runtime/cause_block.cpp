@@ -73,72 +73,98 @@ bool CauseBlock::tag_tripped(float value, bool bad, int position, float threshol
   return value <= threshold;
 }
 
+// One evaluation in cycle k: the paragraphs of section C in order, each a
+// step. The per-cycle values between the steps live on the stack (fixed-size
+// arrays), so a cycle allocates nothing; the steps are inline (defined below,
+// used only here) so that the split costs no calls (bench_runtime).
 void CauseBlock::evaluate(const Signals& s, std::uint64_t k) {
   active_before_ = active_;  // prev(active), for first out (C.11)
+  expire_soft_bypass(k);                                  // C.1
+  TagReadings tags{};
+  read_tags(s, tags);                                     // C.2
+  TakenOut out{};
+  take_out(tags, out);                                    // C.3
+  const bool tr = vote(tags, out);                        // C.4
+  watch_delta_and_prewarning(tags);                       // C.5
+  const bool tm = time_function(tr, k);                   // C.6
+  read_bypass_and_inhibit(s);                             // C.8, inputs
+  latch_acknowledgement(tr, tm);                          // C.7
+  // C.8 Active.
+  active_ = (tm || ack_latch_) && !bypassed_ && !inhibited_;
+  trip_requested_ = tr;
+  // Memory for the next cycle.
+  trip_requested_before_ = tr;
+  timed_before_ = tm;
+}
 
-  // C.1 Timed soft bypass: removed at expiry, with the "bypass timeout" alarm.
+// C.1 Timed soft bypass: removed at expiry, with the "bypass timeout" alarm.
+inline void CauseBlock::expire_soft_bypass(std::uint64_t k) {
   if (soft_bypass_ && cfg_.soft_bypass_timed && k - soft_bypass_start_ >= cfg_.soft_bypass_cycles) {
     soft_bypass_ = false;
     bypass_timeout_ = true;
   }
   bypass_prealarm_ = soft_bypass_ && cfg_.soft_bypass_timed && cfg_.soft_bypass_prealarm &&
                      k - soft_bypass_start_ >= cfg_.soft_bypass_prealarm_cycles;
+}
 
-  // C.2 Tag values (simulation, reference or input).
-  std::array<float, model::kMaxCauseTags> value{};
-  std::array<bool, model::kMaxCauseTags> bad{};
+// C.2 Tag values (simulation, reference or input).
+inline void CauseBlock::read_tags(const Signals& s, TagReadings& tags) const {
   for (int i = 0; i < cfg_.tag_count; ++i) {
     model::TagValue v = s.read_cause_input(cfg_.tag_source[i]);
-    value[i] = v.value;
-    bad[i] = v.bad_quality;
+    tags.value[i] = v.value;
+    tags.bad[i] = v.bad_quality;
   }
+}
 
-  // C.3 Taken out of the voting: soft-bypassed, or degraded for bad quality.
-  int taken_out = 0;
-  bool taken_out_for_bad_quality = false;
-  std::array<bool, model::kMaxCauseTags> votes{};
+// C.3 Taken out of the voting: soft-bypassed, or degraded for bad quality.
+inline void CauseBlock::take_out(const TagReadings& tags, TakenOut& out) const {
   for (int i = 0; i < cfg_.tag_count; ++i) {
-    bool out_bq = !tag_soft_bypassed_[i] && cfg_.bad_quality == model::BadQuality::Degrade && bad[i];
-    votes[i] = !tag_soft_bypassed_[i] && !out_bq;
-    if (!votes[i]) ++taken_out;
-    if (out_bq) taken_out_for_bad_quality = true;
+    bool out_bq = !tag_soft_bypassed_[i] && cfg_.bad_quality == model::BadQuality::Degrade && tags.bad[i];
+    out.votes[i] = !tag_soft_bypassed_[i] && !out_bq;
+    if (!out.votes[i]) ++out.count;
+    if (out_bq) out.for_bad_quality = true;
   }
-  const int voting_tags = cfg_.tag_count - taken_out;
+}
 
-  // C.4 Voting with degraded voting and cause-level hysteresis.
+// C.4 Voting with degraded voting and cause-level hysteresis; returns TR.
+inline bool CauseBlock::vote(const TagReadings& tags, const TakenOut& out) {
+  const int voting_tags = cfg_.tag_count - out.count;
   const bool hysteresis_mode = cfg_.analog && trip_requested_before_;
   const float threshold = hysteresis_mode ? cfg_.relaxed_threshold : cfg_.limit;
   int tripped = 0;
   int tripped_strict = 0;
   for (int i = 0; i < cfg_.tag_count; ++i) {
-    if (!votes[i]) continue;
-    if (tag_tripped(value[i], bad[i], i, threshold)) ++tripped;
-    if (tag_tripped(value[i], bad[i], i, cfg_.limit)) ++tripped_strict;
+    if (!out.votes[i]) continue;
+    if (tag_tripped(tags.value[i], tags.bad[i], i, threshold)) ++tripped;
+    if (tag_tripped(tags.value[i], tags.bad[i], i, cfg_.limit)) ++tripped_strict;
   }
   bool trip_requested = false;
   bool strict_request = false;
   if (voting_tags == 0) {
-    trip_requested = taken_out_for_bad_quality;  // the "(1oo1)" rows of appendix B
+    trip_requested = out.for_bad_quality;  // the "(1oo1)" rows of appendix B
     strict_request = trip_requested;
-    voting_ = taken_out_for_bad_quality ? model::Voting::OneOoOne : model::Voting::Bypass;
+    voting_ = out.for_bad_quality ? model::Voting::OneOoOne : model::Voting::Bypass;
   } else {
-    const int x = std::max(1, cfg_.configured_x - taken_out);
+    const int x = std::max(1, cfg_.configured_x - out.count);
     trip_requested = tripped >= x;
     strict_request = tripped_strict >= x;
     voting_ = voting_of(x, voting_tags);
   }
   tripped_tags_ = tripped;
-  degraded_ = taken_out > 0;
+  degraded_ = out.count > 0;
   hysteresis_active_ = hysteresis_mode && trip_requested && !strict_request;
+  return trip_requested;
+}
 
-  // C.5 Delta alarm per pair of tags, and prewarning. Status only.
+// C.5 Delta alarm per pair of tags, and prewarning. Status only.
+inline void CauseBlock::watch_delta_and_prewarning(const TagReadings& tags) {
   delta_alarm_ = false;
   if (cfg_.delta_enabled) {
     static constexpr int kPairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
     for (int p = 0; p < 3; ++p) {
       int i = kPairs[p][0], j = kPairs[p][1];
       if (j >= cfg_.tag_count) continue;
-      float d = std::fabs(value[i] - value[j]);
+      float d = std::fabs(tags.value[i] - tags.value[j]);
       if (d >= cfg_.delta) delta_pair_alarm_[p] = true;
       else if (d < cfg_.delta_clear) delta_pair_alarm_[p] = false;
       if (delta_pair_alarm_[p]) delta_alarm_ = true;
@@ -147,14 +173,15 @@ void CauseBlock::evaluate(const Signals& s, std::uint64_t k) {
   prewarning_ = false;
   if (cfg_.prewarning_enabled) {
     for (int i = 0; i < cfg_.tag_count; ++i) {
-      bool beyond = cfg_.limit_type == model::LimitType::High ? value[i] >= cfg_.prewarning
-                                                              : value[i] <= cfg_.prewarning;
+      bool beyond = cfg_.limit_type == model::LimitType::High ? tags.value[i] >= cfg_.prewarning
+                                                              : tags.value[i] <= cfg_.prewarning;
       if (beyond) prewarning_ = true;
     }
   }
+}
 
-  // C.6 Time function: TR -> TM.
-  const bool tr = trip_requested;
+// C.6 Time function: TR -> TM.
+inline bool CauseBlock::time_function(bool tr, std::uint64_t k) {
   const bool tr_rose = tr && !trip_requested_before_;
   bool tm = false;
   timer_running_ = false;
@@ -192,28 +219,25 @@ void CauseBlock::evaluate(const Signals& s, std::uint64_t k) {
       timer_running_ = timer_is_running_;
       break;
   }
+  return tm;
+}
 
-  // C.8 (inputs) Bypass and inhibit of this cycle.
+// C.8 (inputs) Bypass and inhibit of this cycle.
+inline void CauseBlock::read_bypass_and_inhibit(const Signals& s) {
   const bool hard_bypass = cfg_.has_bypass_tag && s.read_bool(cfg_.bypass_tag);
   bypassed_ = hard_bypass || soft_bypass_;
   inhibited_ = cfg_.has_inhibit_tag && s.read_bool(cfg_.inhibit_tag);
+}
 
-  // C.7 Acknowledgement latch: cleared by an ack only once the trip is no
-  // longer requested; set while TM holds and the cause is neither bypassed nor
-  // inhibited.
+// C.7 Acknowledgement latch: cleared by an ack only once the trip is no
+// longer requested; set while TM holds and the cause is neither bypassed nor
+// inhibited.
+inline void CauseBlock::latch_acknowledgement(bool tr, bool tm) {
   if (cfg_.has_ack_latch) {
     if (ack_requested_ && !tr) ack_latch_ = false;
     if (tm && !bypassed_ && !inhibited_) ack_latch_ = true;
   }
   ack_requested_ = false;  // an ack is never remembered past its cycle
-
-  // C.8 Active.
-  active_ = (tm || ack_latch_) && !bypassed_ && !inhibited_;
-  trip_requested_ = tr;
-
-  // Memory for the next cycle.
-  trip_requested_before_ = tr;
-  timed_before_ = tm;
 }
 
 int CauseBlock::field(CauseField f) const {

@@ -90,6 +90,25 @@ class CauseBlock {
   int field(CauseField f) const;
 
  private:
+  // The per-cycle values passed between the steps of evaluate(), on the stack.
+  struct TagReadings {
+    std::array<float, model::kMaxCauseTags> value;
+    std::array<bool, model::kMaxCauseTags> bad;
+  };
+  struct TakenOut {
+    std::array<bool, model::kMaxCauseTags> votes;  // the tag votes (not taken out)
+    int count;                                     // tags taken out
+    bool for_bad_quality;                          // one of them for bad quality
+  };
+  // The steps of evaluate(), one per paragraph of docs/semantics.md section C.
+  void expire_soft_bypass(std::uint64_t k);                           // C.1
+  void read_tags(const Signals& s, TagReadings& tags) const;          // C.2
+  void take_out(const TagReadings& tags, TakenOut& out) const;       // C.3
+  bool vote(const TagReadings& tags, const TakenOut& out);            // C.4
+  void watch_delta_and_prewarning(const TagReadings& tags);           // C.5
+  bool time_function(bool tr, std::uint64_t k);                       // C.6
+  void read_bypass_and_inhibit(const Signals& s);                     // C.8, inputs
+  void latch_acknowledgement(bool tr, bool tm);                       // C.7
   bool tag_tripped(float value, bool bad, int position, float threshold) const;
 
   CauseConfig cfg_;

@@ -219,6 +219,12 @@ TEST(CsvImportErrors, EachMalformedInputNamesItsLineAndColumn) {
       {"wrong format", "property,format,cemv-matrix/1", "property,format,cemv-matrix/2", "line 2, column 3", "is not 'cemv-matrix/1'"},
       {"repeated property", "property,cycle_ms,50", "property,name,X", "line 5, column 2", "property 'name' repeated"},
       {"unknown property", "property,cycle_ms,50", "property,cycle,50", "line 5, column 2", "unknown property 'cycle'"},
+      // User text is quoted as in every other format (model::in_quotes): bytes
+      // outside printable ASCII escaped, shortened after 48 characters.
+      {"control byte in a value", "on_delay,2000,false", "on_delay,2000,fa\x1b[2Jlse", "line 14, column 11",
+       "auto_ack: 'fa\\\\x1B\\[2Jlse' is not true or false"},
+      {"long value", "property,cycle_ms,50", "property,cycle_ms," + std::string(60, '9'), "line 5, column 3",
+       "value: '9{48}\\.\\.\\.' is not an integer"},
       {"analog value without limit type", "cause,7,COMMENT_ONLY,Comment line,0,discrete,comment,trip,none,0,true,true,0,0,,,0,false,,,",
        "cause,7,COMMENT_ONLY,Comment line,0,discrete,comment,trip,none,0,true,true,0,0,,,0,false,,,5", "line 18, column 21",
        "analog_limit given without analog_limit_type"},
