@@ -44,6 +44,8 @@ int main(int argc, char** argv) {
   cemv::cli::add_smt_commands(app, ctx);
 #ifdef CEMV_WITH_CHECK  // defined when the checker and the property language are built
   cemv::cli::add_check_commands(app, ctx);
+#endif
+#ifdef CEMV_WITH_VERIFICATION  // the commands built on the checker (not in the CLI tests' checker double)
   cemv::cli::add_mutate_commands(app, ctx);
   cemv::cli::add_diff_commands(app, ctx);
   cemv::cli::add_response_commands(app, ctx);

@@ -2,6 +2,8 @@
 // the expansion into cycles. The matrix is built in code so these tests need
 // neither the matrix loader nor the runtime, except the last one, which checks
 // that the runtime's own defaults agree with the scenario defaults.
+#include <limits>
+
 #include <gtest/gtest.h>
 
 #include "formats/matrix_json.hpp"
@@ -115,6 +117,18 @@ TEST(ScenarioParse, InitialValuesApplyBeforeTheFirstStep) {
   ASSERT_EQ(ex.cycles.size(), 1u);
   EXPECT_TRUE(ex.cycles[0].tags[*t.find("LT_100C")].bad_quality);
   EXPECT_EQ(ex.cycles[0].tags[*t.find("LT_100C")].value, 84.0f);  // value kept
+}
+
+TEST(ScenarioParse, ReadsTheShortestTextOfTheLargestFloats) {
+  // 3.4028235e+38 is a little above FLT_MAX as a double yet rounds to it;
+  // the checker writes it in counterexamples, so it must read back.
+  Matrix m = tank();
+  Scenario sc = parse_scenario(
+      R"({"format":"cemv-scenario/1","steps":[{"inputs":{"LT_100A":-3.4028235e+38,"LT_100B":3.4028235e+38}}]})", m);
+  ExpandedScenario ex = expand_scenario(sc, m);
+  InputTable t(m);
+  EXPECT_EQ(ex.cycles[0].tags[*t.find("LT_100A")].value, -std::numeric_limits<float>::max());
+  EXPECT_EQ(ex.cycles[0].tags[*t.find("LT_100B")].value, std::numeric_limits<float>::max());
 }
 
 struct Rejection {
