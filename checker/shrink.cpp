@@ -22,6 +22,9 @@ z3::expr constant_of(const encoder::TransitionSystem& ts, const z3::expr& var, c
 
 }  // namespace
 
+// Solver calls of the grow pass (step 2 below) at most.
+constexpr std::size_t kMaxGrowTries = 150;
+
 Trace shrink_trace(const SafetyProblem& problem, const Trace& cex, const PreferredValue& preferred,
                    const Limits& limits, std::size_t max_cycles) {
   const std::size_t n = cex.length();
@@ -86,14 +89,17 @@ Trace shrink_trace(const SafetyProblem& problem, const Trace& cex, const Preferr
     if (!model) return cex;
     // 2. Grow: a core drops more than the violation needs. Take back every
     // dropped literal the model already satisfies, and try the others one by
-    // one, in order: what is left is a maximal set of inputs at rest.
+    // one, in order: what is left is a maximal set of inputs at rest. The
+    // tries are counted, not timed, so the result never depends on the
+    // machine's speed: a long trace keeps what the cheap part gives.
+    std::size_t tries = 0;
     for (std::size_t i = 0; i < literals.size(); ++i) {
       if (kept[i]) continue;
       if (model->eval(meaning[i], true).is_true()) {
         kept[i] = true;
         continue;
       }
-      if (limits.over()) break;
+      if (limits.over() || ++tries > kMaxGrowTries) continue;
       set_timeout(s, limits);
       if (s.check(vector_of(kept, i)) == z3::sat) {
         kept[i] = true;
