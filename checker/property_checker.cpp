@@ -383,6 +383,7 @@ PropertyResult PropertyChecker::run() {
     case Verdict::Unknown:
       out.verdict = PropertyVerdict::Unknown;
       out.reason = r.reason;
+      if (!r.engines.empty()) out.notes.push_back("engines: " + r.engines);
       break;
   }
   out.seconds = std::chrono::duration<double>(Clock::now() - start).count();

@@ -98,6 +98,9 @@ struct ProverResult {
   Invariant invariant;
   Trace cex;
   std::string reason;  // Unknown: "time limit", "bound reached", "memory limit", or the solver's
+  // Unknown from a portfolio: what each engine answered ("k-induction: bound
+  // reached at k = 10; ..."), for a reader who asks why nothing decided.
+  std::string engines;
   double seconds = 0.0;
 };
 

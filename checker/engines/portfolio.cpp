@@ -208,6 +208,13 @@ ProverResult Portfolio::run(const Limits& limits) {
       all_bounds = all_bounds && l->result->reason == "bound reached";
     }
     r.reason = limits.over() ? "time limit" : memory ? "memory limit" : all_bounds ? "bound reached" : "time limit";
+    for (auto& l : lanes) {
+      if (!r.engines.empty()) r.engines += "; ";
+      r.engines += l->engine + ": ";
+      if (!l->started) r.engines += "not started";
+      else if (l->result) r.engines += l->result->reason + " at k = " + std::to_string(l->result->k);
+      else r.engines += "no answer";
+    }
     r.seconds = seconds_since(start);
     return r;
   }

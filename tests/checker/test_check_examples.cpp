@@ -60,7 +60,9 @@ TEST_P(ExampleRequirement, ReachesItsExpectedVerdict) {
   checker::CheckResult r = checker::check_properties(m, {file}, options);
   ASSERT_EQ(r.properties.size(), 1u);
   const auto& pr = r.properties[0];
-  EXPECT_EQ(checker::to_string(pr.verdict), expect) << c.example << " " << c.property << ": " << pr.reason;
+  std::string notes;
+  for (const auto& n : pr.notes) notes += "\n  " + n;
+  EXPECT_EQ(checker::to_string(pr.verdict), expect) << c.example << " " << c.property << ": " << pr.reason << notes;
   if (pr.verdict == checker::PropertyVerdict::Falsified || pr.verdict == checker::PropertyVerdict::Reachable) {
     ASSERT_TRUE(pr.trace.has_value());
     EXPECT_TRUE(std::filesystem::exists(pr.scenario_file));
