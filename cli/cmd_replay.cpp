@@ -9,8 +9,11 @@
 #include "cli/matrix_input.hpp"
 #include "cli/output.hpp"
 #include "testgen/testgen.hpp"
+#include "reports/xml_text.hpp"
 
 namespace cemv::cli {
+
+using reports::html_escape;
 
 namespace {
 
@@ -20,20 +23,6 @@ struct ReplayArgs {
   std::string format = "text";
   std::string output = "-";
 };
-
-std::string xml(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 std::string text_report(const model::Matrix& m, const testgen::ReplayResult& r) {
   std::string s;
@@ -61,10 +50,10 @@ std::string junit_report(const model::Matrix& m, const testgen::ReplayResult& r)
   std::string s = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   s += "<testsuites name=\"cemv replay\" tests=\"" + std::to_string(r.tests.size()) + "\" failures=\"" +
        std::to_string(r.tests.size() - r.passed()) + "\">\n";
-  s += " <testsuite name=\"" + xml(m.name) + "\" tests=\"" + std::to_string(r.tests.size()) + "\" failures=\"" +
+  s += " <testsuite name=\"" + html_escape(m.name) + "\" tests=\"" + std::to_string(r.tests.size()) + "\" failures=\"" +
        std::to_string(r.tests.size() - r.passed()) + "\">\n";
   for (const auto& t : r.tests) {
-    s += "  <testcase classname=\"" + xml(m.name) + "\" name=\"" + xml(t.name) + "\"";
+    s += "  <testcase classname=\"" + html_escape(m.name) + "\" name=\"" + html_escape(t.name) + "\"";
     if (t.passed) {
       s += "/>\n";
       continue;
@@ -72,8 +61,8 @@ std::string junit_report(const model::Matrix& m, const testgen::ReplayResult& r)
     std::string msg = t.load_error;
     for (const auto& st : t.steps)
       for (const auto& f : st.failures) msg += (msg.empty() ? "" : "\n") + f;
-    s += ">\n   <failure message=\"" + xml(t.load_error.empty() ? "expectation failed" : "does not load") + "\">" +
-         xml(msg) + "</failure>\n  </testcase>\n";
+    s += ">\n   <failure message=\"" + html_escape(t.load_error.empty() ? "expectation failed" : "does not load") + "\">" +
+         html_escape(msg) + "</failure>\n  </testcase>\n";
   }
   s += " </testsuite>\n</testsuites>\n";
   return s;

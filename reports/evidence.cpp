@@ -7,24 +7,11 @@
 
 #include "reports/check_report.hpp"
 #include "reports/timing_svg.hpp"
+#include "reports/xml_text.hpp"
 
 namespace cemv::reports {
 
 namespace {
-
-std::string esc(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 std::string base64(const std::string& s) {
   static const char* t = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
@@ -100,29 +87,29 @@ class Writer {
     std::string stamp = "matrix " + m_.name + " · signature " + in_.check.matrix_signature + " · cemv " +
                         in_.check.tool_version + " · " + in_.date;
     o_ << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>Evidence: "
-       << esc(m_.name) << "</title>\n<style>" << kCss << "</style>\n</head>\n<body>\n";
-    o_ << "<div class=\"pagehead print\">Evidence report · " << esc(stamp) << "</div>\n";
-    o_ << "<div class=\"pagefoot print\">" << esc(stamp) << "</div>\n";
-    o_ << "<div class=\"pagehead screen\">" << esc(stamp) << "</div>\n";
+       << html_escape(m_.name) << "</title>\n<style>" << kCss << "</style>\n</head>\n<body>\n";
+    o_ << "<div class=\"pagehead print\">Evidence report · " << html_escape(stamp) << "</div>\n";
+    o_ << "<div class=\"pagefoot print\">" << html_escape(stamp) << "</div>\n";
+    o_ << "<div class=\"pagehead screen\">" << html_escape(stamp) << "</div>\n";
     summary();
     grid();
     validation();
     properties();
     tests();
-    o_ << "<div class=\"pagefoot screen\">" << esc(stamp) << "</div>\n</body>\n</html>\n";
+    o_ << "<div class=\"pagefoot screen\">" << html_escape(stamp) << "</div>\n</body>\n</html>\n";
     return o_.str();
   }
 
  private:
   void summary() {
-    o_ << "<section>\n<h1>Evidence report: " << esc(m_.name) << "</h1>\n";
-    if (!m_.title.empty()) o_ << "<p class=\"meta\">" << esc(m_.title) << "</p>\n";
+    o_ << "<section>\n<h1>Evidence report: " << html_escape(m_.name) << "</h1>\n";
+    if (!m_.title.empty()) o_ << "<p class=\"meta\">" << html_escape(m_.title) << "</p>\n";
     std::size_t errors = 0, warnings = 0;
     for (const auto& d : in_.validation) (d.severity == model::Severity::Error ? errors : warnings)++;
     auto counts = verdict_counts(in_.check);
     o_ << "<table>\n";
-    row("Matrix file", esc(in_.matrix_file));
-    row("Matrix signature (SHA-256 of the canonical form)", "<code>" + esc(in_.check.matrix_signature) + "</code>");
+    row("Matrix file", html_escape(in_.matrix_file));
+    row("Matrix signature (SHA-256 of the canonical form)", "<code>" + html_escape(in_.check.matrix_signature) + "</code>");
     row("Size", std::to_string(m_.causes.size()) + " causes, " + std::to_string(m_.effects.size()) +
                     " effects, " + std::to_string(m_.intersections.size()) + " intersections; cycle " +
                     std::to_string(m_.cycle_ms) + " ms");
@@ -134,13 +121,13 @@ class Writer {
              verdict_name(static_cast<checker::PropertyVerdict>(i));
     row("Properties", std::to_string(in_.check.properties.size()) + (v.empty() ? "" : ": " + v));
     std::string files;
-    for (const auto& f : in_.check.property_files) files += (files.empty() ? "" : ", ") + esc(f);
+    for (const auto& f : in_.check.property_files) files += (files.empty() ? "" : ", ") + html_escape(f);
     if (in_.check.standard) files += std::string(files.empty() ? "" : ", ") + "the standard properties";
     row("Property sources", files.empty() ? "none given" : files);
     row("Test generation", in_.coverage_json.empty() ? "no test generation results given"
-                                                     : "from " + esc(in_.coverage_file));
-    row("Tool", "cemv " + esc(in_.check.tool_version));
-    row("Date", esc(in_.date));
+                                                     : "from " + html_escape(in_.coverage_file));
+    row("Tool", "cemv " + html_escape(in_.check.tool_version));
+    row("Date", html_escape(in_.date));
     o_ << "</table>\n</section>\n";
   }
 
@@ -154,13 +141,13 @@ class Writer {
           "<span class=\"comment\">comment only</span><span class=\"involved\">in a counterexample</span></p>\n";
     o_ << "<table class=\"grid\">\n<tr><th>Cause</th><th>Tags</th>";
     for (const auto& e : m_.effects)
-      o_ << "<th class=\"effect " << element_class(e) << "\" title=\"" << esc(e.description) << "\">E"
-         << e.id << " " << esc(e.name) << "</th>";
+      o_ << "<th class=\"effect " << element_class(e) << "\" title=\"" << html_escape(e.description) << "\">E"
+         << e.id << " " << html_escape(e.name) << "</th>";
     o_ << "</tr>\n";
     for (const auto& c : m_.causes) {
-      o_ << "<tr><td class=\"cause " << element_class(c) << "\" title=\"" << esc(c.description) << "\">C" << c.id
-         << " " << esc(c.name) << "</td><td>";
-      for (std::size_t i = 0; i < c.tags.size(); ++i) o_ << (i ? ", " : "") << esc(c.tags[i].name);
+      o_ << "<tr><td class=\"cause " << element_class(c) << "\" title=\"" << html_escape(c.description) << "\">C" << c.id
+         << " " << html_escape(c.name) << "</td><td>";
+      for (std::size_t i = 0; i < c.tags.size(); ++i) o_ << (i ? ", " : "") << html_escape(c.tags[i].name);
       o_ << "</td>";
       for (const auto& e : m_.effects) {
         const auto* x = m_.find_intersection(c.id, e.id);
@@ -169,7 +156,7 @@ class Writer {
           continue;
         }
         std::string t = model::to_string(x->type);
-        o_ << "<td class=\"t-" << (x->type == model::IntersectionType::Note ? "Note" : t) << "\">" << esc(t);
+        o_ << "<td class=\"t-" << (x->type == model::IntersectionType::Note ? "Note" : t) << "\">" << html_escape(t);
         if (x->xoon) o_ << "<sub>" << *x->xoon << "</sub>";
         o_ << "</td>";
       }
@@ -202,8 +189,8 @@ class Writer {
     o_ << "<table>\n<tr><th>Severity</th><th>Rule</th><th>Element</th><th>Section</th><th>Finding</th></tr>\n";
     for (const auto& d : in_.validation)
       o_ << "<tr class=\"" << (d.severity == model::Severity::Error ? "bad" : "warn") << "\"><td>"
-         << model::to_string(d.severity) << "</td><td>" << esc(d.rule) << "</td><td>" << esc(d.element)
-         << "</td><td>" << esc(d.section) << "</td><td>" << esc(d.message) << "</td></tr>\n";
+         << model::to_string(d.severity) << "</td><td>" << html_escape(d.rule) << "</td><td>" << html_escape(d.element)
+         << "</td><td>" << html_escape(d.section) << "</td><td>" << html_escape(d.message) << "</td></tr>\n";
     o_ << "</table>\n</section>\n";
   }
 
@@ -218,21 +205,21 @@ class Writer {
           "re-proved by a fresh solver (docs/checker.md).</p>\n";
     o_ << "<table>\n<tr><th>Property</th><th>Kind</th><th>Verdict</th><th>Method</th><th>Source</th></tr>\n";
     for (const auto& p : in_.check.properties) {
-      o_ << "<tr><td><b>" << esc(p.name) << "</b>";
-      if (!p.description.empty()) o_ << "<br>" << esc(p.description);
-      o_ << "</td><td>" << esc(p.kind) << "</td><td class=\"" << verdict_class(p.verdict) << "\">"
-         << esc(outcome_text(p)) << "</td><td>" << esc(p.method.empty() ? "-" : p.method) << "</td><td>"
-         << esc(p.file.empty() ? "standard" : p.file + ":" + std::to_string(p.line)) << "</td></tr>\n";
+      o_ << "<tr><td><b>" << html_escape(p.name) << "</b>";
+      if (!p.description.empty()) o_ << "<br>" << html_escape(p.description);
+      o_ << "</td><td>" << html_escape(p.kind) << "</td><td class=\"" << verdict_class(p.verdict) << "\">"
+         << html_escape(outcome_text(p)) << "</td><td>" << html_escape(p.method.empty() ? "-" : p.method) << "</td><td>"
+         << html_escape(p.file.empty() ? "standard" : p.file + ":" + std::to_string(p.line)) << "</td></tr>\n";
     }
     o_ << "</table>\n";
     for (const auto& p : in_.check.properties) {
       if (!p.trace) continue;
-      o_ << "<div class=\"cex\">\n<h3>" << esc(p.name) << ": "
+      o_ << "<div class=\"cex\">\n<h3>" << html_escape(p.name) << ": "
          << (p.verdict == checker::PropertyVerdict::Reachable ? "witness" : "counterexample") << "</h3>\n";
-      o_ << "<p>" << esc(outcome_text(p)) << ", " << p.trace->inputs.size() << " cycles.</p>\n";
-      o_ << "<img class=\"diagram\" alt=\"timing diagram of " << esc(p.name)
+      o_ << "<p>" << html_escape(outcome_text(p)) << ", " << p.trace->inputs.size() << " cycles.</p>\n";
+      o_ << "<img class=\"diagram\" alt=\"timing diagram of " << html_escape(p.name)
          << "\" src=\"data:image/svg+xml;base64," << base64(timing_svg(m_, *p.trace, diagram_of(p))) << "\">\n";
-      if (!p.timing_table.empty()) o_ << "<pre>" << esc(p.timing_table) << "</pre>\n";
+      if (!p.timing_table.empty()) o_ << "<pre>" << html_escape(p.timing_table) << "</pre>\n";
       o_ << "</div>\n";
     }
     o_ << "</section>\n";
@@ -244,7 +231,7 @@ class Writer {
       o_ << "<p class=\"warn\">No test generation results given (<code>cemv evidence --coverage FILE</code> "
             "adds them).</p>\n";
     else
-      o_ << "<p>From <code>" << esc(in_.coverage_file) << "</code>:</p>\n<pre>" << esc(in_.coverage_json)
+      o_ << "<p>From <code>" << html_escape(in_.coverage_file) << "</code>:</p>\n<pre>" << html_escape(in_.coverage_json)
          << "</pre>\n";
     o_ << "</section>\n";
   }

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "reports/timing_rows.hpp"
+#include "reports/xml_text.hpp"
 
 namespace cemv::reports {
 
@@ -21,20 +22,6 @@ std::string num(double v) {
   std::string s = buf;
   if (s.size() > 2 && s.compare(s.size() - 2, 2, ".0") == 0) s.resize(s.size() - 2);
   return s == "-0" ? "0" : s;
-}
-
-std::string esc(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
 }
 
 // Width of a text in the diagram's 12 px sans font, estimated (no font
@@ -109,23 +96,23 @@ class Drawing {
     o << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << num(width_) << "\" height=\"" << num(height)
       << "\" viewBox=\"0 0 " << num(width_) << " " << num(height)
       << "\" font-family=\"DejaVu Sans, Arial, Helvetica, sans-serif\" font-size=\"12\">\n";
-    o << "<title>" << esc(d_.title) << "</title>\n" << kStyle;
+    o << "<title>" << html_escape(d_.title) << "</title>\n" << kStyle;
     o << "<defs><pattern id=\"hatch\" width=\"6\" height=\"6\" patternUnits=\"userSpaceOnUse\" "
          "patternTransform=\"rotate(45)\"><rect width=\"6\" height=\"6\" fill=\"#f3f4f6\"/>"
          "<line x1=\"0\" y1=\"0\" x2=\"0\" y2=\"6\" stroke=\"#d1d5db\" stroke-width=\"2\"/></pattern></defs>\n";
     o << "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
-    o << "<text class=\"title\" x=\"10\" y=\"20\">" << esc(d_.title) << "</text>\n";
-    o << "<text class=\"sub\" x=\"10\" y=\"38\">" << esc(subtitle()) << "</text>\n";
+    o << "<text class=\"title\" x=\"10\" y=\"20\">" << html_escape(d_.title) << "</text>\n";
+    o << "<text class=\"sub\" x=\"10\" y=\"38\">" << html_escape(subtitle()) << "</text>\n";
     for (std::size_t i = 0; i < d_.marks.size(); ++i) {
       const auto& mk = d_.marks[i];
-      o << "<text class=\"marktext\" x=\"10\" y=\"" << num(56 + 16 * double(i)) << "\">&#9650; " << esc(mk.label)
+      o << "<text class=\"marktext\" x=\"10\" y=\"" << num(56 + 16 * double(i)) << "\">&#9650; " << html_escape(mk.label)
         << " (cycle " << mk.cycle + 1 << ", t = " << timing::time_text(double(mk.cycle) * m_.cycle_ms)
         << ")</text>\n";
     }
     o << body.str() << over.str();
     double fy = rows_end + 34;
     for (const auto& line : foot) {
-      o << "<text class=\"sub small\" x=\"10\" y=\"" << num(fy) << "\">" << esc(line) << "</text>\n";
+      o << "<text class=\"sub small\" x=\"10\" y=\"" << num(fy) << "\">" << html_escape(line) << "</text>\n";
       fy += 15;
     }
     o << "</svg>\n";
@@ -173,9 +160,9 @@ class Drawing {
     o << "<line class=\"grid\" x1=\"0\" y1=\"" << num(y + h) << "\" x2=\"" << num(width_) << "\" y2=\""
       << num(y + h) << "\"/>\n";
     double ty = r.kind == RowKind::Analog ? y + 18 : y + h / 2 + (r.note.empty() ? 4 : -2);
-    o << "<text x=\"10\" y=\"" << num(ty) << "\">" << esc(r.label) << "</text>\n";
+    o << "<text x=\"10\" y=\"" << num(ty) << "\">" << html_escape(r.label) << "</text>\n";
     if (!r.note.empty())
-      o << "<text class=\"sub small\" x=\"10\" y=\"" << num(ty + 13) << "\">" << esc(r.note) << "</text>\n";
+      o << "<text class=\"sub small\" x=\"10\" y=\"" << num(ty + 13) << "\">" << html_escape(r.note) << "</text>\n";
   }
 
   void draw_row(std::ostringstream& o, const Row& r, double y, double h) {
@@ -230,10 +217,10 @@ class Drawing {
       o << "<polygon class=\"bus\" points=\"" << num(a) << "," << num(mid) << " " << num(a + e) << ","
         << num(top) << " " << num(b - e) << "," << num(top) << " " << num(b) << "," << num(mid) << " "
         << num(b - e) << "," << num(bottom) << " " << num(a + e) << "," << num(bottom) << "\"><title>"
-        << esc(text) << "</title></polygon>\n";
+        << html_escape(text) << "</title></polygon>\n";
       if (b - a >= text_width(text, 11) + 6)
         o << "<text font-size=\"11\" text-anchor=\"middle\" x=\"" << num((a + b) / 2) << "\" y=\""
-          << num(mid + 4) << "\">" << esc(text) << "</text>\n";
+          << num(mid + 4) << "\">" << html_escape(text) << "</text>\n";
       i = j + 1;
     }
   }
@@ -266,9 +253,9 @@ class Drawing {
     lo -= pad, hi += pad;
     auto y_of = [&](double v) { return bottom - (v - lo) / (hi - lo) * (bottom - top); };
     o << "<text class=\"sub small\" text-anchor=\"end\" x=\"" << num(label_w_ - 6) << "\" y=\"" << num(top + 8)
-      << "\">" << esc(timing_number(hi)) << "</text>\n";
+      << "\">" << html_escape(timing_number(hi)) << "</text>\n";
     o << "<text class=\"sub small\" text-anchor=\"end\" x=\"" << num(label_w_ - 6) << "\" y=\"" << num(bottom)
-      << "\">" << esc(timing_number(lo)) << "</text>\n";
+      << "\">" << html_escape(timing_number(lo)) << "</text>\n";
     double last_label_y = -1e9;
     std::vector<timing::Level> levels = r.levels;
     std::stable_sort(levels.begin(), levels.end(), [](const auto& a, const auto& b) { return a.value > b.value; });
@@ -279,7 +266,7 @@ class Drawing {
       double ty = std::max(ly + 4, last_label_y + 11);
       last_label_y = ty;
       o << "<text class=\"small lvl-" << l.css << "\" x=\"" << num(xs_.back() + 6) << "\" y=\"" << num(ty)
-        << "\">" << esc(l.label) << "</text>\n";
+        << "\">" << html_escape(l.label) << "</text>\n";
     }
     o << "<path class=\"analog\" d=\"" << steps(r, y_of) << "\"/>\n";
   }
@@ -298,9 +285,9 @@ class Drawing {
       double x = (xs_[i] + xs_[i + 1]) / 2;
       o << "<polygon class=\"cmd\" points=\"" << num(x - 5) << "," << num(top) << " " << num(x + 5) << ","
         << num(top) << " " << num(x) << "," << num(top + 9) << "\"><title>cycle " << cols_[i].first + 1 << ": "
-        << esc(text) << "</title></polygon>\n";
+        << html_escape(text) << "</title></polygon>\n";
       o << "<text class=\"small\" x=\"" << num(x + 6) << "\" y=\"" << num(top + 20 + 11 * lane) << "\">"
-        << esc(text) << "</text>\n";
+        << html_escape(text) << "</text>\n";
       lane = 1 - lane;
     }
     (void)bottom;
@@ -326,7 +313,7 @@ class Drawing {
         if (cols_[i].first <= mk.cycle && mk.cycle <= cols_[i].last) {
           o << "<rect class=\"mark\" x=\"" << num(xs_[i]) << "\" y=\"" << num(axis_top) << "\" width=\""
             << num(xs_[i + 1] - xs_[i]) << "\" height=\"" << num(rows_end - axis_top) << "\"><title>"
-            << esc(mk.label) << "</title></rect>\n";
+            << html_escape(mk.label) << "</title></rect>\n";
           o << "<line class=\"markline\" x1=\"" << num(xs_[i + 1]) << "\" y1=\"" << num(axis_top - 4)
             << "\" x2=\"" << num(xs_[i + 1]) << "\" y2=\"" << num(rows_end) << "\"/>\n";
         }
@@ -357,7 +344,7 @@ class Drawing {
       o << "<text class=\"small\" text-anchor=\"middle\" x=\"" << num(x) << "\" y=\"" << num(axis_top - 4)
         << "\">" << c + 1 << "</text>\n";
       o << "<text class=\"small\" text-anchor=\"middle\" x=\"" << num(x) << "\" y=\"" << num(rows_end + 16)
-        << "\">" << esc(timing::time_text(double(c) * m_.cycle_ms)) << "</text>\n";
+        << "\">" << html_escape(timing::time_text(double(c) * m_.cycle_ms)) << "</text>\n";
     }
   }
 

@@ -1,5 +1,5 @@
 // XML 1.0 character data, shared by the JUnit printers of `cemv check` and
-// `cemv validate`.
+// `cemv validate`, and the escaping of the HTML and SVG cemv writes.
 #pragma once
 
 #include <string>
@@ -12,5 +12,10 @@ namespace cemv::reports {
 // In attributes, line breaks and tabs become character references
 // (attribute-value normalisation would otherwise turn them into spaces).
 std::string xml_escape(std::string_view s, bool attribute);
+
+// The five-character escaping of generated HTML and SVG (checklists, the
+// evidence report, timing diagrams, replay reports): & < > and " (text
+// and attribute values alike); everything else passes through.
+std::string html_escape(std::string_view s);
 
 }  // namespace cemv::reports

@@ -9,8 +9,11 @@
 #include <nlohmann/json.hpp>
 
 #include "testgen/phrases.hpp"
+#include "reports/xml_text.hpp"
 
 namespace cemv::testgen {
+
+using reports::html_escape;
 
 namespace {
 
@@ -18,20 +21,6 @@ std::string sif_title(const model::Matrix& m, int sif) {
   if (sif == 0) return "Functions outside any SIF group";
   auto it = m.sif_groups.find(sif);
   return "SIF " + std::to_string(sif) + (it != m.sif_groups.end() ? ": " + it->second : "");
-}
-
-std::string html_escape(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
 }
 
 std::string md_cell(const std::string& s) {
