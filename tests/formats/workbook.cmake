@@ -1,0 +1,52 @@
+# Workbooks (6.6, docs/workbook.md): ODS and XLSX, the six tables, limits.
+add_executable(test_formats_workbook ${CMAKE_CURRENT_LIST_DIR}/test_workbook.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/test_workbook_malformed.cpp)
+target_link_libraries(test_formats_workbook PRIVATE cemv_formats cemv_testsupport GTest::gtest_main pugixml::pugixml)
+target_compile_definitions(test_formats_workbook PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+gtest_discover_tests(test_formats_workbook DISCOVERY_MODE PRE_TEST)
+
+set(WB_CASES ${CMAKE_CURRENT_LIST_DIR}/workbook_cases)
+set(WB_TMP ${CMAKE_CURRENT_BINARY_DIR}/workbook_cli)
+file(MAKE_DIRECTORY ${WB_TMP})
+# Every example through the command line, both formats: the same signature back.
+file(GLOB wb_example_matrices RELATIVE ${PROJECT_SOURCE_DIR} CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/examples/*/matrix.json)
+foreach(matrix ${wb_example_matrices})
+  get_filename_component(example_dir ${matrix} DIRECTORY)
+  get_filename_component(example ${example_dir} NAME)
+  cemv_cli_test(NAME cli_workbook_round_trip_${example} EXIT 0 MATCH "xlsx: same signature [0-9a-f]+"
+    COMMAND bash ${WB_CASES}/cli_round_trip.sh $<TARGET_FILE:cemv> ${matrix} ${WB_TMP}/round_trip)
+endforeach()
+cemv_cli_test(NAME cli_import_workbook_missing_file EXIT 2 MATCH "no_such.ods: error: cannot open"
+  COMMAND $<TARGET_FILE:cemv> import-workbook ${WB_CASES}/no_such.ods)
+cemv_cli_test(NAME cli_import_workbook_not_a_zip EXIT 2
+  MATCH "matrix.json: error: not a workbook: the file is not a readable zip archive"
+  COMMAND $<TARGET_FILE:cemv> import-workbook examples/tank-overfill/matrix.json)
+cemv_cli_test(NAME cli_export_workbook_bad_extension EXIT 2 MATCH "must end in .ods or .xlsx"
+  COMMAND $<TARGET_FILE:cemv> export-workbook examples/tank-overfill/matrix.json -o ${WB_TMP}/m.txt)
+cemv_cli_test(NAME cli_export_workbook_needs_output EXIT 2 MATCH "output"
+  COMMAND $<TARGET_FILE:cemv> export-workbook examples/tank-overfill/matrix.json)
+# 6.6.3: after an import into an existing matrix, what changed.
+cemv_cli_test(NAME cli_import_workbook_into EXIT 0
+  MATCH "matrix comparison \\(6.6.3\\), source .*edited.xlsx, reference .*matrix.json: 1 change, 1 critical.*time.ms: 2000 -> 5000"
+  COMMAND bash ${WB_CASES}/cli_into.sh $<TARGET_FILE:cemv> examples/tank-overfill/matrix.json ${WB_TMP}/into)
+cemv_cli_test(NAME cli_import_workbook_into_unchanged EXIT 0 MATCH "reference .*: no change"
+  COMMAND bash -c "$<TARGET_FILE:cemv> export-workbook examples/compressor/matrix.json -o ${WB_TMP}/same.ods && $<TARGET_FILE:cemv> import-workbook ${WB_TMP}/same.ods --into examples/compressor/matrix.json -o ${WB_TMP}/same.json")
+
+# Real spreadsheet software (LibreOffice, headless): a workbook re-saved by it
+# imports with the same signature; the LSST table saved as XLSX imports as its CSV.
+# Each run has its own LibreOffice profile, so these run in parallel.
+find_program(SOFFICE soffice)
+if(SOFFICE)
+  foreach(example tank-overfill burner-management)
+    cemv_cli_test(NAME cli_workbook_libreoffice_${example} EXIT 0
+      MATCH "ods -> xlsx by LibreOffice: same signature.*xlsx -> ods by LibreOffice: same signature"
+      COMMAND bash ${WB_CASES}/libreoffice_round_trip.sh $<TARGET_FILE:cemv> ${SOFFICE} examples/${example}/matrix.json
+              ${WB_TMP}/libreoffice_${example})
+    set_tests_properties(cli_workbook_libreoffice_${example} PROPERTIES TIMEOUT 600)
+  endforeach()
+  cemv_cli_test(NAME cli_workbook_libreoffice_lsst EXIT 0
+    MATCH "LSST saved as XLSX by LibreOffice imports as its CSV: 36 causes, 17 effects, 102 intersections"
+    COMMAND bash ${WB_CASES}/libreoffice_lsst.sh $<TARGET_FILE:cemv> ${SOFFICE}
+            ${PROJECT_SOURCE_DIR}/tests/formats/csv_cases/lsst/lsst-tma-interlock-table.csv ${WB_TMP}/libreoffice_lsst)
+  set_tests_properties(cli_workbook_libreoffice_lsst PROPERTIES TIMEOUT 600)
+endif()
