@@ -106,8 +106,8 @@ WorkbookImportResult import_workbook(std::string_view bytes, const std::string& 
   else if (zip.has("[Content_Types].xml") || zip.has("_rels/.rels") || zip.has("xl/workbook.xml"))
     wb = read_xlsx(zip, budget);
   else
-    fail_entry(zip, "content.xml", "neither an OpenDocument spreadsheet (content.xml) nor an Office Open XML one "
-                                   "([Content_Types].xml) is in the archive");
+    zip.fail("not a workbook: the zip archive holds neither an OpenDocument spreadsheet (content.xml) nor an "
+             "Office Open XML one ([Content_Types].xml)");
   for (Sheet& s : wb.sheets) s.sort();
   if (has_tables(wb)) {
     TablesImport t = workbook_to_matrix(wb, file_name);

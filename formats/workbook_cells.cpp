@@ -84,12 +84,16 @@ long long CellReader::integer(const Table& t, std::size_t row, const std::string
 float CellReader::real(const Table& t, std::size_t row, const std::string& header, const std::string& path, float fallback) {
   std::string s = text(t, row, header, path);
   if (s.empty()) return fallback;
-  float v = 0;
-  auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
-  if (ec != std::errc() || end != s.data() + s.size() || !std::isfinite(v)) {
+  // As the JSON loader reads a real: a double, then the nearest single; half
+  // an ulp above FLT_MAX and beyond rounds to infinity and is refused.
+  double d = 0;
+  auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), d);
+  constexpr double kFloatOverflow = 0x1.ffffffp+127;
+  if (ec != std::errc() || end != s.data() + s.size() || !std::isfinite(d) || std::fabs(d) >= kFloatOverflow) {
     error_at(t, row, header, model::in_quotes(s) + " is not a number in the range of IEEE single precision (REAL, 6.3.1)");
     return fallback;
   }
+  float v = static_cast<float>(d);
   return v == 0 ? 0.0f : v;  // -0 is 0, as in the JSON loader
 }
 

@@ -196,7 +196,7 @@ class TablesReader {
 
   void read_causes(const Sheet& s) {
     Table t = r_.header(s, cause_headers(), kOptionsHeader);
-    if (!t.columns.count("No.")) return;
+    if (t.columns.size() < cause_headers().size()) return;  // reported by header()
     for (const NumberedLine& line : element_rows(t, "cause")) {
       const std::size_t row = line.line;
       const std::string p = "causes[" + std::to_string(causes_.size()) + "]";
@@ -252,7 +252,7 @@ class TablesReader {
 
   void read_effects(const Sheet& s) {
     Table t = r_.header(s, effect_headers(), kOptionsHeader);
-    if (!t.columns.count("No.")) return;
+    if (t.columns.size() < effect_headers().size()) return;  // reported by header()
     for (const NumberedLine& line : element_rows(t, "effect")) {
       const std::size_t row = line.line;
       const std::string p = "effects[" + std::to_string(effects_.size()) + "]";

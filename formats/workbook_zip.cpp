@@ -20,6 +20,7 @@ ZipReader::ZipReader(std::string_view bytes, std::string file) : file_(std::move
   if (bytes.size() > kMaxWorkbookBytes)
     fail("file is " + std::to_string(bytes.size()) + " bytes, larger than the limit of " +
          std::to_string(kMaxWorkbookBytes) + " bytes");
+  if (bytes.empty()) fail("not a workbook: the file is empty");
   zip_error_t error;
   zip_error_init(&error);
   zip_source_t* src = zip_source_buffer_create(bytes.data(), bytes.size(), 0, &error);

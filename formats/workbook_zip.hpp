@@ -34,9 +34,10 @@ class ZipReader {
   // kMaxTotalBytes in all is refused.
   std::optional<std::string> read(const std::string& name);
   const std::string& file() const { return file_; }
+  // Throws a LoadError naming the file.
+  [[noreturn]] void fail(const std::string& what) const;
 
  private:
-  [[noreturn]] void fail(const std::string& what) const;
   ::zip* archive_ = nullptr;
   std::string file_;
   std::size_t total_ = 0;

@@ -65,7 +65,7 @@ TEST(WorkbookRoundTrip, RandomMatricesOfEveryOption) {
 TEST(WorkbookRoundTrip, EdgeValues) {
   model::Matrix m = load_matrix(std::filesystem::path(CEMV_SOURCE_DIR) / "examples/tank-overfill/matrix.json");
   m.title = "  two  blanks, leading and trailing  ";
-  m.causes[0].description = " a\tb ";
+  m.causes[0].description = " a  b ";
   m.causes[0].note = "x;y; (1)";
   m.causes[0].tags[0].name = "*STAR";
   m.causes[0].sensor_ms = 4294967295u;
