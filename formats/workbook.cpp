@@ -4,6 +4,7 @@
 // reader (so that a grid reads alike from CSV and from a spreadsheet).
 #include "formats/workbook.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 
@@ -21,7 +22,11 @@ namespace {
 // The first sheet as CSV text, one record per row (row = line), so that the
 // grid reader's lines and columns are the sheet's rows and columns. A line
 // break inside a cell becomes a blank (as the grid reader does with one).
+// Every row is as wide as the widest: a sheet has no row ends, its empty
+// cells are empty fields.
 std::string sheet_as_csv(const Sheet& sheet) {
+  std::size_t width = 0;
+  for (const Cell& c : sheet.cells) width = std::max(width, c.column);
   std::string out;
   std::size_t row = 1;
   for (std::size_t i = 0; i < sheet.cells.size();) {
@@ -37,6 +42,7 @@ std::string sheet_as_csv(const Sheet& sheet) {
         if (ch == '\n' || ch == '\r') ch = ' ';
       line += csv_quote(text);
     }
+    for (; column < width; ++column) line += ",";
     out += line + "\n";
     row = r + 1;
   }
@@ -58,6 +64,7 @@ LoadIssue on_sheet(const LoadIssue& issue, const std::string& file, const Sheet&
       tail = e2;
     }
     rest = std::string(tail);
+    if (rest.rfind(", ", 0) == 0) rest.erase(0, 2);  // ", columns 3-12"
     if (rest.rfind(" ", 0) == 0) rest.erase(0, 1);
   } else {
     rest = where == file ? "" : where;

@@ -15,4 +15,5 @@ with zipfile.ZipFile(src) as z, zipfile.ZipFile(dst, "w", zipfile.ZIP_DEFLATED) 
             data = data.replace(b"<v>2000</v>", b"<v>5000</v>", 1)
         out.writestr(info.filename, data)
 PY
-"$cemv" import-workbook "$tmp/edited.xlsx" --into "$matrix" -o "$tmp/new.json" 2>&1
+# One line, so that the test can match the change and its field together.
+"$cemv" import-workbook "$tmp/edited.xlsx" --into "$matrix" -o "$tmp/new.json" 2>&1 | tr "\n" " "; echo
