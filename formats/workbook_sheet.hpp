@@ -18,8 +18,8 @@ namespace cemv::formats::workbook {
 // Resource limits of every workbook read (docs/workbook.md "Limits"): checked
 // before the work they bound, so a hostile file costs at most these.
 inline constexpr std::size_t kMaxWorkbookBytes = kMaxFileBytes;   // the zip file itself
-inline constexpr std::size_t kMaxEntryBytes = 16u << 20;          // one inflated zip entry
-inline constexpr std::size_t kMaxTotalBytes = 48u << 20;          // every entry read, inflated
+inline constexpr std::size_t kMaxEntryBytes = 8u << 20;           // one inflated zip entry
+inline constexpr std::size_t kMaxTotalBytes = 32u << 20;          // every entry read, inflated
 inline constexpr std::size_t kMaxCellBytes = 32u << 10;           // the text of one cell
 inline constexpr std::size_t kMaxSheets = 64;
 // Rows that hold something, per sheet. 6.6.3 imports at most 128 causes or

@@ -173,7 +173,7 @@ TEST(WorkbookLimits, ZipBombIsRefusedFromTheDirectory) {
   std::string bomb = z.finish();
   EXPECT_LT(bomb.size(), 1u << 20);
   EXPECT_NE(error_of(bomb, "bomb.ods").find("bomb.ods: error: zip entry content.xml would inflate to 67108864 bytes, "
-                                            "more than the limit of 16 MiB per entry (refused without inflating it)"),
+                                            "more than the limit of 8 MiB per entry (refused without inflating it)"),
             std::string::npos)
       << error_of(bomb, "bomb.ods");
 }
