@@ -5,8 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <functional>
+#include <iterator>
 #include <regex>
+#include <sstream>
 
 #include "formats/matrix_json.hpp"
 #include "formats/workbook.hpp"
@@ -256,6 +259,31 @@ TEST(WorkbookLimits, DeepSpans) {
   std::string cell = "<table:table-row><table:table-cell><text:p>" + open + "x" + close +
                      "</text:p></table:table-cell></table:table-row>";
   EXPECT_NE(error_of(ods_with_rows(cell), "d.ods").find("text spans nested deeper than 32"), std::string::npos);
+}
+
+// The table of malformed workbook files (workbook_malformed/EXPECTED.tsv): each
+// is refused with a LoadError whose lines, named as the file's name, match.
+TEST(WorkbookMalformed, FilesOfTheTable) {
+  const std::filesystem::path dir = std::filesystem::path(CEMV_SOURCE_DIR) / "tests/formats/workbook_malformed";
+  std::ifstream table(dir / "EXPECTED.tsv");
+  std::string line;
+  std::size_t rows = 0;
+  while (std::getline(table, line)) {
+    if (line.empty() || line[0] == '#') continue;
+    auto tab = line.find('\t');
+    ASSERT_NE(tab, std::string::npos) << line;
+    const std::string file = line.substr(0, tab);
+    std::ifstream in(dir / file, std::ios::binary);
+    ASSERT_TRUE(in) << file;
+    const std::string bytes((std::istreambuf_iterator<char>(in)), {});
+    const std::string messages = error_of(bytes, file);
+    bool found = false;
+    std::istringstream lines(messages);
+    for (std::string m; std::getline(lines, m);) found = found || std::regex_search(m, std::regex(line.substr(tab + 1)));
+    EXPECT_TRUE(found) << file << ": expected /" << line.substr(tab + 1) << "/, got\n" << messages;
+    ++rows;
+  }
+  EXPECT_GE(rows, 12u);
 }
 
 }  // namespace

@@ -6,6 +6,21 @@ target_compile_definitions(test_formats_workbook PRIVATE CEMV_SOURCE_DIR="${PROJ
 gtest_discover_tests(test_formats_workbook DISCOVERY_MODE PRE_TEST)
 
 set(WB_CASES ${CMAKE_CURRENT_LIST_DIR}/workbook_cases)
+# The table of malformed workbooks through the binary: each exits 2 with its message.
+set(_wb_malformed ${CMAKE_CURRENT_LIST_DIR}/workbook_malformed)
+file(STRINGS ${_wb_malformed}/EXPECTED.tsv _wb_rows REGEX "^[^#]")
+set_property(DIRECTORY APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS ${_wb_malformed}/EXPECTED.tsv)
+foreach(_row IN LISTS _wb_rows)
+  string(FIND "${_row}" "\t" _tab)
+  string(SUBSTRING "${_row}" 0 ${_tab} _file)
+  string(REGEX REPLACE "[^A-Za-z0-9]" "_" _name "${_file}")
+  # The binary names the file by its path: match the message after the name.
+  math(EXPR _start "${_tab} + 1")
+  string(SUBSTRING "${_row}" ${_start} -1 _regex)
+  string(REGEX REPLACE "^\\^" "" _regex "${_regex}")
+  cemv_cli_test(NAME cli_import_workbook_malformed_${_name} EXIT 2 MATCH "${_regex}"
+    COMMAND $<TARGET_FILE:cemv> import-workbook tests/formats/workbook_malformed/${_file})
+endforeach()
 set(WB_TMP ${CMAKE_CURRENT_BINARY_DIR}/workbook_cli)
 file(MAKE_DIRECTORY ${WB_TMP})
 # Every example through the command line, both formats: the same signature back.
