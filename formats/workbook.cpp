@@ -74,7 +74,21 @@ LoadIssue on_sheet(const LoadIssue& issue, const std::string& file, const Sheet&
   return out;
 }
 
+// A C&E grid has at most 128 causes or effects across, plus label columns;
+// wider sheets are refused before they are padded into CSV text.
+constexpr std::size_t kMaxGridColumns = 1024;
+
 WorkbookImportResult import_grid(const Sheet& sheet, const std::string& file) {
+  std::size_t width = 0;
+  for (const Cell& c : sheet.cells) width = std::max(width, c.column);
+  if (width > kMaxGridColumns) {
+    std::size_t row = 0;
+    for (const Cell& c : sheet.cells)
+      if (c.column == width) row = c.row;
+    throw LoadError({place(file, sheet, row, width, "",
+                           "the sheet is " + std::to_string(width) + " columns wide; a C&E grid has at most " +
+                               std::to_string(kMaxGridColumns) + " (128 causes or effects and their labels)")});
+  }
   CsvImportOptions options;
   options.layout = CsvLayoutKind::Grid;
   options.separator = ',';
