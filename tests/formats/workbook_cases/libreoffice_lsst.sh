@@ -8,7 +8,7 @@ rm -rf "$tmp"; mkdir -p "$tmp"
 source "$(dirname "$0")/libreoffice_env.sh"
 name=$(basename "$csv" .csv)
 cp "$csv" "$tmp/$name.csv"
-lo_convert xlsx "$tmp/lo" "$tmp/$name.csv" --infilter=CSV:59,34,76,1
+lo_infilter=CSV:59,34,76,1 lo_convert xlsx "$tmp/lo" "$tmp/$name.csv"
 "$cemv" import-csv "$tmp/$name.csv" -o "$tmp/from-csv.json" 2> "$tmp/csv.warnings"
 "$cemv" import-workbook "$tmp/lo/$name.xlsx" -o "$tmp/from-xlsx.json" 2> "$tmp/xlsx.warnings"
 cmp "$tmp/from-csv.json" "$tmp/from-xlsx.json" || { diff "$tmp/from-csv.json" "$tmp/from-xlsx.json" | head -30; exit 1; }

@@ -1,21 +1,30 @@
 #!/usr/bin/env bash
-# libreoffice_round_trip.sh CEMV SOFFICE MATRIX TMPDIR: export-workbook to ODS,
-# LibreOffice converts it to XLSX; export to XLSX, LibreOffice converts it to
-# ODS; each file LibreOffice wrote imports with the matrix's signature.
+# libreoffice_round_trip.sh CEMV SOFFICE TMPDIR MATRIX...: export-workbook each
+# matrix to ODS and XLSX; LibreOffice converts the ODS files to XLSX and the
+# XLSX files to ODS (one soffice run each); every file LibreOffice wrote
+# imports with its matrix's signature.
 set -euo pipefail
-cemv=$1; soffice=$2; matrix=$3; tmp=$4
-rm -rf "$tmp"; mkdir -p "$tmp"
+cemv=$1; soffice=$2; tmp=$3; shift 3
+rm -rf "$tmp"; mkdir -p "$tmp/ods" "$tmp/xlsx"
 source "$(dirname "$0")/libreoffice_env.sh"
-want=$("$cemv" signature "$matrix")
-check() {
-  "$cemv" import-workbook "$1" -o "$1.json"
-  local got; got=$("$cemv" signature "$1.json")
-  [ "$got" = "$want" ] || { echo "$2: signature $got, expected $want"; diff <("$cemv" fmt "$matrix") "$1.json" | head -20; exit 1; }
-  echo "$2 by LibreOffice: same signature $got"
-}
-"$cemv" export-workbook "$matrix" -o "$tmp/a.ods"
-lo_convert xlsx "$tmp/lo1" "$tmp/a.ods"
-check "$tmp/lo1/a.xlsx" "ods -> xlsx"
-"$cemv" export-workbook "$matrix" -o "$tmp/b.xlsx"
-lo_convert ods "$tmp/lo2" "$tmp/b.xlsx"
-check "$tmp/lo2/b.ods" "xlsx -> ods"
+for matrix in "$@"; do
+  name=$(basename "$(dirname "$matrix")")
+  "$cemv" export-workbook "$matrix" -o "$tmp/ods/$name.ods"
+  "$cemv" export-workbook "$matrix" -o "$tmp/xlsx/$name.xlsx"
+done
+lo_convert xlsx "$tmp/lo-xlsx" "$tmp"/ods/*.ods
+lo_convert ods "$tmp/lo-ods" "$tmp"/xlsx/*.xlsx
+for matrix in "$@"; do
+  name=$(basename "$(dirname "$matrix")")
+  want=$("$cemv" signature "$matrix")
+  for pair in "ods -> xlsx:lo-xlsx/$name.xlsx" "xlsx -> ods:lo-ods/$name.ods"; do
+    file=$tmp/${pair#*:}
+    "$cemv" import-workbook "$file" -o "$file.json" 2> "$file.log" || { cat "$file.log"; exit 1; }
+    got=$("$cemv" signature "$file.json")
+    [ "$got" = "$want" ] || { echo "$name ${pair%%:*}: signature $got, expected $want"; diff <("$cemv" fmt "$matrix") "$file.json" | head -20; exit 1; }
+    # A workbook LibreOffice re-saved imports without a warning.
+    grep -q "warning:" "$file.log" && { echo "$name ${pair%%:*}: warnings"; cat "$file.log"; exit 1; }
+    echo "$name ${pair%%:*} by LibreOffice: same signature $got"
+  done
+done
+echo "all $# examples: same signature after LibreOffice re-saved them"
