@@ -27,4 +27,4 @@ for matrix in "$@"; do
     echo "$name ${pair%%:*} by LibreOffice: same signature $got"
   done
 done
-echo "all $# examples: same signature after LibreOffice re-saved them"
+echo "all $# matrices: same signature after LibreOffice re-saved them"
