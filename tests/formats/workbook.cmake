@@ -69,3 +69,17 @@ if(SOFFICE)
   set_tests_properties(cli_workbook_libreoffice_lsst PROPERTIES TIMEOUT 600
     PASS_REGULAR_EXPRESSION "LSST saved as XLSX by LibreOffice imports as its CSV: 36 causes, 17 effects, 102 intersections")
 endif()
+
+# Output is never lost silently (README): a full disk is exit 2 naming the
+# destination, an unwritable -o fails before the work, '-' reads standard input.
+set(_wb_tank examples/tank-overfill/matrix.json)
+cemv_cli_test(NAME cli_devfull_export_workbook EXIT 2 MATCH "^error: /dev/full: cannot write: No space left on device$"
+  COMMAND $<TARGET_FILE:cemv> export-workbook ${_wb_tank} -o /dev/full --format ods)
+cemv_cli_test(NAME cli_devfull_export_workbook_stdout EXIT 2 MATCH "^error: <stdout>: cannot write: No space left on device$"
+  COMMAND bash -c "$0 export-workbook ${_wb_tank} -o - --format xlsx > /dev/full" $<TARGET_FILE:cemv>)
+cemv_cli_test(NAME cli_devfull_import_workbook EXIT 2 MATCH "error: <stdout>: cannot write: No space left on device"
+  COMMAND bash -c "$0 export-workbook ${_wb_tank} -o ${WB_TMP}/full.ods && $0 import-workbook ${WB_TMP}/full.ods > /dev/full" $<TARGET_FILE:cemv>)
+cemv_cli_test(NAME cli_export_workbook_unwritable EXIT 2 MATCH "^error: /no/such/dir/x.ods: cannot write: No such file or directory$"
+  COMMAND $<TARGET_FILE:cemv> export-workbook ${_wb_tank} -o /no/such/dir/x.ods)
+cemv_cli_test(NAME cli_import_workbook_stdin EXIT 0 MATCH "<stdin>: note: read 4 causes, 3 effects and 8 intersections from the six tables"
+  COMMAND bash -c "$0 export-workbook ${_wb_tank} -o ${WB_TMP}/stdin.xlsx && $0 import-workbook - -o ${WB_TMP}/stdin.json < ${WB_TMP}/stdin.xlsx" $<TARGET_FILE:cemv>)
