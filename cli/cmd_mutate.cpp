@@ -33,6 +33,7 @@ struct MutateArgs {
   bool equivalence = false;
   double timeout_s = 60.0;
   bool list_operators = false;
+  bool quiet = false;
 };
 
 // The distinguishing run as a scenario of the original matrix that expects
@@ -111,7 +112,7 @@ int run_mutate(const MutateArgs& a) {
   if (a.equivalence)
     summary += "equivalent " + std::to_string(equivalent) + ", non-equivalent " + std::to_string(differs) +
                ", undecided " + std::to_string(unknown) + "\n";
-  write_output("-", summary);
+  if (!a.quiet) write_output("-", summary);
   return unknown > 0 ? 3 : 0;
 }
 
@@ -130,6 +131,7 @@ void add_mutate_commands(CLI::App& app, Context& ctx) {
       ->capture_default_str()
       ->type_name("S");
   cmd->add_flag("--list-operators", a.list_operators, "print the mutation operators and exit");
+  cmd->add_flag("-q,--quiet", a.quiet, "print nothing but errors (no summary)");
   cmd->footer(
       "Exit status: 0 done; 2 invalid input or unwritable folder; 3 some mutant's equivalence undecided\n"
       "(--equivalence); 4 internal error (a distinguishing run the runtimes do not reproduce).\n");
