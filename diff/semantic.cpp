@@ -15,28 +15,37 @@ namespace {
 using checker::EquivalenceVerdict;
 using model::Node;
 
-std::set<int> cone_causes(const model::Matrix& m, int effect) {
-  std::set<int> out;
-  if (!m.find_effect(effect) || m.find_effect(effect)->function == model::EffectFunction::Comment) return out;
-  for (const auto& n : model::DependencyGraph(m).feeders_of(Node{Node::Kind::Effect, effect}))
-    if (n.kind == Node::Kind::Cause) out.insert(n.id);
-  return out;
-}
-std::set<int> cone_effects(const model::Matrix& m, int effect) {
-  std::set<int> out{effect};
-  if (!m.find_effect(effect) || m.find_effect(effect)->function == model::EffectFunction::Comment) return out;
-  for (const auto& n : model::DependencyGraph(m).feeders_of(Node{Node::Kind::Effect, effect}))
-    if (n.kind == Node::Kind::Effect) out.insert(n.id);
-  return out;
-}
+// The cones of one version's effects, on one dependency graph (built once:
+// a 128 x 128 matrix has 128 effects to ask about).
+class Cones {
+ public:
+  explicit Cones(const model::Matrix& m) : m_(m), g_(m) {}
+  std::set<int> causes(int effect) const { return of(effect, Node::Kind::Cause); }
+  std::set<int> effects(int effect) const {
+    std::set<int> out = of(effect, Node::Kind::Effect);
+    out.insert(effect);
+    return out;
+  }
+
+ private:
+  std::set<int> of(int effect, Node::Kind kind) const {
+    std::set<int> out;
+    const model::Effect* e = m_.find_effect(effect);
+    if (!e || e->function == model::EffectFunction::Comment) return out;
+    for (const auto& n : g_.feeders_of(Node{Node::Kind::Effect, effect}))
+      if (n.kind == kind) out.insert(n.id);
+    return out;
+  }
+  const model::Matrix& m_;
+  model::DependencyGraph g_;
+};
 
 // Whether a structural change (only a critical one with `critical_only`)
 // touches the effect (OLD id `o`, NEW id `n`) or an element of its cone in
 // either version.
-bool touched(const StructuralDiff& d, const model::Matrix& old_m, const model::Matrix& new_m, int o, int n,
-             bool critical_only) {
-  std::set<int> oc = o ? cone_causes(old_m, o) : std::set<int>{}, nc = n ? cone_causes(new_m, n) : std::set<int>{};
-  std::set<int> oe = o ? cone_effects(old_m, o) : std::set<int>{}, ne = n ? cone_effects(new_m, n) : std::set<int>{};
+bool touched(const StructuralDiff& d, const Cones& old_c, const Cones& new_c, int o, int n, bool critical_only) {
+  std::set<int> oc = o ? old_c.causes(o) : std::set<int>{}, nc = n ? new_c.causes(n) : std::set<int>{};
+  std::set<int> oe = o ? old_c.effects(o) : std::set<int>{}, ne = n ? new_c.effects(n) : std::set<int>{};
   for (const auto& c : d.changes) {
     using E = ElementChange::Element;
     if (critical_only && !c.critical()) continue;
@@ -189,6 +198,7 @@ SemanticDiff compare_behaviour(const model::Matrix& old_m, const model::Matrix& 
   std::map<int, int> rel_to_new;
   for (const auto& [n, x] : r.effect_ids) rel_to_new[x] = n;
 
+  const Cones old_cones(old_m), new_cones(new_m);
   checker::EquivalenceOptions eo;
   eo.deadline = options.deadline;
   eo.timeout = options.timeout;
@@ -199,8 +209,8 @@ SemanticDiff compare_behaviour(const model::Matrix& old_m, const model::Matrix& 
     e.old_id = old_m.find_effect(id) ? id : 0;
     e.new_id = rel_to_new.count(id) ? rel_to_new.at(id) : 0;
     e.name = e.new_id ? new_m.find_effect(e.new_id)->name : old_m.find_effect(id)->name;
-    e.structurally_changed = touched(d, old_m, new_m, e.old_id, e.new_id, false);
-    e.critically_changed = touched(d, old_m, new_m, e.old_id, e.new_id, true);
+    e.structurally_changed = touched(d, old_cones, new_cones, e.old_id, e.new_id, false);
+    e.critically_changed = touched(d, old_cones, new_cones, e.old_id, e.new_id, true);
     e.result = checker::decide_equivalence(old_m, rel, g, eo);
     if (e.result.distinction && e.new_id) {
       const auto& dist = *e.result.distinction;
@@ -231,11 +241,12 @@ SemanticDiff compare_behaviour(const model::Matrix& old_m, const model::Matrix& 
     if (!e.behaviour_changed()) continue;
     out.impact.effects.push_back(e.new_id ? e.new_id : e.old_id);
     auto add_effect = [&](const model::Matrix& m, int id, bool is_new) {
+      const Cones& cones = is_new ? new_cones : old_cones;
       const model::Effect* ef = m.find_effect(id);
       if (!ef) return;
       for (const auto& t : ef->tags) out.impact.tags.insert(t.name);
       for (int s : ef->sif) out.impact.sif_groups.insert(s);
-      for (int c : cone_causes(m, id)) {
+      for (int c : cones.causes(id)) {
         const model::Cause* cz = m.find_cause(c);
         if (is_new) out.impact.causes.insert(c);
         else if (d.cause_map.count(c)) out.impact.causes.insert(d.cause_map.at(c));

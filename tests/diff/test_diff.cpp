@@ -183,3 +183,87 @@ TEST(ChangePairs, InsertedRowShiftsTheRest) {
   EXPECT_TRUE(c.changed_effects().empty());
   EXPECT_TRUE(diff::retest_scope(c.behaviour).partial);
 }
+
+// ---- every kind of change the mutation operators make ----------------------
+
+// One change pair per mutation operator (docs/mutation.md): the example and
+// the mutant, chosen where the element is cheapest to decide (discrete
+// inputs, short timers); `reverse` compares the mutant with the original
+// (xoon-minus, which no example admits, is xoon-plus read backwards). The
+// expectation is what the edit means by docs/semantics.md, worked out by hand
+// from the example: the effects whose behaviour changes, and the cycle
+// (1-based) of the shortest run that shows it.
+struct OperatorPair {
+  const char* op;
+  const char* example;
+  const char* mutant;
+  bool reverse;
+  std::vector<int> changed;  // NEW effect ids whose behaviour changed
+  int cycle;                 // of the first effect's shortest difference; 0 = none
+};
+
+void PrintTo(const OperatorPair& p, std::ostream* os) { *os << p.op << " " << p.example << " " << p.mutant; }
+
+class OperatorPairs : public testing::TestWithParam<OperatorPair> {};
+
+TEST_P(OperatorPairs, ClassifiedAsExpected) {
+  const OperatorPair& p = GetParam();
+  const model::Matrix m = example(p.example);
+  const auto set = mutate::mutants(m);
+  const auto it = std::find_if(set.mutants.begin(), set.mutants.end(), [&](const auto& x) { return x.id == p.mutant; });
+  ASSERT_NE(it, set.mutants.end()) << p.mutant;
+  ASSERT_EQ(it->op, p.op);
+  const model::Matrix& a = p.reverse ? it->matrix : m;
+  const model::Matrix& b = p.reverse ? m : it->matrix;
+  const Compared c = compare(a, b);
+
+  // Structural: exactly the one edit, critical, on the mutated element.
+  ASSERT_EQ(c.structure.changes.size(), 1u) << it->description;
+  const ElementChange& ch = c.structure.changes.front();
+  EXPECT_TRUE(ch.critical()) << ch.label();
+  const std::string op = p.op;
+  if (op == "intersection-added") EXPECT_EQ(ch.kind, p.reverse ? ChangeKind::Removed : ChangeKind::Added);
+  else if (op == "intersection-removed") EXPECT_EQ(ch.kind, ChangeKind::Removed);
+  else EXPECT_EQ(ch.kind, ChangeKind::Changed) << ch.label();
+  if (op.rfind("intersection", 0) == 0) EXPECT_EQ(ch.element, ElementChange::Element::Intersection);
+  else if (op.rfind("xoon", 0) == 0) EXPECT_EQ(ch.element, ElementChange::Element::Intersection);
+  EXPECT_NE(it->element.find(ch.element == ElementChange::Element::Cause    ? "cause["
+                             : ch.element == ElementChange::Element::Effect ? "effect["
+                                                                            : "intersection"),
+            std::string::npos)
+      << it->element << " vs " << ch.label();
+
+  // Semantic: the expected effects changed, every other one proved
+  // equivalent, none undecided; runs replayed.
+  EXPECT_EQ(c.changed_effects(), p.changed) << it->description;
+  EXPECT_FALSE(c.behaviour.any_unknown());
+  for (const auto& e : c.behaviour.effects)
+    if (e.behaviour_changed()) {
+      EXPECT_TRUE(e.critically_changed) << e.result.group;
+      ASSERT_TRUE(e.result.distinction.has_value()) << e.result.group;
+      if (e.new_id == p.changed.front()) EXPECT_EQ(e.result.distinction->cycle + 1, p.cycle) << e.result.group;
+      EXPECT_FALSE(e.outputs.empty()) << e.result.group;
+    }
+  expect_runs_show_the_difference(b, c);
+
+  // The retest list is the impact set; the comparisons agree.
+  std::vector<int> impact = c.behaviour.impact.effects;
+  std::sort(impact.begin(), impact.end());
+  EXPECT_EQ(impact, p.changed);
+  const auto scope = diff::retest_scope(c.behaviour);
+  EXPECT_TRUE(scope.partial) << scope.reason;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Operators, OperatorPairs,
+    testing::Values(
+        // PAIRS
+        OperatorPair{"intersection-removed", "tank-overfill", "intersection-removed.c3e3", false, {3}, 1}),
+    [](const testing::TestParamInfo<OperatorPair>& i) {
+      std::string s = i.param.op;
+      for (char& ch : s)
+        if (ch == '-') ch = '_';
+      return s;
+    });
+
+}  // namespace
