@@ -45,7 +45,7 @@ expect1 "$cemv" simulate "$new" "$scen" >/dev/null
 # -q: nothing on standard output for the text report; a file is still written.
 out=$(expect1 "$cemv" diff "$old" "$new" -q)
 [ -z "$out" ] || { echo "-q printed: $out"; exit 1; }
-expect1 "$cemv" diff "$old" "$new" -q --format json -o "$tmp/quiet.json"
+expect1 "$cemv" diff "$old" "$new" -q --format json -o "$tmp/quiet.json" --out "$tmp/scenarios"
 cmp -s "$tmp/quiet.json" "$tmp/report.json" || { echo "-q changed the JSON"; exit 1; }
 # Deterministic: the same comparison gives the same bytes.
 expect1 "$cemv" diff "$old" "$new" --format md -o "$tmp/again.md"
