@@ -55,7 +55,7 @@ void write_scenarios(const DiffArgs& a, diff::DiffReport& r) {
                                               "Where " + r.new_m->name + " (NEW) differs from OLD: " + e.new_key +
                                                   " in cycle " + std::to_string(d.cycle + 1) +
                                                   "; the expectation is OLD's value, so NEW fails it",
-                                              expect));
+                                              expect, r.old_m));
     r.scenarios.emplace_back(e.result.group, file);
   }
 }

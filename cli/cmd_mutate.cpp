@@ -44,7 +44,7 @@ std::string killing_scenario(const model::Matrix& m, const mutate::Mutant& mu, c
   return checker::scenario_json(m, d.run_a.inputs,
                                 "Distinguishes mutant " + mu.id + " (" + mu.description + ", " + mu.element +
                                     ") from " + m.name + ": " + d.key + " in cycle " + std::to_string(d.cycle + 1),
-                                expect);
+                                expect, &mu.matrix);
 }
 
 int run_mutate(const MutateArgs& a) {

@@ -53,3 +53,19 @@ rc=0
 "$cemv" simulate "$tmp/new.json" "$scen" >/dev/null || rc=$?
 [ "$rc" -eq 1 ] || { echo "the scenario on NEW: exit $rc, expected 1 (a failed expectation)"; exit 1; }
 echo "lsst pair: the distinguishing scenario passes on OLD and fails on NEW"
+# The retest the change needs: the comparisons agree, so only the objectives
+# of effect 5's cone and the impact set's causes, plus the distinguishing run
+# as C001; every test green on NEW.
+"$cemv" testgen "$tmp/new.json" --changed-from "$tmp/old.json" --out "$tmp/retest" -q
+python3 - "$tmp/retest/coverage.json" <<'PY'
+import json, sys
+c = json.load(open(sys.argv[1]))
+elements = {o["element"] for o in c["objectives"]}
+allowed = {"effect[5]"} | {f"cause[{i}]" for i in (17, 20, 25, 26, 31, 32, 41)}
+assert elements and elements <= allowed, elements - allowed
+assert c["tests"][0]["id"] == "C001" and c["summary"]["undecided"] == 0, c["summary"]
+print(f"lsst retest: {c['summary']['objectives']} objectives, {c['summary']['tests']} tests")
+PY
+"$cemv" replay "$tmp/new.json" "$tmp/retest" >/dev/null
+grep -q "^## The change" "$tmp/retest/checklist.md"
+echo "lsst pair: testgen --changed-from gives the partial retest, green on NEW"

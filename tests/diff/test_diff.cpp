@@ -199,7 +199,9 @@ struct OperatorPair {
   const char* mutant;
   bool reverse;
   std::vector<int> changed;  // NEW effect ids whose behaviour changed
-  int cycle;                 // of the first effect's shortest difference; 0 = none
+  int cycle;                 // of the first effect's shortest difference; 0: not asserted (a
+                             // difference beyond BMC's bound, found by accelerated BMC, is not
+                             // guaranteed shortest)
 };
 
 void PrintTo(const OperatorPair& p, std::ostream* os) { *os << p.op << " " << p.example << " " << p.mutant; }
@@ -212,28 +214,42 @@ TEST_P(OperatorPairs, ClassifiedAsExpected) {
   const auto set = mutate::mutants(m);
   const auto it = std::find_if(set.mutants.begin(), set.mutants.end(), [&](const auto& x) { return x.id == p.mutant; });
   ASSERT_NE(it, set.mutants.end()) << p.mutant;
-  ASSERT_EQ(it->op, p.op);
+  ASSERT_EQ(it->op, p.reverse ? std::string("xoon-plus") : std::string(p.op));
   const model::Matrix& a = p.reverse ? it->matrix : m;
   const model::Matrix& b = p.reverse ? m : it->matrix;
   const Compared c = compare(a, b);
 
-  // Structural: exactly the one edit, critical, on the mutated element.
-  ASSERT_EQ(c.structure.changes.size(), 1u) << it->description;
-  const ElementChange& ch = c.structure.changes.front();
-  EXPECT_TRUE(ch.critical()) << ch.label();
+  // Structural: exactly the one edit, critical, on the mutated element (an
+  // XooN edit moves the X of every intersection of the assignment: one
+  // change per intersection, field `xoon`).
   const std::string op = p.op;
+  const bool xoon = op.rfind("xoon", 0) == 0;
+  if (xoon) {
+    ASSERT_GE(c.structure.changes.size(), 2u) << it->description;
+  } else {
+    ASSERT_EQ(c.structure.changes.size(), 1u) << it->description;
+  }
   const ChangeKind kind = op == "intersection-added"     ? ChangeKind::Added
                           : op == "intersection-removed" ? ChangeKind::Removed
                                                          : ChangeKind::Changed;
-  EXPECT_EQ(ch.kind, kind) << ch.label();
-  if (op.rfind("intersection", 0) == 0 || op.rfind("xoon", 0) == 0) {
-    EXPECT_EQ(ch.element, ElementChange::Element::Intersection);
+  for (const ElementChange& ch : c.structure.changes) {
+    EXPECT_TRUE(ch.critical()) << ch.label();
+    EXPECT_EQ(ch.kind, kind) << ch.label();
+    if (op.rfind("intersection", 0) == 0 || xoon) {
+      EXPECT_EQ(ch.element, ElementChange::Element::Intersection);
+    }
+    if (xoon) {
+      ASSERT_EQ(ch.fields.size(), 1u) << ch.label();
+      EXPECT_EQ(ch.fields[0].field, "xoon");
+    }
+    if (!xoon) {
+      EXPECT_NE(it->element.find(ch.element == ElementChange::Element::Cause    ? "cause["
+                                 : ch.element == ElementChange::Element::Effect ? "effect["
+                                                                                : "intersection"),
+                std::string::npos)
+          << it->element << " vs " << ch.label();
+    }
   }
-  EXPECT_NE(it->element.find(ch.element == ElementChange::Element::Cause    ? "cause["
-                             : ch.element == ElementChange::Element::Effect ? "effect["
-                                                                            : "intersection"),
-            std::string::npos)
-      << it->element << " vs " << ch.label();
 
   // Semantic: the expected effects changed, every other one proved
   // equivalent, none undecided; runs replayed.
@@ -243,7 +259,7 @@ TEST_P(OperatorPairs, ClassifiedAsExpected) {
     if (e.behaviour_changed()) {
       EXPECT_TRUE(e.critically_changed) << e.result.group;
       ASSERT_TRUE(e.result.distinction.has_value()) << e.result.group;
-      if (e.new_id == p.changed.front()) {
+      if (e.new_id == p.changed.front() && p.cycle > 0) {
         EXPECT_EQ(e.result.distinction->cycle + 1, p.cycle) << e.result.group;
       }
       EXPECT_FALSE(e.outputs.empty()) << e.result.group;
@@ -261,8 +277,45 @@ TEST_P(OperatorPairs, ClassifiedAsExpected) {
 INSTANTIATE_TEST_SUITE_P(
     Operators, OperatorPairs,
     testing::Values(
-        // PAIRS
-        OperatorPair{"intersection-removed", "tank-overfill", "intersection-removed.c3e3", false, {3}, 1}),
+        // ESD cause 3 no longer trips P-102: effect 3 differs when it trips.
+        OperatorPair{"intersection-removed", "tank-overfill", "intersection-removed.c3e3", false, {3}, 1},
+        // The fork switch (cause 2) now also stops P-102.
+        OperatorPair{"intersection-added", "tank-overfill", "intersection-added.N.c2e3", false, {3}, 1},
+        // ESD into P-101 N -> S: effect 2 latches on the first trip.
+        OperatorPair{"intersection-type", "tank-overfill", "intersection-type.S.c3e2", false, {2}, 1},
+        // The ESD button's tag de-energise <-> energise to trip: at rest one
+        // version trips, in cycle 1, every effect cause 3 drives.
+        OperatorPair{"tag-ett", "tank-overfill", "tag-ett.c3t1", false, {1, 2, 3}, 1},
+        // A bad-quality ESD signal trips OLD (default "trip"), not NEW.
+        OperatorPair{"bad-quality", "tank-overfill", "bad-quality.ignore.c3", false, {1, 2, 3}, 1},
+        // An on-delay on the ESD button: OLD trips in cycle 1, NEW later.
+        OperatorPair{"time-mode", "tank-overfill", "time-mode.on_delay.c3", false, {1, 2, 3}, 1},
+        // Acknowledgement of the ESD cause: a one-cycle trip stays active in one
+        // version in cycle 2.
+        OperatorPair{"auto-ack", "tank-overfill", "auto-ack.c3", false, {1, 2, 3}, 2},
+        // P-102's output tag DTT <-> ETT: the output differs at rest.
+        OperatorPair{"output-ett", "tank-overfill", "output-ett.e3t1", false, {3}, 1},
+        // One cycle of output delay on P-102: a one-cycle trip clears a cycle later.
+        OperatorPair{"output-delay-plus", "tank-overfill", "output-delay-plus.e3", false, {3}, 2},
+        // XV-101 without its field reset tag: the reset of cycle 2 is refused.
+        OperatorPair{"effect-reset-tag-removed", "tank-overfill", "effect-reset-tag-removed.e1", false, {1}, 2},
+        // XV-101's process data no longer passes through: differs at rest.
+        OperatorPair{"pass-through", "tank-overfill", "pass-through.e1", false, {1}, 1},
+        // The ESD cause 4 (or of two tags) as "and": one tag tripped trips OLD
+        // only; effect 1 differs, and effects 2, 3, 4 through the causes that
+        // read Effect[1] and Effect[1][2] (causes 6 and 5).
+        OperatorPair{"cause-function", "compressor", "cause-function.and.c4", false, {1, 2, 3, 4}, 1},
+        // Output delay of ISOLATE_K401 5000 -> 4900 ms: differs only after the
+        // delay runs out (a run beyond BMC's bound; cycle not asserted).
+        OperatorPair{"output-delay-minus", "compressor", "output-delay-minus.e2", false, {2}, 0},
+        // ISOLATE_K401 without its bypass tag: the bypass no longer holds it off.
+        OperatorPair{"effect-bypass-tag-removed", "compressor", "effect-bypass-tag-removed.e2", false, {2}, 1},
+        // OPEN_RECYCLE's mask tag removed: the mask no longer forces the output.
+        OperatorPair{"mask-tag-removed", "compressor", "mask-tag-removed.e3", false, {3}, 1},
+        // STOP_P305's XooN assignment needs one cause more (and, read
+        // backwards, one fewer: xoon-minus, which no example admits).
+        OperatorPair{"xoon-plus", "pipeline-hipps", "xoon-plus.e2", false, {2}, 1},
+        OperatorPair{"xoon-minus", "pipeline-hipps", "xoon-plus.e2", true, {2}, 1}),
     [](const testing::TestParamInfo<OperatorPair>& i) {
       std::string s = i.param.op;
       for (char& ch : s)
