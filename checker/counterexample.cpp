@@ -1,7 +1,5 @@
 #include "checker/counterexample.hpp"
 
-#include <limits>
-
 #include <fstream>
 #include <stdexcept>
 
@@ -81,18 +79,9 @@ bool same_tags(const std::vector<model::TagValue>& a, const std::vector<model::T
 
 std::string scenario_json(const model::Matrix& m, const std::vector<model::CycleInput>& inputs,
                           const std::string& description,
-                          const std::vector<ScenarioExpectation>& expect, const model::Matrix* also_run_on) {
+                          const std::vector<ScenarioExpectation>& expect) {
   model::InputTable table(m);
   std::vector<model::TagValue> current = model::default_cycle_input(m).tags;
-  if (also_run_on) {
-    const model::InputTable other(*also_run_on);
-    const std::vector<model::TagValue> theirs = model::default_cycle_input(*also_run_on).tags;
-    for (std::size_t i = 0; i < table.size(); ++i) {
-      auto j = other.find(table.tags()[i].name);
-      // NaN differs from every value: the first step writes the tag.
-      if (j && theirs[*j].value != current[i].value) current[i].value = std::numeric_limits<float>::quiet_NaN();
-    }
-  }
   ordered_json doc;
   doc["format"] = formats::kScenarioFormat;
   doc["description"] = description;

@@ -25,14 +25,9 @@ struct ScenarioExpectation {
 // runtime ran them (cycle_inputs gives model::CommandOrder's), so that
 // `cemv simulate` on the file repeats the run.
 // `expect`: checked after the last cycle.
-// `also_run_on`: another matrix the scenario is meant to run on too (a
-// mutant, the other version of a change): the first step then also states
-// every tag whose default there differs from its default in `m` (an ETT
-// flip changes a tag's default), which that matrix would otherwise read.
 std::string scenario_json(const model::Matrix& m, const std::vector<model::CycleInput>& inputs,
                           const std::string& description,
-                          const std::vector<ScenarioExpectation>& expect,
-                          const model::Matrix* also_run_on = nullptr);
+                          const std::vector<ScenarioExpectation>& expect);
 
 // One command as the scenario format writes it, on one line:
 // {"op":"soft_bypass_tag","cause":1,"tag":2,"on":true}.

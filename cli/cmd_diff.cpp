@@ -14,6 +14,7 @@
 #include "cli/commands.hpp"
 #include "cli/matrix_input.hpp"
 #include "cli/output.hpp"
+#include "cli/scenario_defaults.hpp"
 #include "diff/print.hpp"
 #include "formats/matrix_json.hpp"
 
@@ -51,11 +52,13 @@ void write_scenarios(const DiffArgs& a, diff::DiffReport& r) {
     // confirmed on NEW by the semantic comparison).
     std::vector<checker::ScenarioExpectation> expect{{e.new_key, d.type, d.value_a}};
     const std::string file = (std::filesystem::path(a.out_dir) / (file_stem(e.result.group) + ".diff.scenario.json")).string();
-    write_output(file, checker::scenario_json(*r.new_m, e.new_inputs,
-                                              "Where " + r.new_m->name + " (NEW) differs from OLD: " + e.new_key +
-                                                  " in cycle " + std::to_string(d.cycle + 1) +
-                                                  "; the expectation is OLD's value, so NEW fails it",
-                                              expect, r.old_m));
+    write_output(file, with_other_defaults(
+                           checker::scenario_json(*r.new_m, e.new_inputs,
+                                                  "Where " + r.new_m->name + " (NEW) differs from OLD: " + e.new_key +
+                                                      " in cycle " + std::to_string(d.cycle + 1) +
+                                                      "; the expectation is OLD's value, so NEW fails it",
+                                                  expect),
+                           *r.new_m, e.new_inputs.front(), *r.old_m));
     r.scenarios.emplace_back(e.result.group, file);
   }
 }

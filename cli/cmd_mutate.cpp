@@ -18,6 +18,7 @@
 #include "cli/commands.hpp"
 #include "cli/matrix_input.hpp"
 #include "cli/output.hpp"
+#include "cli/scenario_defaults.hpp"
 #include "formats/matrix_json.hpp"
 #include "mutate/mutants.hpp"
 
@@ -41,10 +42,12 @@ struct MutateArgs {
 // and fails on the mutant (a test that kills the mutant).
 std::string killing_scenario(const model::Matrix& m, const mutate::Mutant& mu, const checker::Distinction& d) {
   std::vector<checker::ScenarioExpectation> expect{{d.key, d.type, d.value_a}};
-  return checker::scenario_json(m, d.run_a.inputs,
-                                "Distinguishes mutant " + mu.id + " (" + mu.description + ", " + mu.element +
-                                    ") from " + m.name + ": " + d.key + " in cycle " + std::to_string(d.cycle + 1),
-                                expect, &mu.matrix);
+  return with_other_defaults(
+      checker::scenario_json(m, d.run_a.inputs,
+                             "Distinguishes mutant " + mu.id + " (" + mu.description + ", " + mu.element + ") from " +
+                                 m.name + ": " + d.key + " in cycle " + std::to_string(d.cycle + 1),
+                             expect),
+      m, d.run_a.inputs.front(), mu.matrix);
 }
 
 int run_mutate(const MutateArgs& a) {
