@@ -15,7 +15,7 @@ if(TARGET cemv_diff)
   # Exit 0: a rename and a description edit change no behaviour.
   cemv_cli_test(NAME cli_diff_rename_exit0 EXIT 0
     MATCH "non-critical changed effect\\[2\\] P_2_RENAMED.*no behaviour changed: only non-critical"
-    COMMAND bash -c "set -o pipefail; \"$1\" diff \"$2\" \"$3\" | tr '\\n' ' '" diff
+    COMMAND bash -c "set -o pipefail && \"$1\" diff \"$2\" \"$3\" | tr '\\n' ' '" diff
             $<TARGET_FILE:cemv> ${DIFF_CASES}/small_old.json ${DIFF_CASES}/small_renamed.json)
   # Exit 1: intersection cause 1 / effect 1 N -> S; effect 1 latches in cycle 1.
   cemv_cli_test(NAME cli_diff_changed_exit1 EXIT 1
@@ -40,7 +40,7 @@ if(TARGET cemv_diff)
   if(TARGET cemv_mutate)  # the double: tests/cli/change_double.cmake (included after this folder)
     cemv_cli_test(NAME cli_diff_undecided_exit3 EXIT 3
       MATCH "effect\\[2\\] UNDECIDED_2: undecided \\(time limit\\).*retest the whole matrix.*undecided: some effect"
-      COMMAND bash -c "set -o pipefail; \"$1\" diff \"$2\" \"$3\" | tr '\\n' ' '" diff
+      COMMAND bash -c "set -o pipefail && \"$1\" diff \"$2\" \"$3\" | tr '\\n' ' '" diff
               $<TARGET_FILE:cemv_change_double> ${DIFF_CASES}/small_old.json ${DIFF_CASES}/small_undecided.json)
     cemv_cli_test(NAME cli_diff_internal_exit4 EXIT 4
       MATCH "internal error: equivalence of effect\\[2\\]: the runtimes do not reproduce"
