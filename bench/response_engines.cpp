@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <iostream>
 
+#include "checker/engines/invariants.hpp"
 #include "checker/engines/portfolio.hpp"
 #include "checker/property_problem.hpp"
 #include "checker/reduce.hpp"
@@ -41,6 +42,21 @@ int main(int argc, char** argv) {
       z3::context ctx;
       checker::Reduction red;
       auto problem = checker::reduce(make(ctx), &red);
+      if (std::getenv("SHOW_STATE") && engine == engines.front()) {
+        for (const auto& v : problem.problem.ts->statevars()) std::cout << "  state " << v.name << std::endl;
+        for (const auto& l : problem.problem.ts->lemmas()) std::cout << "  lemma " << l.term << std::endl;
+      }
+      if (std::getenv("SHOW_HOUDINI") && engine == engines.front()) {
+        auto cands = checker::mine_candidates(problem.problem);
+        auto kept = checker::houdini(problem.problem, cands,
+                                     checker::Limits::within(std::chrono::seconds(seconds)));
+        std::cout << "  mined " << cands.size() << ", inductive " << kept.size() << std::endl;
+        for (const auto& c : cands) {
+          bool k = false;
+          for (const auto& d : kept) k = k || z3::eq(c, d);
+          std::cout << (k ? "  kept    " : "  dropped ") << c << std::endl;
+        }
+      }
       auto prover = checker::make_prover(engine);
       auto start = std::chrono::steady_clock::now();
       auto r = prover->prove(problem.problem,
