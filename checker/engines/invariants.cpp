@@ -126,8 +126,8 @@ class CandidateMiner {
     unary();
     pairs();
     guarded();
-    monitor_bounds();
     if (opt_.bool_implications) bool_implications();
+    monitor_bounds();  // last: the candidates of the other templates stay as they were
     return std::move(out_);
   }
 
@@ -247,7 +247,7 @@ class CandidateMiner {
       if (!monitor(x) && lo >= 0 && bound[x] > 0) counters.push_back(x);
     }
     // Sums of the bounds of up to two counters other than x.
-    const bool pairs_of_counters = counters.size() <= 16;
+    const bool pairs_of_counters = counters.size() <= 12;
     auto offsets = [&](std::size_t x) {
       std::set<std::int64_t> sums{0};
       for (std::size_t a = 0; a < counters.size(); ++a) {
@@ -262,9 +262,11 @@ class CandidateMiner {
         for (std::int64_t r = 0; r <= 2; ++r) out.insert(1 - r - sum);
       return out;
     };
+    // Each candidate costs Houdini; a big cone with many monitors stops here.
+    const std::size_t budget = out_.size() + 4000;
     for (std::size_t g : bools_) {
       if (!monitor(g)) continue;
-      for (int pol = 1; pol >= 0 && !stop(); --pol) {
+      for (int pol = 1; pol >= 0 && !stop() && out_.size() < budget; --pol) {
         z3::expr guard = pol ? var(g) : !var(g);
         bool seen = false;
         for (const auto& s : samples_) seen = seen || s[g].i == pol;
