@@ -129,6 +129,16 @@ TEST(Response, OutputDelayAddsItsCycles) {
   EXPECT_EQ(p.logic.cycles, 5);
   expect_replays(m, dir, p.logic.counterexample);
   expect_not_yet_active(dir, p.logic.counterexample, 1);
+  // After an on-delay: the two delays add up (10 + 20 cycles).
+  auto both = matrix(cause(1, "S1", R"("time": {"mode": "on_delay", "ms": 1000})"),
+                     effect(1, "Y1", R"("output_delay_ms": 2000)"), link(1, 1));
+  auto dir2 = scratch("on_and_output_delay");
+  const auto r2 = analyse(both, dir2);
+  const auto& q = only_path(r2, 1);
+  ASSERT_EQ(q.logic.kind, Figure::Kind::Exact) << q.logic.reason;
+  EXPECT_EQ(q.logic.cycles, 30);
+  expect_replays(both, dir2, q.logic.counterexample);
+  expect_not_yet_active(dir2, q.logic.counterexample, 1);
 }
 
 // I.4: a reference to an element evaluated earlier in the scan reads its
