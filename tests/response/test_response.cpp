@@ -10,8 +10,13 @@
 
 #include <gtest/gtest.h>
 
+#include "checker/engines/portfolio.hpp"
+#include "checker/property_problem.hpp"
+#include "checker/reduce.hpp"
 #include "formats/matrix_json.hpp"
+#include "properties/parser.hpp"
 #include "response/analysis.hpp"
+#include "response/property.hpp"
 #include "response/report.hpp"
 
 namespace {
@@ -270,6 +275,30 @@ TEST(Response, ThirtyMinuteOnDelayIsExactWithoutUnrolling) {
   EXPECT_EQ(p.logic.cycles, 18000);
   expect_replays(m, dir, p.logic.counterexample);
   expect_not_yet_active(dir, p.logic.counterexample, 1);
+}
+
+// The proof of a bound does not unroll it: one induction step of the
+// invariant engine, with the monitor-bound candidates of its miner
+// (docs/response-time.md, "Method"), proves an on-delay of 10 cycles then an
+// output delay of 20 at T = 30, and cannot prove T = 29.
+TEST(Response, InvariantEngineProvesTheBoundInOneStep) {
+  auto m = matrix(cause(1, "S1", R"("time": {"mode": "on_delay", "ms": 1000})"),
+                  effect(1, "Y1", R"("output_delay_ms": 2000)"), link(1, 1));
+  const auto path = response::response_paths(m, {}).at(0);
+  for (long long t : {30LL, 29LL}) {
+    auto file = properties::parse_properties(
+        response::response_property_text(m, path, response::Mode::Normal, t, "probe"), m, "probe");
+    z3::context ctx;
+    auto problem = checker::reduce(checker::property_problem(m, file, file.properties.at(0))(ctx));
+    auto r = checker::make_prover("invariants+induction")
+                 ->prove(problem.problem, checker::Limits::within(std::chrono::seconds(120)));
+    if (t == 30) {
+      EXPECT_EQ(r.verdict, checker::Verdict::Proved) << r.reason;
+      EXPECT_LE(r.k, 1);
+    } else {
+      EXPECT_NE(r.verdict, checker::Verdict::Proved);
+    }
+  }
 }
 
 }  // namespace
