@@ -56,8 +56,8 @@ struct BadArguments : std::runtime_error {
 // use response/, which sits above it).
 reports::ResponseFigures response_figures(const model::Matrix& m, const response::ResponseResult& r) {
   reports::ResponseFigures f;
-  f.controller = std::to_string(r.paths.empty() ? 2 * m.cycle_ms : r.paths.front().controller_ms) + " ms (2 x " +
-                 (r.conservative ? "watchdog_ms" : "cycle_ms") + ")";
+  f.controller = std::to_string(r.paths.empty() ? 2 * m.cycle_ms : r.paths.front().controller_ms) + " ms, 2 x " +
+                 (r.conservative ? "watchdog_ms" : "cycle_ms");
   for (const auto& p : r.paths) {
     reports::ResponseFigures::Path row;
     row.sif = p.path.sif;

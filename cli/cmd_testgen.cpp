@@ -77,7 +77,7 @@ int run_testgen(const TestgenArgs& a) {
   for (const auto& t : suite.tests) {
     write_output((dir / t.file_name).string(), t.scenario_json);
     const std::string svg = diagram_name((dir / t.file_name).string());
-    write_output(svg, test_diagram(m, "Test " + t.id + ": " + t.description, t.inputs, t.checkpoints));
+    write_output(svg, test_diagram(m, "Test " + t.description, t.inputs, t.checkpoints));
     diagrams += "diagram: " + svg + "\n";
   }
   const auto header = testgen::checklist_header(m, suite, tool);

@@ -238,7 +238,8 @@ class Writer {
       if (!p.trace) continue;
       o_ << "<div class=\"cex\">\n<h3>" << html_escape(p.name) << ": "
          << (p.verdict == checker::PropertyVerdict::Reachable ? "witness" : "counterexample") << "</h3>\n";
-      o_ << "<p>" << html_escape(outcome_text(p)) << ", " << p.trace->inputs.size() << " cycles.</p>\n";
+      o_ << "<p>" << html_escape(outcome_text(p)) << ", " << p.trace->inputs.size()
+         << (p.trace->inputs.size() == 1 ? " cycle" : " cycles") << ".</p>\n";
       o_ << "<img class=\"diagram\" alt=\"timing diagram of " << html_escape(p.name)
          << "\" src=\"data:image/svg+xml;base64," << base64(timing_svg(m_, *p.trace, diagram_of(p))) << "\">\n";
       if (!p.timing_table.empty()) o_ << "<pre>" << html_escape(p.timing_table) << "</pre>\n";

@@ -58,7 +58,7 @@ struct ResponseFigures {
     std::optional<double> margin_percent;
     std::string verdict;  // ok, over, no-pst, unbounded, unknown
   };
-  std::string controller;  // "200 ms (2 x cycle_ms)"
+  std::string controller;  // "200 ms, 2 x cycle_ms"
   std::vector<Path> paths;
 };
 

@@ -165,7 +165,8 @@ class Drawing {
     std::size_t folded = 0, hidden = 0;
     for (const auto& c : cols_)
       if (c.folded) ++folded, hidden += c.last - c.first + 1;
-    std::string s = "matrix " + m_.name + ", " + std::to_string(t_.inputs.size()) + " cycles of " +
+    std::string s = "matrix " + m_.name + ", " + std::to_string(t_.inputs.size()) +
+                    (t_.inputs.size() == 1 ? " cycle of " : " cycles of ") +
                     std::to_string(m_.cycle_ms) + " ms (" +
                     timing::time_text(double(t_.inputs.size()) * m_.cycle_ms) + ")";
     if (folded)
@@ -176,9 +177,19 @@ class Drawing {
 
   std::vector<std::string> footer() const {
     std::vector<std::string> out;
-    out.push_back("Cycle n starts at t = (n-1) x " + std::to_string(m_.cycle_ms) +
-                  " ms; values are those after the cycle. Red dashes: limit; orange: prewarning; grey dots: "
-                  "hysteresis release; red shading: bad quality; bars: timers filling up to their time.");
+    // The legend names only what this picture draws.
+    bool levels = false, bad = false, timers = false;
+    for (const auto& r : rows_) {
+      levels |= !r.levels.empty();
+      for (bool b : r.bad) bad |= b;
+      timers |= r.kind == RowKind::Timer;
+    }
+    std::string legend = "Cycle n starts at t = (n-1) x " + std::to_string(m_.cycle_ms) +
+                         " ms; values are those after the cycle.";
+    if (levels) legend += " Red dashes: limit; orange: prewarning; grey dots: hysteresis release.";
+    if (bad) legend += " Red shading: bad quality.";
+    if (timers) legend += " Bars: timers filling up to their time.";
+    out.push_back(legend);
     if (!d_.checks.empty())
       out.push_back("Green ticks under the cycle numbers: the cycles at which the test checks its expectations.");
     std::size_t listed = 0, folds = 0;
@@ -329,8 +340,12 @@ class Drawing {
       o << "<polygon class=\"cmd\" points=\"" << num(x - 5) << "," << num(top) << " " << num(x + 5) << ","
         << num(top) << " " << num(x) << "," << num(top + 9) << "\"><title>cycle " << cols_[i].first + 1 << ": "
         << html_escape(text) << "</title></polygon>\n";
+      // The label stops at the picture's right edge (the marker's tooltip has it all).
+      std::string label = text;
+      const std::size_t room = static_cast<std::size_t>(std::max(0.0, width_ - x - 10) / (10 * 0.6));
+      if (label.size() > room) label = room > 3 ? label.substr(0, room - 3) + "..." : "";
       o << "<text class=\"small\" x=\"" << num(x + 6) << "\" y=\"" << num(top + 20 + 11 * lane) << "\">"
-        << html_escape(text) << "</text>\n";
+        << html_escape(label) << "</text>\n";
       lane = 1 - lane;
     }
     (void)bottom;

@@ -208,6 +208,9 @@ TEST(CheckPrinters, EveryFormatNamesTheDiagramFiles) {
   EXPECT_EQ(uris, (std::vector<std::string>{"out/req5.stored_holds.scenario.json", "out/req5.stored_holds.svg",
                                             "out/req5.stored_holds.vcd"}));
   // A finding without a run (unknown) has no attachments.
-  for (const auto& res : results)
-    if (res["properties"]["verdict"] == "unknown") EXPECT_FALSE(res.contains("attachments"));
+  for (const auto& res : results) {
+    if (res["properties"]["verdict"] == "unknown") {
+      EXPECT_FALSE(res.contains("attachments"));
+    }
+  }
 }
