@@ -48,6 +48,10 @@ CheckResult check_properties(const model::Matrix& m, const std::vector<propertie
       std::size_t i = next++;
       if (i >= jobs.size()) return;
       try {
+        if (options.on_start) {
+          std::lock_guard<std::mutex> lock(report_mutex);
+          options.on_start(jobs[i].property->name);
+        }
         auto deadline = total_deadline;
         if (options.property_timeout_s > 0)
           deadline = std::min(deadline, Clock::now() + std::chrono::duration_cast<Clock::duration>(

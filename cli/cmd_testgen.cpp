@@ -15,6 +15,8 @@
 #include "cli/matrix_input.hpp"
 #include "cli/output.hpp"
 #include "cli/testgen_change.hpp"
+#include "cli/progress.hpp"
+#include "cli/trace_pictures.hpp"
 #include "testgen/checklist.hpp"
 #include "testgen/testgen.hpp"
 
@@ -57,18 +59,32 @@ int run_testgen(const TestgenArgs& a) {
       std::cerr << testgen::to_string(r.status) << " " << r.objective.id << " [" << r.method << ", " << t << "]"
                 << (r.reason.empty() ? "" : " " + r.reason) << "\n";
     };
+  // On a terminal (not --quiet, not -v, whose lines are the progress): objectives decided / total.
+  std::size_t objectives = 0;
+  for (const auto& ob : testgen::derive_objectives(m)) objectives += !o.sif || ob.sif == *o.sif;
+  Progress progress("cemv testgen", objectives, "objectives", !a.quiet && !a.verbose && Progress::terminal(),
+                    std::cerr);
+  if (!a.verbose) o.on_decided = [&](const testgen::ObjectiveResult& r) { progress.finished(r.objective.id); };
   testgen::TestSuite suite;
   ChangeScope change;
   try {
     if (!a.changed_from.empty()) change = apply_change(a.changed_from, a.matrix_file, m, a.diff_timeout_s, o);
     suite = testgen::generate_tests(m, o);
   } catch (const checker::InternalError& e) {
+    progress.stop();
     std::cerr << "internal error: " << e.what() << "\n(a bug in cemv: please report it with the matrix)\n";
     return 4;
   }
   const std::string tool = std::string("cemv ") + CEMV_VERSION;
   const std::filesystem::path dir(a.out_dir);
-  for (const auto& t : suite.tests) write_output((dir / t.file_name).string(), t.scenario_json);
+  progress.stop();
+  std::string diagrams;  // each test's timing diagram beside its scenario, named in the summary
+  for (const auto& t : suite.tests) {
+    write_output((dir / t.file_name).string(), t.scenario_json);
+    const std::string svg = diagram_name((dir / t.file_name).string());
+    write_output(svg, test_diagram(m, "Test " + t.description, t.inputs, t.checkpoints));
+    diagrams += "diagram: " + svg + "\n";
+  }
   auto header = testgen::checklist_header(m, suite, tool);
   header.preface_markdown = change.preface_markdown;
   header.preface_html = change.preface_html;
@@ -83,7 +99,7 @@ int run_testgen(const TestgenArgs& a) {
                        " covered, " + std::to_string(suite.infeasible) + " infeasible, " +
                        std::to_string(suite.undecided) + " undecided\n" + std::to_string(suite.tests.size()) +
                        " tests, " + std::to_string(suite.total_steps) + " steps, " +
-                       std::to_string(suite.total_cycles) + " scan cycles; every test replays green\n" +
+                       std::to_string(suite.total_cycles) + " scan cycles; every test replays green\n" + diagrams +
                        change.summary;
     for (const auto& r : suite.objectives)
       if (r.status != testgen::ObjectiveStatus::Covered)

@@ -23,6 +23,18 @@ std::string sif_title(const model::Matrix& m, int sif) {
   return "SIF " + std::to_string(sif) + (it != m.sif_groups.end() ? ": " + it->second : "");
 }
 
+// What a test is about: its description without the "T001 (SIF 1 NAME): "
+// prefix (found by building it: a SIF name may itself hold ": ").
+std::string test_subject(const model::Matrix& m, const Test& t) {
+  std::string prefix = t.id;
+  if (t.sif) {
+    auto it = m.sif_groups.find(t.sif);
+    prefix += " (SIF " + std::to_string(t.sif) + (it != m.sif_groups.end() ? " " + it->second : "") + ")";
+  }
+  prefix += ": ";
+  return t.description.rfind(prefix, 0) == 0 ? t.description.substr(prefix.size()) : t.description;
+}
+
 std::string md_cell(const std::string& s) {
   std::string out;
   for (char c : s) {
@@ -113,7 +125,7 @@ std::string checklist_markdown(const model::Matrix& m, const TestSuite& s, const
       sif = t.sif;
       o << "## " << sif_title(m, sif) << "\n\n";
     }
-    o << "### " << t.id << ": " << md_cell(t.description.substr(t.description.find(": ") + 2)) << "\n\n";
+    o << "### " << t.id << ": " << md_cell(test_subject(m, t)) << "\n\n";
     o << "File `" << t.file_name << "`, " << t.inputs.size() << " scan cycles. Covers: ";
     for (std::size_t i = 0; i < t.objectives.size(); ++i) o << (i ? ", " : "") << "`" << t.objectives[i] << "`";
     o << "\n\n| No. | Action | Expected observation | Result | Initials | Date |\n|---|---|---|---|---|---|\n";
@@ -171,7 +183,7 @@ std::string checklist_html(const model::Matrix& m, const TestSuite& s, const Che
       sif = t.sif;
       o << "<h2>" << html_escape(sif_title(m, sif)) << "</h2>\n";
     }
-    o << "<section class=\"test\"><h3>" << t.id << ": " << html_escape(t.description.substr(t.description.find(": ") + 2))
+    o << "<section class=\"test\"><h3>" << t.id << ": " << html_escape(test_subject(m, t))
       << "</h3>\n<p class=\"files\">File <code>" << html_escape(t.file_name) << "</code>, " << t.inputs.size()
       << " scan cycles. Covers: ";
     for (std::size_t i = 0; i < t.objectives.size(); ++i) o << (i ? ", " : "") << html_escape(t.objectives[i]);
