@@ -46,7 +46,7 @@ cemv_cli_test(NAME cli_fmt_generated_many_nan EXIT 2
 cemv_cli_test(NAME cli_simulate_generated_many_issues EXIT 2
               MATCH "many-issues.json:3:2: error: steps\\[1\\]\\.inputs: unknown tag 'NO_SUCH_TAG'"
               COMMAND bash ${_malformed_dir}/generated.sh many-issues $<TARGET_FILE:cemv>)
-set_tests_properties(cli_fmt_generated_many_nan cli_simulate_generated_many_issues PROPERTIES TIMEOUT 60)
+set_tests_properties(cli_fmt_generated_many_nan cli_simulate_generated_many_issues PROPERTIES TIMEOUT 120)
 
 cemv_cli_test(NAME cli_signature_malformed EXIT 2
               MATCH "^tests/formats/malformed/unknown-key-cause\\.json:13:7: error: causes\\[0\\]\\.bypas_tag: unknown key"
