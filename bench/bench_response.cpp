@@ -103,6 +103,22 @@ void BM_LongDelayPlainBmc(benchmark::State& state, model::Matrix m, int cause, i
                  std::to_string(r.k) + " of " + std::to_string(t));
 }
 
+// How many paths (and estimated bounds) big_matrix has: the size of the job.
+void BM_BigMatrixPaths(benchmark::State& state) {
+  model::Matrix m = testsupport::big_matrix(1);
+  std::vector<response::Path> paths;
+  for (auto _ : state) paths = response::response_paths(m, {});
+  long long voted = 0, delayed = 0;
+  for (const auto& p : paths) {
+    voted += !p.voted.empty();
+    delayed += p.estimate > 0;
+  }
+  state.counters["paths"] = static_cast<double>(paths.size());
+  state.counters["voted"] = static_cast<double>(voted);
+  state.counters["delayed"] = static_cast<double>(delayed);
+}
+BENCHMARK(BM_BigMatrixPaths)->Unit(benchmark::kMillisecond)->Iterations(1);
+
 void BM_BigMatrixAllPaths(benchmark::State& state) {
   model::Matrix m = testsupport::big_matrix(1);
   response::ResponseOptions o;

@@ -39,6 +39,7 @@ CheckResult check_properties(const model::Matrix& m, const std::vector<propertie
       if (in_shard(index++, options.shard_index, options.shard_count)) jobs.push_back({&f, &p});
 
   result.properties.resize(jobs.size());
+  WitnessPool witnesses;
   std::atomic<std::size_t> next{0};
   std::mutex report_mutex;
   std::exception_ptr failure;
@@ -47,11 +48,15 @@ CheckResult check_properties(const model::Matrix& m, const std::vector<propertie
       std::size_t i = next++;
       if (i >= jobs.size()) return;
       try {
+        if (options.on_start) {
+          std::lock_guard<std::mutex> lock(report_mutex);
+          options.on_start(jobs[i].property->name);
+        }
         auto deadline = total_deadline;
         if (options.property_timeout_s > 0)
           deadline = std::min(deadline, Clock::now() + std::chrono::duration_cast<Clock::duration>(
                                                           std::chrono::duration<double>(options.property_timeout_s)));
-        PropertyChecker pc(m, *jobs[i].file, *jobs[i].property, options, deadline);
+        PropertyChecker pc(m, *jobs[i].file, *jobs[i].property, options, deadline, &witnesses);
         PropertyResult r = pc.run();
         std::lock_guard<std::mutex> lock(report_mutex);
         result.properties[i] = std::move(r);

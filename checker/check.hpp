@@ -34,6 +34,9 @@ struct CheckOptions {
   bool standard = false;            // the properties are the standard set
   // Called once per finished property (any thread, serialised by the checker).
   std::function<void(const PropertyResult&)> on_result;
+  // Called when a property's decision starts, with its name (any thread,
+  // serialised): the command line's progress line shows what is running.
+  std::function<void(const std::string&)> on_start;
   // A modifier of every encoding the checker builds, applied before the
   // property's monitor is compiled into it (Pono's modifiers/). Tests use it
   // to plant a wrong rule and see the runtime replay catch it.

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "checker/context_pool.hpp"
 #include "checker/counterexample.hpp"
 #include "checker/engines/bmc.hpp"
 #include "checker/engines/portfolio.hpp"
@@ -142,11 +143,15 @@ struct Judgement {
   bool violated = false;   // Invariant/Never/Response: violated; Reachable: witnessed
   int cycle = -1;          // 0-based cycle of the violation or witness
 };
-Judgement judge(const model::Matrix& m, const properties::PropertyFile& f, const properties::Property& p,
-                const ConcreteTrace& t) {
+properties::Trace as_property_trace(const ConcreteTrace& t) {
   properties::Trace trace;
   for (std::size_t k = 0; k < t.inputs.size(); ++k) trace.push_back({t.inputs[k], t.observables[k]});
-  properties::Evaluation ev = properties::Evaluator(m).evaluate(p, f.assumptions, trace);
+  return trace;
+}
+
+Judgement judge(const model::Matrix& m, const properties::PropertyFile& f, const properties::Property& p,
+                const ConcreteTrace& t) {
+  properties::Evaluation ev = properties::Evaluator(m).evaluate(p, f.assumptions, as_property_trace(t));
   Judgement j;
   // Only the judged prefix counts: the cycles in which every assumption held.
   bool found = p.kind == PropertyKind::Reachable ? ev.holds : !ev.holds;
@@ -185,12 +190,12 @@ bool remap_inputs(properties::PropertyFile& f, properties::Property& p, const mo
 
 PropertyChecker::PropertyChecker(const model::Matrix& m, const properties::PropertyFile& file,
                                  const properties::Property& p, const CheckOptions& options,
-                                 Clock::time_point deadline)
+                                 Clock::time_point deadline, WitnessPool* witnesses)
     : m_(m), file_(file), p_(p), options_(options), deadline_(deadline),
-      roots_(properties::property_roots(p, file.assumptions, m)) {
+      roots_(properties::property_roots(p, file.assumptions, m)), witnesses_(witnesses) {
   // Whether the monitor has an antecedent (a trigger, the left side of an
   // implication) is the monitor's to say: ask it once, in a scratch context.
-  z3::context ctx;
+  PooledContext ctx;
   auto enc = encoder::encode(ctx, m_, roots_);
   has_antecedent_ = properties::compile_monitor(*enc, p_, file_.assumptions).antecedent.has_value();
   // Input names are the same in every encoding of this matrix: the cone's
@@ -214,7 +219,7 @@ ProverResult PropertyChecker::decide(const model::Matrix& m, Goal goal, bool sli
   if (goal == Goal::Assumptions) {
     // One cycle decides it: a run either starts with the assumptions holding
     // or there is none. Plain BMC to depth 0.
-    z3::context ctx;
+    PooledContext ctx;
     OwnedProblem op = factory(m, goal, sliced)(ctx);
     limits.max_depth = 0;
     return Bmc{}.prove(op.problem, limits);
@@ -224,11 +229,14 @@ ProverResult PropertyChecker::decide(const model::Matrix& m, Goal goal, bool sli
   // Only the property's own counterexample is shown; the witness that an
   // antecedent can hold needs no readable form.
   if (goal != Goal::Property) o.shrink_budget = std::chrono::milliseconds(0);
+  // An antecedent is expected to be reachable, usually within a few delays:
+  // BMC alone finds that without the induction engines' set-up.
+  if (goal == Goal::Antecedent) o.quick_bmc_depth = o.bmc_depth;
   return Portfolio(factory(m, goal, sliced), o).run(limits);
 }
 
 bool PropertyChecker::confirm_trace(const ProverResult& r, bool sliced, PropertyResult& out) const {
-  z3::context ctx;
+  PooledContext ctx;
   OwnedProblem op = factory(m_, Goal::Property, sliced)(ctx);
   const auto& enc = *std::static_pointer_cast<encoder::Encoding>(op.owner);
   // The portfolio has made the trace readable (inputs at rest where the
@@ -236,6 +244,7 @@ bool PropertyChecker::confirm_trace(const ProverResult& r, bool sliced, Property
   std::vector<model::CycleInput> inputs = cycle_inputs(r.cex, enc, m_);
   ConcreteTrace runtime_trace = run_on_runtime(m_, inputs);
   Judgement j = judge(m_, file_, p_, runtime_trace);
+  if (witnesses_) witnesses_->add(as_property_trace(runtime_trace));
   if (!j.violated) {
     out.reason = describe_disagreement(m_, runtime_trace, run_on_encoding(enc, m_, inputs));
     return false;
@@ -266,8 +275,27 @@ bool PropertyChecker::confirm_trace(const ProverResult& r, bool sliced, Property
   return true;
 }
 
+void PropertyChecker::keep_witness(const ProverResult& r) const {
+  if (!witnesses_) return;
+  PooledContext ctx;
+  OwnedProblem op = factory(m_, Goal::Antecedent, true)(ctx);
+  const auto& enc = *std::static_pointer_cast<encoder::Encoding>(op.owner);
+  witnesses_->add(as_property_trace(run_on_runtime(m_, cycle_inputs(r.cex, enc, m_))));
+}
+
 PropertyChecker::Vacuity PropertyChecker::vacuity() const {
   Vacuity v;
+  // A witness that the antecedent can hold is a run in which the assumptions
+  // hold too: most properties need no more than that one question.
+  if (witnesses_ && witnesses_->witnesses(m_, p_, file_.assumptions, has_antecedent_)) return v;
+  std::optional<ProverResult> t;
+  if (has_antecedent_) {
+    t = decide(m_, Goal::Antecedent, true, deadline_);
+    if (t->verdict == Verdict::Falsified) {
+      keep_witness(*t);
+      return v;
+    }
+  }
   // Plain BMC to depth 0 answers "bound reached" exactly when no first cycle
   // satisfies the assumptions; any other unknown leaves the question open.
   ProverResult a = decide(m_, Goal::Assumptions, true, deadline_);
@@ -279,14 +307,13 @@ PropertyChecker::Vacuity PropertyChecker::vacuity() const {
     v.undecided = "vacuity not decided (" + a.reason + ")";
     return v;
   }
-  if (!has_antecedent_) return v;
-  ProverResult t = decide(m_, Goal::Antecedent, true, deadline_);
-  if (t.verdict == Verdict::Proved)
+  if (!t) return v;
+  if (t->verdict == Verdict::Proved)
     v.vacuous = p_.kind == PropertyKind::Response ? "the trigger can never hold" : "the antecedent can never hold";
-  else if (t.verdict == Verdict::Unknown)
+  else
     v.undecided = "vacuity not decided: whether the " +
                   std::string(p_.kind == PropertyKind::Response ? "trigger" : "antecedent") +
-                  " can hold (" + t.reason + ")";
+                  " can hold (" + t->reason + ")";
   return v;
 }
 

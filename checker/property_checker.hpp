@@ -6,7 +6,9 @@
 //                 full, unsliced encoding is tried, then InternalError);
 //   (re-check)    done by the portfolio: the proof's invariant and induction
 //                 step re-proved, a trace re-simulated, in a fresh context;
-//   vacuity       assumptions satisfiable, antecedent reachable;
+//   vacuity       assumptions satisfiable, antecedent reachable: first
+//                 asked of the runtime traces the run has produced
+//                 (checker/witness_pool.hpp), then of the engines;
 //   support       the matrix elements the proof needs.
 #pragma once
 
@@ -19,6 +21,7 @@
 #include "checker/prover.hpp"
 #include "checker/shrink.hpp"
 #include "checker/result.hpp"
+#include "checker/witness_pool.hpp"
 #include "model/graph.hpp"
 #include "properties/ast.hpp"
 
@@ -28,7 +31,8 @@ class PropertyChecker {
  public:
   using Clock = std::chrono::steady_clock;
   PropertyChecker(const model::Matrix& m, const properties::PropertyFile& file,
-                  const properties::Property& p, const CheckOptions& options, Clock::time_point deadline);
+                  const properties::Property& p, const CheckOptions& options, Clock::time_point deadline,
+                  WitnessPool* witnesses = nullptr);
 
   PropertyResult run();
 
@@ -45,6 +49,9 @@ class PropertyChecker {
     std::optional<std::string> undecided;
   };
   Vacuity vacuity() const;
+  // An engine's witness that the antecedent can hold, run on the runtime and
+  // kept for the properties after this one.
+  void keep_witness(const ProverResult& r) const;
   void find_support(PropertyResult& out) const;
 
   const model::Matrix& m_;
@@ -55,6 +62,7 @@ class PropertyChecker {
   std::vector<model::Node> roots_;
   bool has_antecedent_ = false;
   PreferredValue preferred_;  // the plant at rest, for readable counterexamples
+  WitnessPool* witnesses_;     // runtime traces of this check run (may be null)
 };
 
 // --standard: the candidate elements of the whole matrix that no proved

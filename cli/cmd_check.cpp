@@ -24,6 +24,7 @@
 #include "cli/commands.hpp"
 #include "cli/matrix_input.hpp"
 #include "cli/output.hpp"
+#include "cli/progress.hpp"
 #include "formats/matrix_json.hpp"
 #include "properties/parser.hpp"
 #include "properties/standard.hpp"
@@ -44,6 +45,7 @@ struct CheckArgs {
   bool standard = false;
   std::string format = "text";
   std::string out_dir;
+  std::string vcd_file;  // --vcd: every counterexample and witness in one dump
   std::string report_file = "-";
   std::vector<std::string> extra_reports;  // --report FORMAT:FILE
   int jobs = 1;
@@ -229,6 +231,7 @@ int run_check(const CheckArgs& a) {
   auto [shard_index, shard_count] = a.shard.empty() ? std::pair{1, 1} : parse_shard(a.shard);
   for (const auto& d : outputs) check_writable(d.file);
   if (!a.out_dir.empty()) check_writable_directory(a.out_dir);
+  if (!a.vcd_file.empty()) check_writable(a.vcd_file);
 
   const model::Matrix m = load_valid_matrix(a.matrix_file, "checked");
   std::vector<properties::PropertyFile> files;
@@ -255,7 +258,12 @@ int run_check(const CheckArgs& a) {
   std::atomic<bool> reporting{false};  // set by whoever writes the report
   std::mutex finished_mutex;
   std::map<std::pair<std::string, std::string>, PropertyResult> finished;  // by (file, name)
+  // On a terminal (and not --quiet): properties done / total, elapsed, the running ones.
+  Progress progress("cemv check", planned_properties(files, shard_index, shard_count).size(), "properties",
+                    !a.quiet && Progress::terminal(), std::cerr);
+  options.on_start = [&](const std::string& name) { progress.started(name); };
   options.on_result = [&](const PropertyResult& r) {
+    progress.finished(r.name);
     std::lock_guard<std::mutex> lock(finished_mutex);
     finished[{r.file, r.name}] = r;
   };
@@ -267,6 +275,7 @@ int run_check(const CheckArgs& a) {
     watchdog.emplace(a.total_timeout_s, [&, shard_index = shard_index,
                                          shard_count = shard_count] {
       if (reporting.exchange(true)) return;  // the main thread is already reporting
+      progress.stop();
       checker::CheckResult partial = skeleton;
       partial.interrupted = true;
       partial.properties = planned_properties(files, shard_index, shard_count);
@@ -293,6 +302,7 @@ int run_check(const CheckArgs& a) {
   try {
     result = checker::check_properties(m, files, options);
   } catch (const std::exception& e) {
+    progress.stop();
     // Inputs were checked above, so anything the checker throws is cemv's
     // fault: a re-check that refuted an answer (InternalError, whose message
     // carries both sides), or a failure of the engines themselves.
@@ -305,6 +315,7 @@ int run_check(const CheckArgs& a) {
   // The watchdog fired while check() was returning: it writes and exits.
   if (reporting.exchange(true)) for (;;) std::this_thread::sleep_for(std::chrono::hours(1));
   watchdog.reset();
+  progress.stop();
 
   // The checker fills these too; the CLI's values name the files as given and
   // carry the version of this binary.
@@ -315,7 +326,17 @@ int run_check(const CheckArgs& a) {
   result.standard = skeleton.standard;
   result.shard = skeleton.shard;
   write_pictures(m, result);
+  std::vector<reports::VcdRun> runs;  // --vcd: every counterexample and witness, a scope each
+  for (const auto& p : result.properties)
+    if (p.trace) runs.push_back({p.name, &*p.trace});
+  if (!a.vcd_file.empty())
+    write_output(a.vcd_file, reports::vcd_runs(m, runs, {"", CEMV_VERSION, "counterexamples and witnesses of cemv check"}));
   publish(result, a, outputs);
+  bool machine_stdout = false;  // a JSON/JUnit/SARIF report on standard output takes no extra line
+  for (const auto& d : outputs) machine_stdout |= d.file == "-" && d.format != reports::CheckFormat::Text;
+  if (!a.vcd_file.empty() && !a.quiet && !machine_stdout)
+    write_output("-", "waveforms: " + a.vcd_file + " (" + std::to_string(runs.size()) +
+                          (runs.size() == 1 ? " run" : " runs") + ": every counterexample and witness)\n");
   return checker::exit_code(verdicts_of(result));
 }
 
@@ -340,6 +361,9 @@ void add_check_commands(CLI::App& app, Context& ctx) {
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   cmd->add_option("--out", a.out_dir, "folder for counterexample scenarios, their timing diagrams (.svg) and waveforms (.vcd); created if missing")
       ->type_name("DIR");
+  cmd->add_option("--vcd", a.vcd_file,
+                  "write every counterexample and witness to FILE as one value change dump (VCD), a scope per property")
+      ->type_name("FILE");
   cmd->add_option("--jobs", a.jobs, "worker threads over the properties")->capture_default_str();
   cmd->add_option("--shard", a.shard, "check only shard i of n (1 <= i <= n), for CI runners")
       ->type_name("i/n");

@@ -14,6 +14,7 @@
 #include "cli/commands.hpp"
 #include "cli/matrix_input.hpp"
 #include "cli/output.hpp"
+#include "cli/scenario_defaults.hpp"
 #include "diff/print.hpp"
 #include "formats/matrix_json.hpp"
 
@@ -27,6 +28,7 @@ struct DiffArgs {
   std::string output = "-";
   std::string out_dir;
   double timeout_s = 60.0;
+  bool quiet = false;
 };
 
 std::string file_stem(const std::string& group) {
@@ -44,15 +46,19 @@ std::string file_stem(const std::string& group) {
 void write_scenarios(const DiffArgs& a, diff::DiffReport& r) {
   if (a.out_dir.empty()) return;
   for (const auto& e : r.behaviour.effects) {
-    if (!e.result.distinction || !e.new_id || r.behaviour.relabelled) continue;
+    if (!e.result.distinction || !e.new_id) continue;
     const auto& d = *e.result.distinction;
-    std::vector<checker::ScenarioExpectation> expect{{d.key, d.type, d.value_a}};
+    // Under NEW's own numbers (after a move, the run mapped back and
+    // confirmed on NEW by the semantic comparison).
+    std::vector<checker::ScenarioExpectation> expect{{e.new_key, d.type, d.value_a}};
     const std::string file = (std::filesystem::path(a.out_dir) / (file_stem(e.result.group) + ".diff.scenario.json")).string();
-    write_output(file, checker::scenario_json(*r.new_m, d.run_b.inputs,
-                                              "Where " + r.new_m->name + " (NEW) differs from OLD: " + d.key +
-                                                  " in cycle " + std::to_string(d.cycle + 1) +
-                                                  "; the expectation is OLD's value, so NEW fails it",
-                                              expect));
+    write_output(file, with_other_defaults(
+                           checker::scenario_json(*r.new_m, e.new_inputs,
+                                                  "Where " + r.new_m->name + " (NEW) differs from OLD: " + e.new_key +
+                                                      " in cycle " + std::to_string(d.cycle + 1) +
+                                                      "; the expectation is OLD's value, so NEW fails it",
+                                                  expect),
+                           *r.new_m, e.new_inputs.front(), *r.old_m));
     r.scenarios.emplace_back(e.result.group, file);
   }
 }
@@ -80,7 +86,9 @@ int run_diff(const DiffArgs& a) {
                      : a.format == "md"   ? diff::to_markdown(r)
                      : a.format == "html" ? diff::to_html(r)
                                           : diff::to_text(r);
-  write_output(a.output, text);
+  // --quiet: the text report on standard output is what it silences; a file,
+  // or a format asked for by name, is still written (README, "Every command").
+  if (!(a.quiet && a.format == "text" && a.output == "-")) write_output(a.output, text);
   return r.exit_code();
 }
 
@@ -99,6 +107,7 @@ void add_diff_commands(CLI::App& app, Context& ctx) {
   cmd->add_option("--timeout", a.timeout_s, "wall-clock limit per effect, seconds")
       ->capture_default_str()
       ->type_name("S");
+  cmd->add_flag("-q,--quiet", a.quiet, "print nothing but errors (and the output asked for)");
   cmd->footer(
       "Exit status: 0 no effect's behaviour changed (at most non-critical or behaviour-equivalent edits);\n"
       "1 some effect's behaviour changed; 2 invalid input; 3 some effect undecided within --timeout;\n"

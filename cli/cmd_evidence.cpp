@@ -1,8 +1,10 @@
 // `cemv evidence MATRIX [PROPS...] --out report.html`: the evidence report for
 // an assessor (docs/reports.md, "Evidence report"): the matrix, its validation,
 // every property checked as `cemv check` checks it (with the timing diagram of
-// each counterexample), the test-generation figures when given, the signature,
-// version and date on every page. The date is SOURCE_DATE_EPOCH when set (the
+// each counterexample), the response time of every SIF path with --response
+// (response/analysis.hpp, as `cemv response` computes it), the test-generation
+// and mutation figures when given, the signature, version and date on every
+// page. The date is SOURCE_DATE_EPOCH when set (the
 // reproducible-builds convention), else now. Exit 0 when the report is
 // written, whatever the verdicts (the report says them); 2 invalid input;
 // 4 internal error (an answer refuted by the re-check).
@@ -16,12 +18,17 @@
 #include "checker/prover.hpp"
 #include "cli/commands.hpp"
 #include "cli/matrix_input.hpp"
+#include "cli/evidence_inputs.hpp"
 #include "cli/output.hpp"
+#include "cli/progress.hpp"
 #include "formats/matrix_json.hpp"
 #include "model/validate.hpp"
 #include "properties/parser.hpp"
 #include "properties/standard.hpp"
 #include "reports/evidence.hpp"
+#ifdef CEMV_WITH_RESPONSE
+#include "response/analysis.hpp"
+#endif
 
 namespace cemv::cli {
 
@@ -33,9 +40,54 @@ struct EvidenceArgs {
   bool standard = false;
   std::string out_file;
   std::string coverage_file;
+  std::string mutation_file;
+  bool response = false;
   double timeout_s = 60.0;
   int jobs = 1;
+  bool quiet = false;
 };
+
+struct BadArguments : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+#ifdef CEMV_WITH_RESPONSE
+// The paths of `cemv response` as the report's plain rows (reports/ cannot
+// use response/, which sits above it).
+reports::ResponseFigures response_figures(const model::Matrix& m, const response::ResponseResult& r) {
+  reports::ResponseFigures f;
+  f.controller = std::to_string(r.paths.empty() ? 2 * m.cycle_ms : r.paths.front().controller_ms) + " ms, 2 x " +
+                 (r.conservative ? "watchdog_ms" : "cycle_ms");
+  for (const auto& p : r.paths) {
+    reports::ResponseFigures::Path row;
+    row.sif = p.path.sif;
+    row.sif_name = p.sif_name;
+    std::string causes;
+    for (std::size_t i = 0; i < p.path.causes.size(); ++i) causes += (i ? "," : "") + std::to_string(p.path.causes[i]);
+    row.path = (p.path.causes.size() > 1 ? "causes " : "cause ") + causes;
+    if (p.path.causes.size() > 1)
+      row.path += " (" + std::to_string(p.path.needed) + "oo" + std::to_string(p.path.causes.size()) + ")";
+    row.path += " -> effect " + std::to_string(p.path.effect);
+    switch (p.logic.kind) {
+      case response::Figure::Kind::Exact:
+        row.logic = std::to_string(p.logic.cycles) + " cycles (" + std::to_string(p.logic.cycles * m.cycle_ms) + " ms)";
+        break;
+      case response::Figure::Kind::Unbounded:
+        row.logic = "unbounded (held off " + std::to_string(p.logic.cycles) + " cycles)";
+        break;
+      case response::Figure::Kind::Unknown: row.logic = "unknown: " + p.logic.reason; break;
+    }
+    row.total_ms = p.total_ms;
+    if (p.process_safety_time_ms) row.process_safety_time_ms = *p.process_safety_time_ms;
+    row.margin_ms = p.margin_ms;
+    row.margin_percent = p.margin_percent;
+    row.degraded_total_ms = p.degraded_total_ms;
+    row.verdict = response::to_string(p.verdict);
+    f.paths.push_back(std::move(row));
+  }
+  return f;
+}
+#endif
 
 std::string report_date() {
   if (const char* e = std::getenv("SOURCE_DATE_EPOCH"); e && *e) {
@@ -49,6 +101,11 @@ std::string report_date() {
 }
 
 int run_evidence(const EvidenceArgs& a) {
+  if (a.jobs < 1) throw BadArguments("--jobs must be at least 1");
+  if (a.timeout_s < 0) throw BadArguments("--timeout must not be negative");
+#ifndef CEMV_WITH_RESPONSE
+  if (a.response) throw BadArguments("--response: this cemv is built without `cemv response`");
+#endif
   check_writable(a.out_file);
   const std::string date = report_date();
   const model::Matrix m = load_valid_matrix(a.matrix_file, "reported");
@@ -61,22 +118,38 @@ int run_evidence(const EvidenceArgs& a) {
   in.matrix_file = input_name(a.matrix_file);
   in.validation = model::validate(m);
   in.date = date;
-  if (!a.coverage_file.empty()) {
-    in.coverage_file = a.coverage_file;
-    in.coverage_json = read_input(a.coverage_file);
-  }
+  if (!a.coverage_file.empty()) in.coverage = read_coverage(a.coverage_file, m);
+  if (!a.mutation_file.empty()) in.mutation = read_mutation(a.mutation_file, m);
   checker::CheckOptions options;
   options.property_timeout_s = a.timeout_s;
   options.jobs = a.jobs;
   options.standard = a.standard;
+  std::size_t total = 0;
+  for (const auto& f : files) total += f.properties.size();
+  // On a terminal (and not --quiet): properties, then paths, done / total.
+  Progress progress("cemv evidence", total, "properties", !a.quiet && Progress::terminal(), std::cerr);
+  options.on_start = [&](const std::string& name) { progress.started(name); };
+  options.on_result = [&](const checker::PropertyResult& r) { progress.finished(r.name); };
   try {
     if (!files.empty()) in.check = checker::check_properties(m, files, options);
+#ifdef CEMV_WITH_RESPONSE
+    if (a.response) {
+      progress.phase("cemv evidence: response time", response::response_paths(m, {}).size(), "paths");
+      progress.started("every SIF path");
+      response::ResponseOptions ro;
+      ro.timeout_s = a.timeout_s;
+      ro.jobs = a.jobs;
+      in.response = response_figures(m, response::analyse(m, ro));
+    }
+#endif
   } catch (const std::exception& e) {
+    progress.stop();
     bool refuted = dynamic_cast<const checker::InternalError*>(&e) != nullptr;
     std::cerr << "internal error: " << (refuted ? "" : "the checker failed: ") << e.what()
               << "\n(a bug in cemv: please report it with the matrix and property files)\n";
     return 4;
   }
+  progress.stop();
   in.check.matrix_name = m.name;
   in.check.matrix_signature = formats::signature(m);
   in.check.tool_version = CEMV_VERSION;
@@ -84,8 +157,9 @@ int run_evidence(const EvidenceArgs& a) {
   for (const auto& f : a.property_files) in.check.property_files.push_back(input_name(f));
   in.check.standard = a.standard;
   write_output(a.out_file, reports::evidence_html(m, in));
-  std::cout << "cemv evidence: " << m.name << ": " << in.check.properties.size()
-            << (in.check.properties.size() == 1 ? " property" : " properties") << "; wrote " << a.out_file << "\n";
+  if (!a.quiet)
+    std::cout << "cemv evidence: " << m.name << ": " << in.check.properties.size()
+              << (in.check.properties.size() == 1 ? " property" : " properties") << "; wrote " << a.out_file << "\n";
   return 0;
 }
 
@@ -99,15 +173,28 @@ void add_evidence_commands(CLI::App& app, Context& ctx) {
   cmd->add_option("PROPS", a.property_files, "property files (docs/properties.md)");
   cmd->add_flag("--standard", a.standard, "also check the standard properties derived from the matrix");
   cmd->add_option("--out", a.out_file, "the HTML report to write")->type_name("FILE")->required();
-  cmd->add_option("--coverage", a.coverage_file, "test generation results (coverage and mutation figures) to include")
+  cmd->add_option("--coverage", a.coverage_file, "test generation results to include (DIR/coverage.json of cemv testgen)")
       ->type_name("FILE");
+  cmd->add_option("--mutation", a.mutation_file,
+                  "mutation figures to include (DIR/mutation-report.json of cemv testgen --mutation-report)")
+      ->type_name("FILE");
+  cmd->add_flag("--response", a.response,
+                "also compute the worst-case response time of every SIF path (as cemv response does)");
   cmd->add_option("--timeout", a.timeout_s, "wall-clock limit per property, seconds (0 = none)")
       ->type_name("S")
       ->capture_default_str();
   cmd->add_option("--jobs", a.jobs, "worker threads over the properties")->capture_default_str();
+  cmd->add_flag("-q,--quiet", a.quiet, "print nothing but errors");
   cmd->footer("Exit status: 0 report written (the verdicts are in the report); 2 invalid input;\n"
               "4 internal error. The date is SOURCE_DATE_EPOCH (UTC) when set, else now.\n");
-  cmd->callback([&ctx]() { ctx.exit_code = run_evidence(a); });
+  cmd->callback([&ctx]() {
+    try {
+      ctx.exit_code = run_evidence(a);
+    } catch (const BadArguments& e) {
+      std::cerr << "error: evidence: " << e.what() << "\n";
+      ctx.exit_code = 2;
+    }
+  });
 }
 
 }  // namespace cemv::cli

@@ -18,6 +18,7 @@
 #include "cli/commands.hpp"
 #include "cli/matrix_input.hpp"
 #include "cli/output.hpp"
+#include "cli/scenario_defaults.hpp"
 #include "formats/matrix_json.hpp"
 #include "mutate/mutants.hpp"
 
@@ -33,6 +34,7 @@ struct MutateArgs {
   bool equivalence = false;
   double timeout_s = 60.0;
   bool list_operators = false;
+  bool quiet = false;
 };
 
 // The distinguishing run as a scenario of the original matrix that expects
@@ -40,10 +42,12 @@ struct MutateArgs {
 // and fails on the mutant (a test that kills the mutant).
 std::string killing_scenario(const model::Matrix& m, const mutate::Mutant& mu, const checker::Distinction& d) {
   std::vector<checker::ScenarioExpectation> expect{{d.key, d.type, d.value_a}};
-  return checker::scenario_json(m, d.run_a.inputs,
-                                "Distinguishes mutant " + mu.id + " (" + mu.description + ", " + mu.element +
-                                    ") from " + m.name + ": " + d.key + " in cycle " + std::to_string(d.cycle + 1),
-                                expect);
+  return with_other_defaults(
+      checker::scenario_json(m, d.run_a.inputs,
+                             "Distinguishes mutant " + mu.id + " (" + mu.description + ", " + mu.element + ") from " +
+                                 m.name + ": " + d.key + " in cycle " + std::to_string(d.cycle + 1),
+                             expect),
+      m, d.run_a.inputs.front(), mu.matrix);
 }
 
 int run_mutate(const MutateArgs& a) {
@@ -111,7 +115,7 @@ int run_mutate(const MutateArgs& a) {
   if (a.equivalence)
     summary += "equivalent " + std::to_string(equivalent) + ", non-equivalent " + std::to_string(differs) +
                ", undecided " + std::to_string(unknown) + "\n";
-  write_output("-", summary);
+  if (!a.quiet) write_output("-", summary);
   return unknown > 0 ? 3 : 0;
 }
 
@@ -130,6 +134,7 @@ void add_mutate_commands(CLI::App& app, Context& ctx) {
       ->capture_default_str()
       ->type_name("S");
   cmd->add_flag("--list-operators", a.list_operators, "print the mutation operators and exit");
+  cmd->add_flag("-q,--quiet", a.quiet, "print nothing but errors (no summary)");
   cmd->footer(
       "Exit status: 0 done; 2 invalid input or unwritable folder; 3 some mutant's equivalence undecided\n"
       "(--equivalence); 4 internal error (a distinguishing run the runtimes do not reproduce).\n");

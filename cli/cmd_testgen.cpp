@@ -14,6 +14,9 @@
 #include "cli/commands.hpp"
 #include "cli/matrix_input.hpp"
 #include "cli/output.hpp"
+#include "cli/testgen_change.hpp"
+#include "cli/progress.hpp"
+#include "cli/trace_pictures.hpp"
 #include "testgen/checklist.hpp"
 #include "testgen/testgen.hpp"
 
@@ -29,6 +32,8 @@ struct TestgenArgs {
   double budget_s = 20.0;
   double proof_s = 3.0;
   bool mutation_report = false;
+  std::string changed_from;  // OLD: only the tests the change needs
+  double diff_timeout_s = 60.0;
   bool quiet = false;
   bool verbose = false;
 };
@@ -54,17 +59,36 @@ int run_testgen(const TestgenArgs& a) {
       std::cerr << testgen::to_string(r.status) << " " << r.objective.id << " [" << r.method << ", " << t << "]"
                 << (r.reason.empty() ? "" : " " + r.reason) << "\n";
     };
+  // On a terminal (not --quiet, not -v, whose lines are the progress): objectives decided / total.
+  std::size_t objectives = 0;
+  for (const auto& ob : testgen::derive_objectives(m)) objectives += !o.sif || ob.sif == *o.sif;
+  Progress progress("cemv testgen", objectives, "objectives", !a.quiet && !a.verbose && Progress::terminal(),
+                    std::cerr);
+  if (!a.verbose) o.on_decided = [&](const testgen::ObjectiveResult& r) { progress.finished(r.objective.id); };
   testgen::TestSuite suite;
+  ChangeScope change;
   try {
+    if (!a.changed_from.empty()) change = apply_change(a.changed_from, a.matrix_file, m, a.diff_timeout_s, o);
     suite = testgen::generate_tests(m, o);
   } catch (const checker::InternalError& e) {
+    progress.stop();
     std::cerr << "internal error: " << e.what() << "\n(a bug in cemv: please report it with the matrix)\n";
     return 4;
   }
   const std::string tool = std::string("cemv ") + CEMV_VERSION;
   const std::filesystem::path dir(a.out_dir);
-  for (const auto& t : suite.tests) write_output((dir / t.file_name).string(), t.scenario_json);
-  const auto header = testgen::checklist_header(m, suite, tool);
+  progress.stop();
+  std::string diagrams;  // each test's timing diagram beside its scenario, named in the summary
+  for (const auto& t : suite.tests) {
+    write_output((dir / t.file_name).string(), t.scenario_json);
+    const std::string svg = diagram_name((dir / t.file_name).string());
+    write_output(svg, test_diagram(m, "Test " + t.description, t.inputs, t.checkpoints));
+    diagrams += "diagram: " + svg + "\n";
+  }
+  auto header = testgen::checklist_header(m, suite, tool);
+  header.preface_markdown = change.preface_markdown;
+  header.preface_html = change.preface_html;
+  header.preface_csv = change.preface_csv;
   write_output((dir / "coverage.json").string(), testgen::coverage_json(suite, tool));
   write_output((dir / "checklist.md").string(), testgen::checklist_markdown(m, suite, header));
   write_output((dir / "checklist.html").string(), testgen::checklist_html(m, suite, header));
@@ -75,7 +99,8 @@ int run_testgen(const TestgenArgs& a) {
                        " covered, " + std::to_string(suite.infeasible) + " infeasible, " +
                        std::to_string(suite.undecided) + " undecided\n" + std::to_string(suite.tests.size()) +
                        " tests, " + std::to_string(suite.total_steps) + " steps, " +
-                       std::to_string(suite.total_cycles) + " scan cycles; every test replays green\n";
+                       std::to_string(suite.total_cycles) + " scan cycles; every test replays green\n" + diagrams +
+                       change.summary;
     for (const auto& r : suite.objectives)
       if (r.status != testgen::ObjectiveStatus::Covered)
         text += std::string(testgen::to_string(r.status)) + " " + r.objective.id + ": " + r.objective.text + " (" +
@@ -103,6 +128,13 @@ void add_testgen_commands(CLI::App& app, Context& ctx) {
       ->capture_default_str();
   cmd->add_flag("--mutation-report", a.mutation_report,
                 "also decide, for every single-point mutant, equivalence and detection by the suite");
+  cmd->add_option("--changed-from", a.changed_from,
+                  "the accepted version OLD: only the tests the change needs, and a change checklist "
+                  "(docs/change-acceptance.md)")
+      ->type_name("OLD");
+  cmd->add_option("--diff-timeout", a.diff_timeout_s, "with --changed-from: comparison time per effect, seconds")
+      ->capture_default_str()
+      ->type_name("S");
   cmd->add_flag("-q,--quiet", a.quiet, "print nothing but errors");
   cmd->add_flag("-v,--verbose", a.verbose, "print each objective as it is decided (standard error)");
   cmd->footer(

@@ -43,5 +43,6 @@ void add_mutate_commands(CLI::App& app, Context& ctx);    // mutate
 void add_diff_commands(CLI::App& app, Context& ctx);      // diff
 void add_response_commands(CLI::App& app, Context& ctx);  // response
 void add_evidence_commands(CLI::App& app, Context& ctx);  // evidence
+void add_workbook_commands(CLI::App& app, Context& ctx);  // import-workbook, export-workbook
 
 }  // namespace cemv::cli

@@ -50,6 +50,7 @@ int main(int argc, char** argv) {
   cemv::cli::add_diff_commands(app, ctx);
   cemv::cli::add_response_commands(app, ctx);
   cemv::cli::add_evidence_commands(app, ctx);
+  cemv::cli::add_workbook_commands(app, ctx);
 #endif
 #ifdef CEMV_WITH_TESTGEN
   cemv::cli::add_testgen_commands(app, ctx);

@@ -2,6 +2,7 @@
 
 #include "cli/output.hpp"
 #include "reports/vcd.hpp"
+#include "runtime/runtime.hpp"
 
 namespace cemv::cli {
 
@@ -37,6 +38,32 @@ void TracePictures::write(const model::Matrix& m, const std::string& title, std:
     write_output(vcd_file_, reports::vcd(m, trace_, {"", CEMV_VERSION, title}));
     out << "waveforms: " << vcd_file_ << "\n";
   }
+}
+
+std::string test_diagram(const model::Matrix& m, const std::string& title, const std::vector<model::CycleInput>& inputs,
+                         const std::vector<std::size_t>& checkpoints) {
+  runtime::Runtime rt(m);
+  checker::ConcreteTrace t;
+  std::vector<int> snap;
+  for (const auto& in : inputs) {
+    rt.step(in);
+    rt.snapshot(snap);
+    t.inputs.push_back(in);
+    t.observables.push_back(snap);
+  }
+  reports::TimingDiagram d;
+  d.title = title;
+  d.all_changing = true;
+  d.checks = checkpoints;
+  return reports::timing_svg(m, t, d);
+}
+
+std::string diagram_name(const std::string& scenario_file) {
+  const std::string suffix = ".scenario.json";
+  const std::string& f = scenario_file;
+  if (f.size() > suffix.size() && f.compare(f.size() - suffix.size(), suffix.size(), suffix) == 0)
+    return f.substr(0, f.size() - suffix.size()) + ".svg";
+  return f + ".svg";
 }
 
 }  // namespace cemv::cli

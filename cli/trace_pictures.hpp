@@ -32,4 +32,13 @@ class TracePictures {
   std::vector<reports::TimingMark> marks_;
 };
 
+// The timing diagram of a generated acceptance test (`cemv testgen`): its
+// inputs run on the reference runtime, every observable that changes drawn,
+// the cycles at which it checks its expectations ticked.
+std::string test_diagram(const model::Matrix& m, const std::string& title, const std::vector<model::CycleInput>& inputs,
+                         const std::vector<std::size_t>& checkpoints);
+
+// "DIR/T001-x.scenario.json" -> "DIR/T001-x.svg" (any other name: NAME.svg).
+std::string diagram_name(const std::string& scenario_file);
+
 }  // namespace cemv::cli

@@ -77,6 +77,19 @@ std::string html_escape(const std::string& s) {
   return o;
 }
 
+std::string impact_effects_text(const DiffReport& r) {
+  std::string out;
+  for (const auto& e : r.behaviour.effects)
+    if (e.behaviour_changed())
+      out += (out.empty() ? "" : ", ") + effect_label(e) + " (" + behaviour_words(e) + ")";
+  return out.empty() ? "none" : out;
+}
+
+std::string retest_line(const DiffReport& r) {
+  const RetestScope s = retest_scope(r.behaviour);
+  return std::string(s.partial ? "partial retest: " : "retest the whole matrix: ") + s.reason;
+}
+
 }  // namespace
 
 int DiffReport::exit_code() const {
@@ -130,6 +143,7 @@ std::string to_text(const DiffReport& r) {
   for (const auto& t : im.tags) tags += (tags.empty() ? "" : ", ") + t;
   o << "  tags: " << (tags.empty() ? "none" : tags) << "\n";
   o << "  SIF groups: " << join_ints(im.sif_groups, "") << "\n";
+  o << "\nRetest (manual 12): " << retest_line(r) << "\n";
   o << "\n" << r.verdict() << "\n";
   return o.str();
 }
@@ -168,6 +182,7 @@ std::string to_markdown(const DiffReport& r) {
   std::string tags;
   for (const auto& t : im.tags) tags += (tags.empty() ? "" : ", ") + t;
   o << (tags.empty() ? "none" : tags) << "\n- SIF groups: " << join_ints(im.sif_groups, "") << "\n";
+  o << "\n## Retest (manual 12)\n\n" << retest_line(r) << ".\n";
   return o.str();
 }
 
@@ -194,7 +209,9 @@ std::string to_html(const DiffReport& r) {
     << "<th>shortest difference</th></tr>\n";
   for (const auto& e : r.behaviour.effects) {
     std::string diff = e.result.distinction ? distinction_text(*e.result.distinction) : e.result.reason;
-    o << "<tr><td>" << html_escape(effect_label(e)) << "</td><td>" << html_escape(behaviour_words(e)) << "</td><td>"
+    std::string f = scenario_of(r, e.result.group);
+    if (!f.empty()) diff += " (" + f + ")";
+    o << "<tr><td" << (e.behaviour_changed() ? " class=\"critical\"" : "") << ">" << html_escape(effect_label(e)) << "</td><td>" << html_escape(behaviour_words(e)) << "</td><td>"
       << html_escape(e.result.method) << "</td><td>" << html_escape(diff) << "</td></tr>\n";
   }
   const auto& im = r.behaviour.impact;
@@ -203,7 +220,8 @@ std::string to_html(const DiffReport& r) {
   for (const auto& t : im.tags) tags += (tags.empty() ? "" : ", ") + t;
   o << "</table>\n<h2>Impact set</h2>\n<ul><li>effects: " << join_ints(effects, "") << "</li><li>causes: "
     << join_ints(im.causes, "") << "</li><li>tags: " << html_escape(tags.empty() ? "none" : tags)
-    << "</li><li>SIF groups: " << join_ints(im.sif_groups, "") << "</li></ul>\n</body></html>\n";
+    << "</li><li>SIF groups: " << join_ints(im.sif_groups, "") << "</li></ul>\n<h2>Retest (manual 12)</h2>\n<p>"
+    << html_escape(retest_line(r)) << ".</p>\n</body></html>\n";
   return o.str();
 }
 
@@ -279,7 +297,53 @@ std::string to_json(const DiffReport& r) {
                      {"causes", json(std::vector<int>(im.causes.begin(), im.causes.end()))},
                      {"tags", json(std::vector<std::string>(im.tags.begin(), im.tags.end()))},
                      {"sif_groups", json(std::vector<int>(im.sif_groups.begin(), im.sif_groups.end()))}};
+  const RetestScope scope = retest_scope(r.behaviour);
+  j["retest"] = json{{"scope", scope.partial ? "partial" : "whole"}, {"reason", scope.reason}};
   return j.dump(1) + "\n";
+}
+
+std::string change_preface_markdown(const DiffReport& r) {
+  std::ostringstream o;
+  o << "## The change\n\nCompared with the accepted version `" << r.old_file << "` (signature `" << r.old_signature
+    << "`), docs/change-acceptance.md.\n\n";
+  if (r.structure.empty()) o << "No structural change.\n";
+  for (const auto& c : r.structure.changes) {
+    o << "- " << (c.critical() ? "critical" : "non-critical") << ": " << to_string(c.kind) << " " << c.label();
+    if (c.kind == ChangeKind::Moved) o << " (number " << c.old_id << " -> " << c.new_id << ")";
+    o << "\n";
+    for (const auto& f : c.fields) o << "  - " << field_line(f) << "\n";
+  }
+  o << "\nBehaviour changed: " << impact_effects_text(r) << ".\n\n**" << retest_line(r) << ".**\n\n";
+  return o.str();
+}
+
+std::string change_preface_html(const DiffReport& r) {
+  std::ostringstream o;
+  o << "<h2>The change</h2>\n<p>Compared with the accepted version <code>" << html_escape(r.old_file)
+    << "</code> (signature <code>" << r.old_signature << "</code>).</p>\n<ul>\n";
+  if (r.structure.empty()) o << "<li>No structural change.</li>\n";
+  for (const auto& c : r.structure.changes) {
+    o << "<li>" << (c.critical() ? "critical" : "non-critical") << ": " << to_string(c.kind) << " "
+      << html_escape(c.label());
+    if (c.kind == ChangeKind::Moved) o << " (number " << c.old_id << " -&gt; " << c.new_id << ")";
+    for (const auto& f : c.fields) o << "<br>" << html_escape(field_line(f));
+    o << "</li>\n";
+  }
+  o << "</ul>\n<p>Behaviour changed: " << html_escape(impact_effects_text(r)) << ".</p>\n<p><strong>"
+    << html_escape(retest_line(r)) << ".</strong></p>\n";
+  return o.str();
+}
+
+std::vector<std::string> change_preface_lines(const DiffReport& r) {
+  std::vector<std::string> out{"changed from " + r.old_file + " signature " + r.old_signature};
+  for (const auto& c : r.structure.changes) {
+    std::string line = std::string(c.critical() ? "critical: " : "non-critical: ") + to_string(c.kind) + " " + c.label();
+    for (const auto& f : c.fields) line += "; " + field_line(f);
+    out.push_back(line);
+  }
+  out.push_back("behaviour changed: " + impact_effects_text(r));
+  out.push_back(retest_line(r));
+  return out;
 }
 
 }  // namespace cemv::diff

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "diff/semantic.hpp"
 #include "diff/structural.hpp"
@@ -29,5 +30,13 @@ std::string to_text(const DiffReport& r);
 std::string to_markdown(const DiffReport& r);
 std::string to_html(const DiffReport& r);
 std::string to_json(const DiffReport& r);
+
+// The opening of a change checklist (`cemv testgen NEW --changed-from OLD`):
+// the list of changes, the effects whose behaviour changed, and whether a
+// partial retest is justified (retest_scope). Markdown and HTML sections, and
+// one line per item for the CSV's comment rows.
+std::string change_preface_markdown(const DiffReport& r);
+std::string change_preface_html(const DiffReport& r);
+std::vector<std::string> change_preface_lines(const DiffReport& r);
 
 }  // namespace cemv::diff

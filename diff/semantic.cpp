@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <map>
+#include <optional>
 
 #include "checker/prover.hpp"
 #include "checker/replay.hpp"
@@ -14,28 +15,40 @@ namespace {
 using checker::EquivalenceVerdict;
 using model::Node;
 
-std::set<int> cone_causes(const model::Matrix& m, int effect) {
-  std::set<int> out;
-  if (!m.find_effect(effect) || m.find_effect(effect)->function == model::EffectFunction::Comment) return out;
-  for (const auto& n : model::DependencyGraph(m).feeders_of(Node{Node::Kind::Effect, effect}))
-    if (n.kind == Node::Kind::Cause) out.insert(n.id);
-  return out;
-}
-std::set<int> cone_effects(const model::Matrix& m, int effect) {
-  std::set<int> out{effect};
-  if (!m.find_effect(effect) || m.find_effect(effect)->function == model::EffectFunction::Comment) return out;
-  for (const auto& n : model::DependencyGraph(m).feeders_of(Node{Node::Kind::Effect, effect}))
-    if (n.kind == Node::Kind::Effect) out.insert(n.id);
-  return out;
-}
+// The cones of one version's effects, on one dependency graph (built once:
+// a 128 x 128 matrix has 128 effects to ask about).
+class Cones {
+ public:
+  explicit Cones(const model::Matrix& m) : m_(m), g_(m) {}
+  std::set<int> causes(int effect) const { return of(effect, Node::Kind::Cause); }
+  std::set<int> effects(int effect) const {
+    std::set<int> out = of(effect, Node::Kind::Effect);
+    out.insert(effect);
+    return out;
+  }
 
-// Whether a structural change touches the effect (OLD id `o`, NEW id `n`) or
-// an element of its cone in either version.
-bool touched(const StructuralDiff& d, const model::Matrix& old_m, const model::Matrix& new_m, int o, int n) {
-  std::set<int> oc = o ? cone_causes(old_m, o) : std::set<int>{}, nc = n ? cone_causes(new_m, n) : std::set<int>{};
-  std::set<int> oe = o ? cone_effects(old_m, o) : std::set<int>{}, ne = n ? cone_effects(new_m, n) : std::set<int>{};
+ private:
+  std::set<int> of(int effect, Node::Kind kind) const {
+    std::set<int> out;
+    const model::Effect* e = m_.find_effect(effect);
+    if (!e || e->function == model::EffectFunction::Comment) return out;
+    for (const auto& n : g_.feeders_of(Node{Node::Kind::Effect, effect}))
+      if (n.kind == kind) out.insert(n.id);
+    return out;
+  }
+  const model::Matrix& m_;
+  model::DependencyGraph g_;
+};
+
+// Whether a structural change (only a critical one with `critical_only`)
+// touches the effect (OLD id `o`, NEW id `n`) or an element of its cone in
+// either version.
+bool touched(const StructuralDiff& d, const Cones& old_c, const Cones& new_c, int o, int n, bool critical_only) {
+  std::set<int> oc = o ? old_c.causes(o) : std::set<int>{}, nc = n ? new_c.causes(n) : std::set<int>{};
+  std::set<int> oe = o ? old_c.effects(o) : std::set<int>{}, ne = n ? new_c.effects(n) : std::set<int>{};
   for (const auto& c : d.changes) {
     using E = ElementChange::Element;
+    if (critical_only && !c.critical()) continue;
     switch (c.element) {
       case E::Matrix:
         if (c.critical()) return true;  // cycle time, secure write, group deactivation: every effect
@@ -103,12 +116,73 @@ void confirm_on_new(const checker::Distinction& d, const model::Matrix& rel, con
   }
 }
 
+// An output tag's verdict from its effect's distinguishing run, when the tag
+// itself differs in that run's last cycle: the run was replayed on both
+// runtimes, and no shorter run can separate the tag, since it would separate
+// the effect (whose observables include the tag) earlier too. Otherwise the
+// tag is decided on its own.
+std::optional<checker::GroupEquivalence> from_effect_run(const checker::GroupEquivalence& effect,
+                                                         const checker::ObservableGroup& tag,
+                                                         const model::Matrix& a, const model::Matrix& b) {
+  if (!effect.distinction || tag.keys.size() != 1) return std::nullopt;
+  const checker::Distinction& d = *effect.distinction;
+  model::FieldType type = model::FieldType::Bool;
+  auto index = [&](const model::Matrix& m) -> std::optional<std::size_t> {
+    const auto obs = model::observables(m);
+    for (std::size_t i = 0; i < obs.size(); ++i)
+      if (obs[i].key == tag.keys.front()) {
+        type = obs[i].type;
+        return i;
+      }
+    return std::nullopt;
+  };
+  const auto ia = index(a), ib = index(b);
+  if (!ia || !ib || d.run_a.observables.empty() || d.run_b.observables.empty()) return std::nullopt;
+  const int va = d.run_a.observables.back()[*ia], vb = d.run_b.observables.back()[*ib];
+  if (va == vb) return std::nullopt;
+  checker::GroupEquivalence out;
+  out.group = tag.name;
+  out.verdict = EquivalenceVerdict::Differs;
+  out.method = effect.method + ", the effect's run";
+  checker::Distinction t = d;
+  t.key = tag.keys.front();
+  t.type = type;
+  t.value_a = va;
+  t.value_b = vb;
+  out.distinction = std::move(t);
+  return out;
+}
+
 }  // namespace
 
 bool SemanticDiff::any_changed() const {
   return std::any_of(effects.begin(), effects.end(),
                      [](const EffectBehaviour& e) { return e.result.verdict == EquivalenceVerdict::Differs; });
 }
+RetestScope retest_scope(const SemanticDiff& d) {
+  RetestScope s;
+  for (const auto& e : d.effects)
+    if (e.result.verdict == EquivalenceVerdict::Unknown) {
+      s.reason = "effect[" + std::to_string(e.new_id ? e.new_id : e.old_id) + "] " + e.name +
+                 " is undecided: the semantic comparison is incomplete, so retest the whole matrix";
+      return s;
+    }
+  for (const auto& e : d.effects)
+    if (e.behaviour_changed() && !e.critically_changed) {
+      s.reason = "the comparisons disagree: effect[" + std::to_string(e.new_id ? e.new_id : e.old_id) + "] " +
+                 e.name + " behaves differently but no critical change is listed in its cone, so retest the "
+                 "whole matrix";
+      return s;
+    }
+  s.partial = true;
+  s.reason = d.any_changed()
+                 ? "the comparisons agree (every effect whose behaviour changed has a critical change in its cone, "
+                   "every other effect is proved equivalent): a partial retest of the impact set is justified"
+                 : "the comparisons agree: no effect's behaviour changed (every effect proved equivalent), so no "
+                   "functional retest is needed";
+  return s;
+}
+
 bool SemanticDiff::any_unknown() const {
   return std::any_of(effects.begin(), effects.end(),
                      [](const EffectBehaviour& e) { return e.result.verdict == EquivalenceVerdict::Unknown; });
@@ -124,6 +198,7 @@ SemanticDiff compare_behaviour(const model::Matrix& old_m, const model::Matrix& 
   std::map<int, int> rel_to_new;
   for (const auto& [n, x] : r.effect_ids) rel_to_new[x] = n;
 
+  const Cones old_cones(old_m), new_cones(new_m);
   checker::EquivalenceOptions eo;
   eo.deadline = options.deadline;
   eo.timeout = options.timeout;
@@ -134,12 +209,26 @@ SemanticDiff compare_behaviour(const model::Matrix& old_m, const model::Matrix& 
     e.old_id = old_m.find_effect(id) ? id : 0;
     e.new_id = rel_to_new.count(id) ? rel_to_new.at(id) : 0;
     e.name = e.new_id ? new_m.find_effect(e.new_id)->name : old_m.find_effect(id)->name;
-    e.structurally_changed = touched(d, old_m, new_m, e.old_id, e.new_id);
+    e.structurally_changed = touched(d, old_cones, new_cones, e.old_id, e.new_id, false);
+    e.critically_changed = touched(d, old_cones, new_cones, e.old_id, e.new_id, true);
     e.result = checker::decide_equivalence(old_m, rel, g, eo);
-    if (e.result.distinction && out.relabelled) confirm_on_new(*e.result.distinction, rel, new_m, r, g.name);
+    if (e.result.distinction && e.new_id) {
+      const auto& dist = *e.result.distinction;
+      e.new_inputs = to_new(dist.run_b.inputs, rel, new_m, r);
+      // The group is one effect: its keys start with "effect[OLD id]".
+      const std::string prefix = "effect[" + std::to_string(id) + "]";
+      e.new_key = dist.key.rfind(prefix, 0) == 0
+                      ? "effect[" + std::to_string(e.new_id) + "]" + dist.key.substr(prefix.size())
+                      : dist.key;
+      if (out.relabelled) confirm_on_new(dist, rel, new_m, r, g.name);
+    }
     if (e.result.verdict == EquivalenceVerdict::Differs && e.old_id && e.new_id)
       for (const auto& og : checker::output_groups(old_m, rel))
         if (og.roots.front().id == id) {
+          if (auto same = from_effect_run(e.result, og, old_m, rel)) {
+            e.outputs.push_back(std::move(*same));
+            continue;
+          }
           e.outputs.push_back(checker::decide_equivalence(old_m, rel, og, eo));
           if (e.outputs.back().distinction && out.relabelled)
             confirm_on_new(*e.outputs.back().distinction, rel, new_m, r, og.name);
@@ -152,11 +241,12 @@ SemanticDiff compare_behaviour(const model::Matrix& old_m, const model::Matrix& 
     if (!e.behaviour_changed()) continue;
     out.impact.effects.push_back(e.new_id ? e.new_id : e.old_id);
     auto add_effect = [&](const model::Matrix& m, int id, bool is_new) {
+      const Cones& cones = is_new ? new_cones : old_cones;
       const model::Effect* ef = m.find_effect(id);
       if (!ef) return;
       for (const auto& t : ef->tags) out.impact.tags.insert(t.name);
       for (int s : ef->sif) out.impact.sif_groups.insert(s);
-      for (int c : cone_causes(m, id)) {
+      for (int c : cones.causes(id)) {
         const model::Cause* cz = m.find_cause(c);
         if (is_new) out.impact.causes.insert(c);
         else if (d.cause_map.count(c)) out.impact.causes.insert(d.cause_map.at(c));

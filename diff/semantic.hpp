@@ -27,10 +27,19 @@ struct EffectBehaviour {
   // Whether the structural comparison lists a change of this effect, of an
   // intersection into it, or of an element of its cone (OLD or NEW).
   bool structurally_changed = false;
+  // Whether a critical structural change (6.2.3: the safety logic) touches
+  // the effect or its cone in either version: what the semantic verdict is
+  // held against to decide whether the two comparisons agree.
+  bool critically_changed = false;
   // The effect as a whole; for an added or removed effect, verdict Differs by
   // interface. Keys and ids in `result` are OLD's numbering.
   checker::GroupEquivalence result;
   std::vector<checker::GroupEquivalence> outputs;  // per output tag, when the effect differs
+  // The distinguishing run of `result` under NEW's own numbers (after a
+  // relabelling the run is mapped back and confirmed on NEW itself): NEW's
+  // inputs per cycle, and the differing observable's key in NEW.
+  std::vector<model::CycleInput> new_inputs;
+  std::string new_key;
   bool behaviour_changed() const { return result.verdict != checker::EquivalenceVerdict::Equivalent; }
 };
 
@@ -48,6 +57,19 @@ struct SemanticDiff {
   bool any_changed() const;
   bool any_unknown() const;
 };
+
+// Manual 12 and 11.2: "if the comparisons list exactly the changes you made,
+// test only those, otherwise test the entire matrix". A partial retest is
+// justified when the two comparisons agree: every effect decided, and every
+// effect whose behaviour changed has a critical structural change in its cone
+// (a behaviour change that no listed change explains means the comparison
+// cannot be trusted to list everything). The effects to retest are then the
+// impact set's.
+struct RetestScope {
+  bool partial = false;
+  std::string reason;  // one sentence
+};
+RetestScope retest_scope(const SemanticDiff& d);
 
 struct SemanticOptions {
   std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();

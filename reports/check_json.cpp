@@ -43,6 +43,8 @@ ordered_json property_json(const checker::PropertyResult& p) {
   j["support_minimal"] = p.verdict == PropertyVerdict::Proved ? ordered_json(p.support_minimal) : ordered_json();
   j["invariant"] = optional_text(p.invariant);
   j["scenario"] = optional_text(p.scenario_file);
+  j["diagram"] = optional_text(p.diagram_file);
+  j["waveforms"] = optional_text(p.vcd_file);
   j["violation_cycle"] = p.violation_cycle >= 0 ? ordered_json(p.violation_cycle) : ordered_json();
   return j;
 }

@@ -33,6 +33,8 @@ std::string detail_text(const PropertyResult& p) {
   if (!p.description.empty()) s << "requirement: " << p.description << "\n";
   for (const auto& n : p.notes) s << "note: " << n << "\n";
   if (!p.scenario_file.empty()) s << "scenario: " << p.scenario_file << "\n";
+  if (!p.diagram_file.empty()) s << "diagram: " << p.diagram_file << "\n";
+  if (!p.vcd_file.empty()) s << "waveforms: " << p.vcd_file << "\n";
   if (!p.timing_table.empty()) s << p.timing_table << (p.timing_table.back() == '\n' ? "" : "\n");
   if (!p.support.empty()) {
     s << "support" << (p.support_minimal ? " (minimal)" : "") << ":";

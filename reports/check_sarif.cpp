@@ -86,6 +86,8 @@ ordered_json result_json(const checker::CheckResult& r, const CheckReportInputs&
                         (about.empty() ? "the whole" : about + " of") + " matrix " +
                         r.matrix_name + ".";
   if (!p.scenario_file.empty()) message += " Counterexample scenario: " + p.scenario_file + ".";
+  if (!p.diagram_file.empty()) message += " Timing diagram: " + p.diagram_file + ".";
+  if (!p.vcd_file.empty()) message += " Waveforms (VCD): " + p.vcd_file + ".";
 
   ordered_json physical;
   // Standard properties are derived from the matrix: they live in its file.
@@ -110,6 +112,16 @@ ordered_json result_json(const checker::CheckResult& r, const CheckReportInputs&
   // Stable identity of a finding across commits: the property, not its line.
   j["partialFingerprints"] = {{"cemvProperty/v1", r.matrix_name + "/" + p.file + "/" + p.name}};
   j["properties"] = {{"verdict", verdict_name(p.verdict)}, {"property", p.name}, {"kind", p.kind}};
+  // The files of the run beside the finding, as SARIF result attachments.
+  ordered_json attachments = ordered_json::array();
+  auto attach = [&](const std::string& file, const char* what) {
+    if (!file.empty())
+      attachments.push_back({{"description", {{"text", what}}}, {"artifactLocation", {{"uri", uri_of_path(file)}}}});
+  };
+  attach(p.scenario_file, "the run as a cemv-scenario/1 file (cemv simulate MATRIX SCENARIO replays it)");
+  attach(p.diagram_file, "the run as a timing diagram (SVG)");
+  attach(p.vcd_file, "the run as a value change dump (VCD, IEEE 1364) for waveform viewers");
+  if (!attachments.empty()) j["attachments"] = std::move(attachments);
   return j;
 }
 

@@ -1,6 +1,7 @@
 #include "reports/evidence.hpp"
 
 #include <ctime>
+#include <map>
 #include <set>
 #include <type_traits>
 #include <sstream>
@@ -95,7 +96,8 @@ class Writer {
     grid();
     validation();
     properties();
-    tests();
+    evidence_detail::response_section(o_, m_, in_);
+    evidence_detail::tests_section(o_, in_);
     o_ << "<div class=\"pagefoot screen\">" << html_escape(stamp) << "</div>\n</body>\n</html>\n";
     return o_.str();
   }
@@ -124,8 +126,28 @@ class Writer {
     for (const auto& f : in_.check.property_files) files += (files.empty() ? "" : ", ") + html_escape(f);
     if (in_.check.standard) files += std::string(files.empty() ? "" : ", ") + "the standard properties";
     row("Property sources", files.empty() ? "none given" : files);
-    row("Test generation", in_.coverage_json.empty() ? "no test generation results given"
-                                                     : "from " + html_escape(in_.coverage_file));
+    std::string resp = "not analysed";
+    if (in_.response) {
+      std::map<std::string, int> n;
+      for (const auto& p : in_.response->paths) n[p.verdict]++;
+      resp = std::to_string(in_.response->paths.size()) + " paths";
+      const char* sep = ": ";
+      for (const auto& [v, k] : n) resp += sep + std::to_string(k) + " " + v, sep = ", ";
+    }
+    row("Response time", html_escape(resp));
+    std::string cov = "no test generation results given";
+    if (in_.coverage)
+      cov = std::to_string(in_.coverage->covered) + " of " + std::to_string(in_.coverage->objectives) +
+            " objectives covered, " + std::to_string(in_.coverage->infeasible) + " infeasible, " +
+            std::to_string(in_.coverage->undecided) + " undecided; " + std::to_string(in_.coverage->tests) + " tests";
+    row("Test generation", html_escape(cov));
+    std::string mut = "no mutation figures given";
+    if (in_.mutation)
+      mut = std::to_string(in_.mutation->mutants) + " mutants: " + std::to_string(in_.mutation->detected) +
+            " detected, " + std::to_string(in_.mutation->equivalent) + " equivalent, " +
+            std::to_string(in_.mutation->survived) + " survived, " + std::to_string(in_.mutation->undecided) +
+            " undecided";
+    row("Mutation", html_escape(mut));
     row("Tool", "cemv " + html_escape(in_.check.tool_version));
     row("Date", html_escape(in_.date));
     o_ << "</table>\n</section>\n";
@@ -216,23 +238,13 @@ class Writer {
       if (!p.trace) continue;
       o_ << "<div class=\"cex\">\n<h3>" << html_escape(p.name) << ": "
          << (p.verdict == checker::PropertyVerdict::Reachable ? "witness" : "counterexample") << "</h3>\n";
-      o_ << "<p>" << html_escape(outcome_text(p)) << ", " << p.trace->inputs.size() << " cycles.</p>\n";
+      o_ << "<p>" << html_escape(outcome_text(p)) << ", " << p.trace->inputs.size()
+         << (p.trace->inputs.size() == 1 ? " cycle" : " cycles") << ".</p>\n";
       o_ << "<img class=\"diagram\" alt=\"timing diagram of " << html_escape(p.name)
          << "\" src=\"data:image/svg+xml;base64," << base64(timing_svg(m_, *p.trace, diagram_of(p))) << "\">\n";
       if (!p.timing_table.empty()) o_ << "<pre>" << html_escape(p.timing_table) << "</pre>\n";
       o_ << "</div>\n";
     }
-    o_ << "</section>\n";
-  }
-
-  void tests() {
-    o_ << "<section class=\"page\">\n<h2>4. Test generation: coverage and mutation figures</h2>\n";
-    if (in_.coverage_json.empty())
-      o_ << "<p class=\"warn\">No test generation results given (<code>cemv evidence --coverage FILE</code> "
-            "adds them).</p>\n";
-    else
-      o_ << "<p>From <code>" << html_escape(in_.coverage_file) << "</code>:</p>\n<pre>" << html_escape(in_.coverage_json)
-         << "</pre>\n";
     o_ << "</section>\n";
   }
 

@@ -2,12 +2,15 @@
 // one self-contained, printable HTML file for an assessor. It holds the matrix
 // as a cause & effect grid, the validation result (11.5), every property with
 // its verdict, method and (for counterexamples and witnesses) its timing
-// diagram, the test-generation figures when given, and on every page (the
+// diagram, the response time of every SIF path when analysed, the
+// test-generation and mutation figures when given, and on every page (the
 // print header and footer) the matrix signature, the tool version and the date.
 // Inline CSS and images only: no scripts, no external resources. The same
 // inputs (and date) give the same bytes.
 #pragma once
 
+#include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,20 +20,67 @@
 
 namespace cemv::reports {
 
+// cemv-coverage/1 (docs/testgen.md), as read by the command line.
+struct CoverageFigures {
+  struct Objective {
+    std::string id, kind, text, element, status, test, method;
+  };
+  struct Test {
+    std::string id, file;
+    long long sif = 0, steps = 0, cycles = 0;
+    std::size_t objectives = 0;
+  };
+  std::string file;  // as given on the command line
+  long long objectives = 0, covered = 0, infeasible = 0, undecided = 0, tests = 0, steps = 0, cycles = 0;
+  std::vector<Objective> list;
+  std::vector<Test> test_list;
+};
+
+// cemv-mutation-report/1 (docs/mutation.md), as read by the command line.
+struct MutationFigures {
+  struct Mutant {
+    std::string id, op, element, description, status;
+  };
+  std::string file;
+  long long mutants = 0, equivalent = 0, detected = 0, survived = 0, undecided = 0, refused = 0;
+  std::vector<Mutant> open;  // survived or undecided: what the suite does not show
+};
+
+// The paths of `cemv response` (docs/response-time.md), as plain data: the
+// command line fills them from response::analyse, which reports/ cannot use.
+struct ResponseFigures {
+  struct Path {
+    int sif = 0;
+    std::string sif_name;
+    std::string path;     // "cause 1 -> effect 2"
+    std::string logic;    // "20 cycles (2000 ms)", "unbounded", "unknown (time limit)"
+    std::optional<long long> total_ms, process_safety_time_ms, margin_ms, degraded_total_ms;
+    std::optional<double> margin_percent;
+    std::string verdict;  // ok, over, no-pst, unbounded, unknown
+  };
+  std::string controller;  // "200 ms, 2 x cycle_ms"
+  std::vector<Path> paths;
+};
+
 struct EvidenceInputs {
   std::string matrix_file;                    // as given on the command line
   std::vector<model::Diagnostic> validation;  // model::validate(m)
   checker::CheckResult check;                 // no properties: "no properties given"
   std::string date;                           // "2024-05-01 12:00 UTC"
-  // Test generation results (cemv-coverage JSON text) when given; empty: the
-  // report says that none were given.
-  std::string coverage_file;
-  std::string coverage_json;
+  std::optional<ResponseFigures> response;    // absent: not analysed (the report says how to add it)
+  std::optional<CoverageFigures> coverage;    // absent: none given
+  std::optional<MutationFigures> mutation;
 };
 
 std::string evidence_html(const model::Matrix& m, const EvidenceInputs& in);
 
 // "YYYY-MM-DD HH:MM UTC" of a Unix time.
 std::string utc_date(long long epoch_seconds);
+
+namespace evidence_detail {
+// The sections on response time and on test generation (evidence_tests.cpp).
+void response_section(std::ostream& o, const model::Matrix& m, const EvidenceInputs& in);
+void tests_section(std::ostream& o, const EvidenceInputs& in);
+}  // namespace evidence_detail
 
 }  // namespace cemv::reports

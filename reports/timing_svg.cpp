@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "reports/timing_rows.hpp"
 #include "reports/xml_text.hpp"
@@ -28,6 +30,28 @@ std::string num(double v) {
 // metrics without a browser): wide enough for the examples' names.
 double text_width(const std::string& s, double size = 12) { return s.size() * size * 0.6; }
 
+// The words of `s` in lines no wider than `width` at `size` px (a word longer
+// than a line is cut at the line's end: names have no spaces to break at).
+// The title, the marks and the legend run across the whole picture, which is
+// narrow for a short run: they wrap instead of running past the right edge.
+std::vector<std::string> wrap(const std::string& s, double size, double width, double factor = 0.6) {
+  const std::size_t max_chars = std::max<std::size_t>(8, static_cast<std::size_t>(width / (size * factor)));
+  std::vector<std::string> lines;
+  std::string line;
+  std::istringstream words(s);
+  for (std::string w; words >> w;) {
+    while (w.size() > max_chars) {
+      if (!line.empty()) lines.push_back(line), line.clear();
+      lines.push_back(w.substr(0, max_chars));
+      w.erase(0, max_chars);
+    }
+    if (!line.empty() && line.size() + 1 + w.size() > max_chars) lines.push_back(line), line.clear();
+    line += (line.empty() ? "" : " ") + w;
+  }
+  if (!line.empty() || lines.empty()) lines.push_back(line);
+  return lines;
+}
+
 constexpr double kFoldWidth = 44;
 constexpr double kPad = 6;
 
@@ -49,7 +73,7 @@ const char* kStyle =
     ".lvl-hysteresis{fill:#4b5563}\n"
     ".timer{fill:#fde68a;stroke:#b45309;stroke-width:0.8}.bad{fill:#ef4444;fill-opacity:0.25}\n"
     ".fold{fill:url(#hatch)}.mark{fill:#ef4444;fill-opacity:0.14}.markline{stroke:#dc2626;stroke-width:1.5}\n"
-    ".cmd{fill:#111827}.marktext{fill:#b91c1c;font-weight:bold}\n"
+    ".cmd{fill:#111827}.marktext{fill:#b91c1c;font-weight:bold}.check{fill:#15803d}\n"
     "</style>\n";
 
 class Drawing {
@@ -70,11 +94,34 @@ class Drawing {
     xs_.push_back(x);
     bool levels = false;
     for (const auto& r : rows_) levels |= !r.levels.empty();
-    width_ = x + (levels ? 190 : 24);
+    // At least wide enough for a readable line of title and legend.
+    width_ = std::max(x + (levels ? 190 : 24), 560.0);
   }
 
   std::string svg() {
-    double header = 46 + 16 * static_cast<double>(d_.marks.size());
+    // The header: title (15 px bold), subtitle, one line per mark, each
+    // wrapped to the picture's width.
+    const double text_w = width_ - 20;
+    std::ostringstream head;
+    double hy = 20;
+    for (const auto& line : wrap(d_.title, 15, text_w, 0.66)) {
+      head << "<text class=\"title\" x=\"10\" y=\"" << num(hy) << "\">" << html_escape(line) << "</text>\n";
+      hy += 18;
+    }
+    for (const auto& line : wrap(subtitle(), 12, text_w)) {
+      head << "<text class=\"sub\" x=\"10\" y=\"" << num(hy) << "\">" << html_escape(line) << "</text>\n";
+      hy += 15;
+    }
+    for (const auto& mk : d_.marks) {
+      std::string text = "\u25B2 " + mk.label + " (cycle " + std::to_string(mk.cycle + 1) +
+                         ", t = " + timing::time_text(double(mk.cycle) * m_.cycle_ms) + ")";
+      for (const auto& line : wrap(text, 12, text_w, 0.66)) {
+        head << "<text class=\"marktext\" x=\"10\" y=\"" << num(hy + 1) << "\">" << html_escape(line)
+             << "</text>\n";
+        hy += 16;
+      }
+    }
+    double header = hy;
     double axis_top = header + 18;
     double y = axis_top + 6;
     double rows_end = y;
@@ -89,7 +136,9 @@ class Drawing {
     std::ostringstream over;
     draw_marks(over, axis_top, rows_end);
     draw_axes(over, axis_top, rows_end);
-    std::vector<std::string> foot = footer();
+    std::vector<std::string> foot;
+    for (const auto& paragraph : footer())
+      for (auto& line : wrap(paragraph, 10, text_w)) foot.push_back(std::move(line));
     double height = rows_end + 30 + 15 * static_cast<double>(foot.size()) + 8;
 
     std::ostringstream o;
@@ -101,15 +150,7 @@ class Drawing {
          "patternTransform=\"rotate(45)\"><rect width=\"6\" height=\"6\" fill=\"#f3f4f6\"/>"
          "<line x1=\"0\" y1=\"0\" x2=\"0\" y2=\"6\" stroke=\"#d1d5db\" stroke-width=\"2\"/></pattern></defs>\n";
     o << "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
-    o << "<text class=\"title\" x=\"10\" y=\"20\">" << html_escape(d_.title) << "</text>\n";
-    o << "<text class=\"sub\" x=\"10\" y=\"38\">" << html_escape(subtitle()) << "</text>\n";
-    for (std::size_t i = 0; i < d_.marks.size(); ++i) {
-      const auto& mk = d_.marks[i];
-      o << "<text class=\"marktext\" x=\"10\" y=\"" << num(56 + 16 * double(i)) << "\">&#9650; " << html_escape(mk.label)
-        << " (cycle " << mk.cycle + 1 << ", t = " << timing::time_text(double(mk.cycle) * m_.cycle_ms)
-        << ")</text>\n";
-    }
-    o << body.str() << over.str();
+    o << head.str() << body.str() << over.str();
     double fy = rows_end + 34;
     for (const auto& line : foot) {
       o << "<text class=\"sub small\" x=\"10\" y=\"" << num(fy) << "\">" << html_escape(line) << "</text>\n";
@@ -124,7 +165,8 @@ class Drawing {
     std::size_t folded = 0, hidden = 0;
     for (const auto& c : cols_)
       if (c.folded) ++folded, hidden += c.last - c.first + 1;
-    std::string s = "matrix " + m_.name + ", " + std::to_string(t_.inputs.size()) + " cycles of " +
+    std::string s = "matrix " + m_.name + ", " + std::to_string(t_.inputs.size()) +
+                    (t_.inputs.size() == 1 ? " cycle of " : " cycles of ") +
                     std::to_string(m_.cycle_ms) + " ms (" +
                     timing::time_text(double(t_.inputs.size()) * m_.cycle_ms) + ")";
     if (folded)
@@ -135,9 +177,21 @@ class Drawing {
 
   std::vector<std::string> footer() const {
     std::vector<std::string> out;
-    out.push_back("Cycle n starts at t = (n-1) x " + std::to_string(m_.cycle_ms) +
-                  " ms; values are those after the cycle. Red dashes: limit; orange: prewarning; grey dots: "
-                  "hysteresis release; red shading: bad quality; bars: timers filling up to their time.");
+    // The legend names only what this picture draws.
+    bool levels = false, bad = false, timers = false;
+    for (const auto& r : rows_) {
+      levels |= !r.levels.empty();
+      for (bool b : r.bad) bad |= b;
+      timers |= r.kind == RowKind::Timer;
+    }
+    std::string legend = "Cycle n starts at t = (n-1) x " + std::to_string(m_.cycle_ms) +
+                         " ms; values are those after the cycle.";
+    if (levels) legend += " Red dashes: limit; orange: prewarning; grey dots: hysteresis release.";
+    if (bad) legend += " Red shading: bad quality.";
+    if (timers) legend += " Bars: timers filling up to their time.";
+    out.push_back(legend);
+    if (!d_.checks.empty())
+      out.push_back("Green ticks under the cycle numbers: the cycles at which the test checks its expectations.");
     std::size_t listed = 0, folds = 0;
     for (const auto& c : cols_) {
       if (!c.folded) continue;
@@ -286,8 +340,12 @@ class Drawing {
       o << "<polygon class=\"cmd\" points=\"" << num(x - 5) << "," << num(top) << " " << num(x + 5) << ","
         << num(top) << " " << num(x) << "," << num(top + 9) << "\"><title>cycle " << cols_[i].first + 1 << ": "
         << html_escape(text) << "</title></polygon>\n";
+      // The label stops at the picture's right edge (the marker's tooltip has it all).
+      std::string label = text;
+      const std::size_t room = static_cast<std::size_t>(std::max(0.0, width_ - x - 10) / (10 * 0.6));
+      if (label.size() > room) label = room > 3 ? label.substr(0, room - 3) + "..." : "";
       o << "<text class=\"small\" x=\"" << num(x + 6) << "\" y=\"" << num(top + 20 + 11 * lane) << "\">"
-        << html_escape(text) << "</text>\n";
+        << html_escape(label) << "</text>\n";
       lane = 1 - lane;
     }
     (void)bottom;
@@ -308,6 +366,14 @@ class Drawing {
   }
 
   void draw_marks(std::ostringstream& o, double axis_top, double rows_end) const {
+    for (std::size_t c : d_.checks)
+      for (std::size_t i = 0; i < cols_.size(); ++i)
+        if (!cols_[i].folded && cols_[i].first <= c && c <= cols_[i].last) {
+          double x = (xs_[i] + xs_[i + 1]) / 2;
+          o << "<polygon class=\"check\" points=\"" << num(x - 4) << "," << num(axis_top) << " " << num(x + 4) << ","
+            << num(axis_top) << " " << num(x) << "," << num(axis_top + 6) << "\"><title>cycle " << c + 1
+            << ": expectations checked</title></polygon>\n";
+        }
     for (const auto& mk : d_.marks)
       for (std::size_t i = 0; i < cols_.size(); ++i)
         if (cols_[i].first <= mk.cycle && mk.cycle <= cols_[i].last) {

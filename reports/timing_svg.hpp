@@ -36,6 +36,9 @@ struct TimingDiagram {
   // change, always.
   bool all_changing = false;
   std::vector<TimingMark> marks;
+  // Cycles (0-based) at which a test checks its expectations: small ticks
+  // under the cycle axis, without a line of text each (a test has many).
+  std::vector<std::size_t> checks;
 };
 
 // The diagram of `trace` (inputs indexed by model::InputTable(m), observables

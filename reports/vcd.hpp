@@ -10,6 +10,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "checker/result.hpp"
 #include "model/matrix.hpp"
@@ -23,5 +24,15 @@ struct VcdHeader {
 };
 
 std::string vcd(const model::Matrix& m, const checker::ConcreteTrace& trace, const VcdHeader& h);
+
+// Several runs in one dump (`cemv check --vcd FILE`: every counterexample and
+// witness): under the matrix scope one scope per run, named `scope`, holding
+// the scopes above; every run starts at time 0, and a shorter run keeps its
+// last values to the end of the longest.
+struct VcdRun {
+  std::string scope;  // e.g. the property name (made a VCD word)
+  const checker::ConcreteTrace* trace = nullptr;
+};
+std::string vcd_runs(const model::Matrix& m, const std::vector<VcdRun>& runs, const VcdHeader& h);
 
 }  // namespace cemv::reports

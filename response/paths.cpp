@@ -156,7 +156,9 @@ class Walker {
 
 std::string Path::key() const {
   std::string s = "c";
-  for (std::size_t i = 0; i < causes.size(); ++i) s += (i ? "-" : "") + std::to_string(causes[i]);
+  // '_' between ids: the key is part of a property name, which the property
+  // language reads as an identifier (docs/properties.md).
+  for (std::size_t i = 0; i < causes.size(); ++i) s += (i ? "_" : "") + std::to_string(causes[i]);
   return s + ".e" + std::to_string(effect);
 }
 

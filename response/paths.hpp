@@ -28,7 +28,7 @@ struct Path {
   // degraded figure is measured with one of them in bad quality).
   std::vector<int> voted;
 
-  // "c1.e2", "c2-3-4.e1": the path's stable name (property names, files).
+  // "c1.e2", "c2_3_4.e1": the path's stable name (property names, files).
   std::string key() const;
 };
 

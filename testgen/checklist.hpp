@@ -6,6 +6,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "model/matrix.hpp"
 #include "testgen/testgen.hpp"
@@ -18,6 +19,10 @@ struct ChecklistHeader {
   std::string signature;
   std::string date;          // YYYY-MM-DD (UTC)
   std::string tool_version;  // "cemv 0.1.0"
+  // Printed after the header, before the tests: a change checklist's list of
+  // changes and retest scope (`--changed-from`, docs/change-acceptance.md).
+  std::string preface_markdown, preface_html;
+  std::vector<std::string> preface_csv;  // one `# change,...` comment row each
 };
 ChecklistHeader checklist_header(const model::Matrix& m, const TestSuite& s, const std::string& tool_version);
 // The date of SOURCE_DATE_EPOCH when set and valid, else today (UTC).

@@ -185,7 +185,8 @@ TestSuite generate_tests(const model::Matrix& m, const TestgenOptions& options) 
   std::vector<Objective> all = derive_objectives(m);
   std::vector<Objective> chosen;
   for (auto& o : all)
-    if (!options.sif || o.sif == *options.sif) chosen.push_back(std::move(o));
+    if ((!options.sif || o.sif == *options.sif) && (!options.elements || options.elements->count(o.element)))
+      chosen.push_back(std::move(o));
   const properties::PropertyFile file = properties::parse_properties(objectives_file_text(chosen), m, "objectives");
   for (auto& o : chosen) {
     ObjectiveResult r;
@@ -220,6 +221,29 @@ TestSuite generate_tests(const model::Matrix& m, const TestgenOptions& options) 
   for (auto& t : threads) t.join();
   if (error) std::rethrow_exception(error);
 
+  // The given tests first (C001, ...), each checked at its last cycle.
+  for (const GivenTest& g : options.given) {
+    if (g.inputs.empty()) continue;
+    Test t;
+    char id[16];
+    std::snprintf(id, sizeof id, "C%03zu", suite.tests.size() + 1);
+    t.id = id;
+    t.sif = g.sif;
+    t.description = t.id + ": " + g.description;
+    t.file_name = t.id + "-" + slug(g.name) + ".scenario.json";
+    const std::size_t last = g.inputs.size() - 1;
+    std::vector<detail::Checkpoint> cps{{last, {g.description}, {g.key}}};
+    t.checkpoints = {last};
+    t.inputs = g.inputs;
+    const checker::ConcreteTrace run = checker::run_on_runtime(m, g.inputs);
+    t.scenario_json = detail::test_scenario_json(m, options.matrix_ref, t.description, g.inputs, run.observables,
+                                                 cps, t.steps, t.field_steps);
+    suite.total_steps += t.steps;
+    suite.total_cycles += t.inputs.size();
+    suite.tests.push_back(std::move(t));
+  }
+  const std::size_t given = suite.tests.size();
+
   // Assemble: tests in group order, then creation order; objective results
   // point at the final test numbers.
   std::map<std::pair<std::size_t, int>, int> number;  // (group, draft) -> test index
@@ -232,7 +256,7 @@ TestSuite generate_tests(const model::Matrix& m, const TestgenOptions& options) 
       std::sort(dr.witnesses.begin(), dr.witnesses.end());
       Test t;
       char id[16];
-      std::snprintf(id, sizeof id, "T%03d", index + 1);
+      std::snprintf(id, sizeof id, "T%03zu", static_cast<std::size_t>(index) + 1 - given);
       t.id = id;
       t.sif = dr.sif;
       const Objective& first = suite.objectives[dr.witnesses.front().second].objective;

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <functional>
 #include <optional>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -82,8 +83,24 @@ struct TestSuite {
   std::size_t total_steps = 0, total_cycles = 0;
 };
 
+// A test the suite takes as given (a change's distinguishing run,
+// docs/change-acceptance.md): its inputs on the matrix, and the observable
+// its last cycle shows first. Like every test it is written with the
+// field's observables at that checkpoint and replayed green.
+struct GivenTest {
+  std::string name;         // for the file name: "effect[5]"
+  std::string description;  // the sentence an engineer reads
+  int sif = 0;              // the SIF group it is filed under
+  std::vector<model::CycleInput> inputs;
+  std::string key;          // observable key checked first at the last cycle
+};
+
 struct TestgenOptions {
   std::optional<int> sif;             // only the objectives filed under this SIF group
+  // Only the objectives about these causes and effects (Objective::element):
+  // a change's impact (`--changed-from`); unset: all.
+  std::optional<std::set<model::Node>> elements;
+  std::vector<GivenTest> given;       // tests C001, ... before the generated ones
   int jobs = 1;                       // SIF groups searched in parallel
   double objective_budget_s = 20.0;   // search per objective (BMC, then accelerated BMC)
   double proof_budget_s = 3.0;        // infeasibility proof per objective

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "checker/context_pool.hpp"
 #include "checker/engines/solving.hpp"
 #include "encoder/encode.hpp"
 #include "encoder/evaluate.hpp"
@@ -60,9 +61,11 @@ std::vector<Obligation> obligations(const SafetyProblem& p, const ProverResult& 
   return out;
 }
 
+// The problem built again, by its factory, in a context that holds no term,
+// solver or model of the engine that found the answer.
 template <class F>
 auto in_fresh_context(const ProblemFactory& make, F&& f) {
-  z3::context ctx;
+  PooledContext ctx;
   OwnedProblem owned = make(ctx);
   return f(owned.problem);
 }
@@ -77,14 +80,19 @@ void recheck_proof(const SafetyProblem& problem, const ProverResult& result) {
   } catch (const z3::exception& e) {
     throw InternalError(result.method + " proof: the invariant does not parse: " + e.msg());
   }
+  // One fresh solver for the obligations, each in its own scope: in
+  // incremental mode Z3 skips the per-query preprocessing that dominated
+  // re-checking the many small proofs of a standard property set.
+  z3::solver s(problem.ts->ctx());
   for (const auto& o : obs) {
-    z3::solver s(problem.ts->ctx());
+    s.push();
     s.add(o.formula);
     z3::check_result cr = s.check();
     if (cr != z3::unsat)
       throw InternalError(result.method + " proof (k=" + std::to_string(result.k) + ") fails its re-check: " +
                           o.name + " is " + (cr == z3::sat ? "sat" : "unknown (" + s.reason_unknown() + ")") +
                           "\ninvariant:\n" + result.invariant.text());
+    s.pop();
   }
 }
 

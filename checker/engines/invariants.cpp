@@ -4,6 +4,7 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <random>
 #include <set>
 #include <unordered_map>
@@ -126,6 +127,7 @@ class CandidateMiner {
     pairs();
     guarded();
     if (opt_.bool_implications) bool_implications();
+    monitor_bounds();  // last: the candidates of the other templates stay as they were
     return std::move(out_);
   }
 
@@ -214,6 +216,78 @@ class CandidateMiner {
           }
         }
       }
+  }
+
+  // A property monitor's counter against the matrix's timers, under a
+  // monitor's Bool: `g -> (x >= y + c or x >= b)`, b the bound x saturates
+  // at (the nearest numeral of the system at or above its sampled maximum).
+  // A response monitor's `pending -> (elapsed >= age + c or elapsed >= D)`
+  // is the shape that bounds a demand's wait by the timers along its path
+  // (a timer that may have started before the demand, or that saturates
+  // before the monitor does, breaks every equality template);
+  // docs/response-time.md, "Method". c is the least x - y sampled under g
+  // where x is below b, and, because random runs rarely hold one demand
+  // with everything else quiet (the worst case), also the offsets the
+  // timers before x on a path would give: 1 - r minus the bounds of up to
+  // two other counters (r <= 2 cycles of references that read the previous
+  // value), each below the sampled least. Guards and y are the few monitor
+  // variables; Houdini keeps what is inductive.
+  void monitor_bounds() {
+    auto monitor = [&](std::size_t v) { return ts_.statevars()[v].name.rfind("monitor.", 0) == 0; };
+    std::vector<std::int64_t> bound(ts_.statevars().size(), 0);
+    std::vector<std::size_t> counters;  // the matrix's saturating counters
+    for (std::size_t x : ints_) {
+      std::int64_t lo = std::numeric_limits<std::int64_t>::max(), hi = std::numeric_limits<std::int64_t>::min();
+      for (const auto& s : samples_) {
+        lo = std::min(lo, iv(s, x));
+        hi = std::max(hi, iv(s, x));
+      }
+      auto up = k_.ints.lower_bound(hi);
+      bound[x] = up != k_.ints.end() ? *up : hi;
+      if (!monitor(x) && lo >= 0 && bound[x] > 0) counters.push_back(x);
+    }
+    // Sums of the bounds of up to two counters other than x.
+    const bool pairs_of_counters = counters.size() <= 12;
+    auto offsets = [&](std::size_t x) {
+      std::set<std::int64_t> sums{0};
+      for (std::size_t a = 0; a < counters.size(); ++a) {
+        if (counters[a] == x) continue;
+        sums.insert(bound[counters[a]]);
+        if (pairs_of_counters)
+          for (std::size_t b = a + 1; b < counters.size(); ++b)
+            if (counters[b] != x) sums.insert(bound[counters[a]] + bound[counters[b]]);
+      }
+      std::set<std::int64_t> out;
+      for (std::int64_t sum : sums)
+        for (std::int64_t r = 0; r <= 2; ++r) out.insert(1 - r - sum);
+      return out;
+    };
+    // Each candidate costs Houdini; a big cone with many monitors stops here.
+    const std::size_t budget = out_.size() + 4000;
+    for (std::size_t g : bools_) {
+      if (!monitor(g)) continue;
+      for (int pol = 1; pol >= 0 && !stop() && out_.size() < budget; --pol) {
+        z3::expr guard = pol ? var(g) : !var(g);
+        bool seen = false;
+        for (const auto& s : samples_) seen = seen || s[g].i == pol;
+        if (!seen) continue;
+        for (std::size_t y : ints_) {
+          if (!monitor(y)) continue;
+          for (std::size_t x : counters) {
+            std::optional<std::int64_t> least;
+            for (const auto& s : samples_)
+              if (s[g].i == pol && iv(s, x) < bound[x])
+                least = std::min(least.value_or(iv(s, x) - iv(s, y)), iv(s, x) - iv(s, y));
+            std::set<std::int64_t> cs;
+            if (least) cs.insert(*least);
+            if (pol)
+              for (std::int64_t c : offsets(x))
+                if (!least || c < *least) cs.insert(c);
+            for (std::int64_t c : cs) add(z3::implies(guard, var(x) >= var(y) + num(c) || var(x) >= num(bound[x])));
+          }
+        }
+      }
+    }
   }
 
   void bool_implications() {

@@ -1,7 +1,9 @@
 // Relational template invariants, Houdini-style (Kind 2's and JKind's
 // invariant generation): candidates relating pairs of Int state variables
 // (x - y = c, x <= y + c, x <= c, x >= c), the same guarded by a Bool state
-// variable (b -> x = y + c, !b -> x = c), and implications between Bool state
+// variable (b -> x = y + c, !b -> x = c), a monitor's counter y against a
+// saturating counter x under a monitor Bool (g -> x >= y + c or x >= bound),
+// and implications between Bool state
 // variables are mined from the initial state and short simulated runs of the
 // encoder's Evaluator; a fresh solver then keeps the largest inductive subset.
 // A monitor counter and the matrix's own timer counter are related this way

@@ -41,7 +41,8 @@ std::vector<z3::expr> KInduction::strengthening(const SafetyProblem& problem, co
   auto add = [&](const z3::expr& e) {
     if (seen.insert(e.id()).second) candidates.push_back(e);
   };
-  for (const auto& l : problem.ts->lemmas()) add(l.term);
+  if (options_.use_lemmas)
+    for (const auto& l : problem.ts->lemmas()) add(l.term);
   if (options_.mine_invariants) {
     MiningOptions mining;
     mining.bool_implications = options_.bool_implications;

@@ -12,6 +12,7 @@
 namespace cemv::checker {
 
 struct KInductionOptions {
+  bool use_lemmas = true;       // strengthen by the encoder's range lemmas that Houdini keeps
   bool mine_invariants = true;  // strengthen by engines/invariants' Houdini invariants
   bool bool_implications = false;  // MiningOptions::bool_implications
   bool simple_path = true;

@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "checker/check/recheck.hpp"
+#include "checker/context_pool.hpp"
 #include "checker/engines/accelerated_bmc.hpp"
 #include "checker/engines/bmc.hpp"
 #include "checker/engines/invariants.hpp"
@@ -61,6 +62,60 @@ Portfolio::Portfolio(ProblemFactory make, PortfolioOptions options)
 
 ProverResult Portfolio::run(const Limits& limits) {
   const auto start = std::chrono::steady_clock::now();
+  const ProblemFactory make = options_.reduce ? reducing(make_) : make_;
+  std::optional<ProverResult> answer = quick_attempt(make, limits);
+  if (!answer) {
+    ProverResult raced = race(make, limits);
+    if (raced.verdict == Verdict::Unknown) {
+      raced.seconds = seconds_since(start);
+      return raced;
+    }
+    answer = std::move(raced);
+  }
+  return confirmed(make, std::move(*answer), limits, start);
+}
+
+// Most properties of a matrix are 0- or 1-inductive relative to the
+// encoder's range lemmas, or fail within a cycle or two: k-induction with no
+// mined invariants answers them in one thread and one build, before any
+// engine races (PortfolioOptions::quick_k). Its answer is what the race would
+// give: the same k-induction proof, or the shortest counterexample, since its
+// base case tries every depth in order.
+std::optional<ProverResult> Portfolio::quick_attempt(const ProblemFactory& make, const Limits& limits) const {
+  if (options_.quick_k < 0 ||
+      std::find(options_.engines.begin(), options_.engines.end(), "k-induction") == options_.engines.end())
+    return std::nullopt;
+  PooledContext ctx;
+  OwnedProblem owned = make(ctx);
+  Limits quick = limits;
+  quick.deadline = std::min(limits.deadline, std::chrono::steady_clock::now() + options_.quick_budget);
+  // First with no strengthening at all, which settles what holds in every
+  // cycle by the cycle's own definitions (no Houdini run over the lemmas);
+  // then with the lemmas.
+  KInductionOptions o;
+  o.mine_invariants = false;
+  o.use_lemmas = false;
+  o.max_k = 0;
+  ProverResult r = KInduction(o).prove(owned.problem, quick);
+  if (r.verdict == Verdict::Unknown && options_.quick_k > 0) {
+    o.use_lemmas = true;
+    o.max_k = options_.quick_k;
+    r = KInduction(o).prove(owned.problem, quick);
+  }
+  if (r.verdict == Verdict::Unknown && options_.quick_bmc_depth > options_.quick_k && !quick.over()) {
+    Limits bmc = quick;
+    bmc.max_depth = std::min(limits.max_depth, options_.quick_bmc_depth);
+    r = Bmc{}.prove(owned.problem, bmc);
+  }
+  if (r.verdict == Verdict::Unknown) return std::nullopt;
+  // Its base case is bounded model checking, depth by depth: a
+  // counterexample found there is BMC's, a shortest one.
+  if (r.verdict == Verdict::Falsified) r.method = "bmc";
+  return r;
+}
+
+ProverResult Portfolio::race(const ProblemFactory& make, const Limits& limits) const {
+  const auto start = std::chrono::steady_clock::now();
   std::mutex mutex;
   std::condition_variable changed;
   std::vector<std::unique_ptr<Lane>> lanes;
@@ -70,14 +125,13 @@ ProverResult Portfolio::run(const Limits& limits) {
     lane->engine = name;
     lanes.push_back(std::move(lane));
   }
-  const ProblemFactory make = options_.reduce ? reducing(make_) : make_;
   auto start_lane = [&](Lane* lane) {
     lane->started = true;
     lane->thread = std::thread([&, lane] {
       std::optional<ProverResult> r;
       std::exception_ptr error;
       try {
-        z3::context ctx;
+        PooledContext ctx;
         OwnedProblem owned = make(ctx);
         Limits mine = limits;
         mine.cancel = &lane->cancel;
@@ -218,29 +272,48 @@ ProverResult Portfolio::run(const Limits& limits) {
     r.seconds = seconds_since(start);
     return r;
   }
-  if (answer->verdict == Verdict::Falsified) {
+  return *answer;
+}
+
+// The answer made readable, re-checked in a fresh context and, for a
+// counterexample, lifted back to the caller's problem and replayed there.
+ProverResult Portfolio::confirmed(const ProblemFactory& make, ProverResult answer, const Limits& limits,
+                                  std::chrono::steady_clock::time_point start) const {
+  if (answer.verdict == Verdict::Falsified && options_.shrink_budget.count() > 0) {
     // Readable: every input the violation does not need kept at its
     // preferred value (checker/shrink.hpp), on the reduced problem, where
     // the solver works in integers.
-    z3::context ctx;
+    PooledContext ctx;
     OwnedProblem owned = make(ctx);
     Limits shrink_limits = limits;
     shrink_limits.deadline = std::min(limits.deadline, std::chrono::steady_clock::now() + options_.shrink_budget);
     shrink_limits.cancel = nullptr;
     PreferredValue preferred = options_.preferred;
     if (!preferred) preferred = [](const std::string&) { return std::optional<Value>(Value{}); };
-    answer->cex = shrink_trace(owned.problem, answer->cex, preferred, shrink_limits);
+    answer.cex = shrink_trace(owned.problem, answer.cex, preferred, shrink_limits);
   }
-  if (options_.recheck) check::recheck(make, *answer);
-  if (answer->verdict == Verdict::Falsified && options_.reduce) {
-    // Back to the problem as the caller stated it, and replayed there too.
-    z3::context ctx;
+  if (answer.verdict == Verdict::Falsified && options_.reduce) {
+    // Back to the problem as the caller stated it, and replayed there: a
+    // trace that runs there is a counterexample, whatever the reduction did.
+    // Only when it does not is the reduced problem's replay asked, to tell
+    // an engine's error from the reduction's.
+    PooledContext ctx;
     OwnedProblem original = make_(ctx);
-    answer->cex = lift_trace(original.problem, answer->cex);
-    if (options_.recheck) check::replay_counterexample(original.problem, answer->cex);
+    Trace lifted = lift_trace(original.problem, answer.cex);
+    if (options_.recheck) {
+      try {
+        check::replay_counterexample(original.problem, lifted);
+      } catch (const InternalError&) {
+        check::recheck(make, answer);
+        throw;
+      }
+    }
+    answer.cex = std::move(lifted);
+  } else if (options_.recheck) {
+    check::recheck(make, answer);
   }
-  answer->seconds = seconds_since(start);
-  return *answer;
+  answer.seconds = seconds_since(start);
+  return answer;
 }
 
 }  // namespace cemv::checker

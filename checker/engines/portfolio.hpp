@@ -21,6 +21,7 @@
 
 #include <chrono>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,13 @@ struct PortfolioOptions {
   // need otherwise (by input name); empty = 0, FALSE, 0.0 for every input.
   PreferredValue preferred;
   std::chrono::milliseconds shrink_budget{10000};
+  // Before the race: k-induction up to this k with the encoder's lemmas
+  // only, in the calling thread, within `quick_budget` (-1: no quick attempt).
+  int quick_k = 1;
+  // Then, for questions that are expected to have a witness (can the
+  // antecedent hold?), BMC to this depth (0: none).
+  int quick_bmc_depth = 0;
+  std::chrono::milliseconds quick_budget{2000};
 };
 
 // A prover by name, for the portfolio and the command line; throws
@@ -64,6 +72,10 @@ class Portfolio {
   ProverResult run(const Limits& limits);
 
  private:
+  std::optional<ProverResult> quick_attempt(const ProblemFactory& make, const Limits& limits) const;
+  ProverResult race(const ProblemFactory& make, const Limits& limits) const;
+  ProverResult confirmed(const ProblemFactory& make, ProverResult answer, const Limits& limits,
+                         std::chrono::steady_clock::time_point start) const;
   ProblemFactory make_;
   PortfolioOptions options_;
 };

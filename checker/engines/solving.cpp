@@ -1,5 +1,7 @@
 #include "checker/engines/solving.hpp"
 
+#include "checker/context_pool.hpp"
+
 #include <bit>
 #include <cstring>
 #include <limits>
@@ -34,6 +36,7 @@ void Watchdog::watch() {
   while (!done_) {
     wake_.wait_for(lock, std::chrono::milliseconds(10));
     if (!done_ && limits_.over()) {
+      discard_when_released(ctx_);
       ctx_.interrupt();
       fired_ = true;
     }

@@ -28,6 +28,12 @@ if(TARGET cemv_checker)
   gtest_discover_tests(test_checker_portfolio DISCOVERY_MODE PRE_TEST)
 endif()
 
+if(TARGET cemv_checker)
+  add_executable(test_checker_pools ${CMAKE_CURRENT_LIST_DIR}/test_pools.cpp)
+  target_link_libraries(test_checker_pools PRIVATE cemv_checker_problems GTest::gtest_main)
+  gtest_discover_tests(test_checker_pools DISCOVERY_MODE PRE_TEST)
+endif()
+
 # Not in make test: cemv_checker_measure [SECONDS] prints the 18,000-cycle
 # timer figures per engine, plain BMC and PDR side by side.
 if(TARGET cemv_checker)
@@ -39,5 +45,5 @@ endif()
 # every engine alone on every property, then the portfolio.
 if(TARGET cemv_checker)
   add_executable(cemv_checker_probe ${CMAKE_CURRENT_LIST_DIR}/probe.cpp)
-  target_link_libraries(cemv_checker_probe PRIVATE cemv_checker)
+  target_link_libraries(cemv_checker_probe PRIVATE cemv_checker cemv_testsupport)
 endif()

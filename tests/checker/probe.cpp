@@ -9,11 +9,14 @@
 #include <set>
 #include <string>
 
+#include "checker/check.hpp"
 #include "checker/engines/portfolio.hpp"
 #include "checker/property_problem.hpp"
 #include "checker/reduce.hpp"
 #include "formats/matrix_json.hpp"
 #include "properties/parser.hpp"
+#include "properties/standard.hpp"
+#include "tests/support/random_matrix.hpp"
 
 using namespace cemv;
 using namespace cemv::checker;
@@ -23,9 +26,45 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: %s MATRIX PROPS SECONDS [NAME...]\n", argv[0]);
     return 2;
   }
-  model::Matrix m = formats::load_valid_matrix(argv[1], "probe");
-  properties::PropertyFile f = properties::load_properties(argv[2], m);
+  // MATRIX may be random:N (the n x n matrix of bench/bench_checker.cpp's
+  // standard-set scaling) or big (tests/support big_matrix); PROPS may be
+  // standard (the matrix's standard property set).
+  const std::string matrix_arg = argv[1];
+  model::Matrix m;
+  if (matrix_arg == "big") {
+    m = testsupport::big_matrix(1);
+  } else if (matrix_arg.rfind("random:", 0) == 0) {
+    const int n = std::atoi(matrix_arg.c_str() + 7);
+    testsupport::MatrixOptions o;
+    o.min_causes = o.max_causes = n;
+    o.min_effects = o.max_effects = n;
+    o.cycle_ms = 100;
+    m = testsupport::random_matrix(static_cast<std::uint64_t>(n), o);
+  } else {
+    m = formats::load_valid_matrix(argv[1], "probe");
+  }
+  if (const char* save = std::getenv("PROBE_SAVE")) {  // the matrix as a file, for cemv check
+    formats::save_matrix(m, save);
+    return 0;
+  }
+  properties::PropertyFile f = std::string(argv[2]) == "standard" ? properties::standard_properties(m)
+                                                                   : properties::load_properties(argv[2], m);
   const int seconds = std::atoi(argv[3]);
+  if (std::getenv("PROBE_CHECK")) {  // check_properties as the benchmark runs it, one line per property
+    CheckOptions o;
+    o.property_timeout_s = seconds;
+    o.support = false;
+    o.standard = true;
+    o.on_result = [](const PropertyResult& r) {
+      std::printf("%-34s %-11s %-22s %3d %7.3f s\n", r.name.c_str(), to_string(r.verdict),
+                  r.method.c_str(), r.depth, r.seconds);
+      std::fflush(stdout);
+    };
+    std::set<std::string> names(argv + 4, argv + argc);
+    if (!names.empty()) std::erase_if(f.properties, [&](const auto& p) { return !names.count(p.name); });
+    check_properties(m, {f}, o);
+    return 0;
+  }
   std::set<std::string> only(argv + 4, argv + argc);
   const std::vector<std::string> engines{"bmc", "k-induction", "invariants+induction", "pdr", "accelerated-bmc"};
   for (const auto& p : f.properties) {

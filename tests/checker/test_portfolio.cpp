@@ -96,6 +96,39 @@ TEST(Portfolio, EndsOnTimeWhenNothingDecides) {
   EXPECT_LT(seconds, 4.0);  // 1.5 s budget; the margin is for a loaded 2-core machine
 }
 
+// The quick attempt (k-induction without mined invariants, in the calling
+// thread) answers what it can with the answer the race would give.
+TEST(Portfolio, QuickAttemptGivesTheRacesAnswer) {
+  for (int quick_k : {1, -1}) {
+    PortfolioOptions o;
+    o.quick_k = quick_k;
+    const auto bug = fixtures::guarded_counter(2);
+    ProverResult r = Portfolio(bug.make, o).run(Limits::within(std::chrono::seconds(30), 40));
+    ASSERT_EQ(r.verdict, Verdict::Falsified) << "quick_k " << quick_k;
+    EXPECT_EQ(r.method, "bmc") << "quick_k " << quick_k;
+    EXPECT_EQ(r.cex.length(), 4u) << "quick_k " << quick_k;
+    const auto proof = fixtures::override_instance_monitor(18000, Verdict::Proved);
+    ProverResult p = Portfolio(proof.make, o).run(Limits::within(std::chrono::seconds(30), 40));
+    ASSERT_EQ(p.verdict, Verdict::Proved) << "quick_k " << quick_k;
+    EXPECT_EQ(p.method, "k-induction") << "quick_k " << quick_k;
+  }
+}
+
+// BMC in the quick attempt finds a counterexample deeper than quick_k.
+TEST(Portfolio, QuickBmcFindsADeeperCounterexample) {
+  PortfolioOptions o;
+  o.engines = {"k-induction"};  // nothing else could find it
+  o.tiers = {{"k-induction"}};
+  o.max_k = 1;
+  o.quick_bmc_depth = 8;
+  const auto bug = fixtures::saturating_counter(10, 5);  // six cycles of `go`
+  ProverResult r = Portfolio(bug.make, o).run(Limits::within(std::chrono::seconds(30), 40));
+  ASSERT_EQ(r.verdict, Verdict::Falsified) << r.reason;
+  EXPECT_EQ(r.method, "bmc");
+  o.quick_bmc_depth = 0;
+  EXPECT_EQ(Portfolio(bug.make, o).run(Limits::within(std::chrono::seconds(30), 40)).verdict, Verdict::Unknown);
+}
+
 TEST(Portfolio, RejectsAnUnknownEngine) {
   PortfolioOptions o;
   o.engines = {"bmc", "magic"};

@@ -58,6 +58,8 @@ CheckResult sample(double seconds_scale = 1.0) {
   falsified.depth = 4;
   falsified.violation_cycle = 3;
   falsified.scenario_file = "out/req5.stored_holds.scenario.json";
+  falsified.diagram_file = "out/req5.stored_holds.svg";
+  falsified.vcd_file = "out/req5.stored_holds.vcd";
   falsified.timing_table =
       "timing (cycle:value at the first cycle and at each change; cycle n is t = (n-1)*100 ms):\n"
       "  LT_100A           1:0  3:95\n"
@@ -71,6 +73,8 @@ CheckResult sample(double seconds_scale = 1.0) {
   reach.depth = 2;
   reach.violation_cycle = 1;
   reach.scenario_file = "out/req7.effect1_trips.scenario.json";
+  reach.diagram_file = "out/req7.effect1_trips.svg";
+  reach.vcd_file = "out/req7.effect1_trips.vcd";
   reach.timing_table = "timing:\n  effect[1].active  1:0  2:1\n";
   reach.matters = {"effect[1].active"};
   reach.seconds = 0.01 * seconds_scale;
@@ -172,4 +176,41 @@ TEST(CheckPrinters, FormatNames) {
   EXPECT_EQ(cemv::reports::check_format_from_string("sarif"), CheckFormat::Sarif);
   EXPECT_EQ(cemv::reports::check_format_from_string("junit"), CheckFormat::Junit);
   EXPECT_FALSE(cemv::reports::check_format_from_string("xml").has_value());
+}
+
+// `cemv check --out DIR` writes NAME.svg and NAME.vcd beside each scenario:
+// every format names them for the property they belong to, and only there.
+TEST(CheckPrinters, EveryFormatNamesTheDiagramFiles) {
+  const CheckResult r = sample();
+  auto j = nlohmann::json::parse(render(r, CheckFormat::Json));
+  EXPECT_EQ(j["properties"][1]["diagram"], "out/req5.stored_holds.svg");
+  EXPECT_EQ(j["properties"][1]["waveforms"], "out/req5.stored_holds.vcd");
+  EXPECT_EQ(j["properties"][2]["diagram"], "out/req7.effect1_trips.svg");
+  EXPECT_TRUE(j["properties"][0]["diagram"].is_null());
+  EXPECT_TRUE(j["properties"][0]["waveforms"].is_null());
+
+  const std::string junit = render(r, CheckFormat::Junit);
+  for (const char* f : {"diagram: out/req5.stored_holds.svg", "waveforms: out/req5.stored_holds.vcd",
+                        "diagram: out/req7.effect1_trips.svg", "waveforms: out/req7.effect1_trips.vcd"})
+    EXPECT_NE(junit.find(f), std::string::npos) << f;
+
+  auto s = nlohmann::json::parse(render(r, CheckFormat::Sarif));
+  const auto& results = s["runs"][0]["results"];
+  const nlohmann::json* req5 = nullptr;
+  for (const auto& res : results)
+    if (res["properties"]["property"] == "req5.stored_holds") req5 = &res;
+  ASSERT_NE(req5, nullptr);
+  std::string message = (*req5)["message"]["text"];
+  EXPECT_NE(message.find("out/req5.stored_holds.svg"), std::string::npos);
+  EXPECT_NE(message.find("out/req5.stored_holds.vcd"), std::string::npos);
+  std::vector<std::string> uris;
+  for (const auto& a : (*req5)["attachments"]) uris.push_back(a["artifactLocation"]["uri"]);
+  EXPECT_EQ(uris, (std::vector<std::string>{"out/req5.stored_holds.scenario.json", "out/req5.stored_holds.svg",
+                                            "out/req5.stored_holds.vcd"}));
+  // A finding without a run (unknown) has no attachments.
+  for (const auto& res : results) {
+    if (res["properties"]["verdict"] == "unknown") {
+      EXPECT_FALSE(res.contains("attachments"));
+    }
+  }
 }

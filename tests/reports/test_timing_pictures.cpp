@@ -109,6 +109,39 @@ TEST(TimingSvg, LongRunFoldsConstantStretches) {
   golden("timing_long.svg", svg);
 }
 
+// A short run gives a narrow picture: the title, the mark and the legend wrap
+// onto more lines instead of running past its right edge, and no word is lost.
+TEST(TimingSvg, NarrowDiagramWrapsHeaderAndLegendInsideItsWidth) {
+  model::Matrix m = cemv::formats::load_valid_matrix(kExample + "matrix.json", "drawn");
+  std::vector<model::CycleInput> cycles(3, model::default_cycle_input(m));
+  ConcreteTrace t = run(m, cycles);
+  reports::TimingDiagram d;
+  d.title = "Counterexample to req5.stored_holds: effect 1 stays active while any cause of SIF 1 is active, "
+            "also after a reset command from the operator panel";
+  d.shown = {"effect[1].active"};
+  d.marks.push_back({2, "violated: req5.stored_holds_with_a_very_long_property_name_that_has_no_spaces_at_all_x"});
+  const std::string svg = reports::timing_svg(m, t, d);
+  const double width = std::stod(svg.substr(svg.find("width=\"") + 7));
+  EXPECT_LE(width, 700.0);  // narrow: 3 cycles
+  std::string title_text;
+  std::size_t texts = 0;
+  for (auto p = svg.find("<text"); p != std::string::npos; p = svg.find("<text", p + 1)) {
+    const std::string tag = svg.substr(p, svg.find('>', p) - p);
+    if (tag.find("text-anchor") != std::string::npos || tag.find("x=\"10\"") == std::string::npos) continue;
+    const std::size_t from = svg.find('>', p) + 1;
+    std::string content = svg.substr(from, svg.find("</text>", from) - from);
+    double size = tag.find("title") != std::string::npos ? 15 : tag.find("small") != std::string::npos ? 10 : 12;
+    double factor = tag.find("title") != std::string::npos || tag.find("marktext") != std::string::npos ? 0.66 : 0.6;
+    EXPECT_LE(10 + content.size() * size * factor, width) << content;
+    if (tag.find("class=\"title\"") != std::string::npos) title_text += (title_text.empty() ? "" : " ") + content;
+    ++texts;
+  }
+  EXPECT_GT(texts, 6u);
+  EXPECT_EQ(title_text, d.title);
+  EXPECT_GE(count(svg, "class=\"title\""), 2u);  // the title took more than one line
+  EXPECT_NE(svg.find(">Cycle n starts at t = (n-1) x 100 ms;"), std::string::npos);  // the legend is still there
+}
+
 // ---- VCD ------------------------------------------------------------------
 
 // A small reader of what the writer emits: variables with their scope path,
@@ -228,6 +261,35 @@ TEST(Vcd, ReadsBackEveryValueOfTheRun) {
   // A cause's scope also shows its input tags, under the same code.
   EXPECT_EQ(f.code_of[top + "cause_1_LT100_HH.in_LT_100A"], f.code_of[top + "inputs.LT_100A"]);
   golden("scenario1.vcd", text);
+}
+
+// `cemv check --vcd FILE`: several runs in one dump, a scope each, every run
+// from time 0; the shorter one keeps its last values.
+TEST(Vcd, SeveralRunsEachInItsScopeFromTimeZero) {
+  model::Matrix m = cemv::formats::load_valid_matrix(kExample + "matrix.json", "dumped");
+  ConcreteTrace a = scenario_run(m, "scenario-1-overfill-trip.json");
+  std::vector<model::CycleInput> quiet(3, model::default_cycle_input(m));
+  ConcreteTrace b = run(m, quiet);
+  std::string text = reports::vcd_runs(m, {{"req5.stored_holds", &a}, {"req7.reach", &b}}, {"", "test", "two runs"});
+  VcdFile f(text);
+  const std::string top = m.name + ".";
+  model::InputTable table(m);
+  const std::size_t lt = *table.find("LT_100A");
+  const std::string ca = f.code_of[top + "req5_stored_holds.inputs.LT_100A"];
+  const std::string cb = f.code_of[top + "req7_reach.inputs.LT_100A"];
+  ASSERT_FALSE(ca.empty());
+  ASSERT_FALSE(cb.empty());
+  EXPECT_NE(ca, cb);
+  for (std::size_t k = 0; k < a.inputs.size(); ++k) {
+    EXPECT_EQ(std::stof(f.at(ca, k * m.cycle_ms).substr(1)), a.inputs[k].tags[lt].value) << k;
+    const auto& last = b.inputs[std::min(k, b.inputs.size() - 1)].tags[lt];
+    EXPECT_EQ(std::stof(f.at(cb, k * m.cycle_ms).substr(1)), last.value) << k;
+  }
+  EXPECT_NE(text.find("2 runs, each from time 0: req5_stored_holds (" + std::to_string(a.inputs.size()) +
+                      " cycles) req7_reach (3 cycles)"),
+            std::string::npos);
+  // One run alone is the dump of `vcd`, inside its own scope.
+  EXPECT_EQ(count(text, "$enddefinitions"), 1u);
 }
 
 }  // namespace

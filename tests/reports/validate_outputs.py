@@ -110,6 +110,7 @@ PROPERTY_FIELDS = {
     "method": (str, type(None)), "depth": int, "reason": (str, type(None)), "notes": list,
     "elements": list, "support": list, "support_minimal": (bool, type(None)),
     "invariant": (str, type(None)), "scenario": (str, type(None)),
+    "diagram": (str, type(None)), "waveforms": (str, type(None)),
     "violation_cycle": (int, type(None)),
 }
 VERDICTS = ("proved", "falsified", "reachable", "unreachable", "vacuous", "unknown")

@@ -10,8 +10,13 @@
 
 #include <gtest/gtest.h>
 
+#include "checker/engines/portfolio.hpp"
+#include "checker/property_problem.hpp"
+#include "checker/reduce.hpp"
 #include "formats/matrix_json.hpp"
+#include "properties/parser.hpp"
 #include "response/analysis.hpp"
+#include "response/property.hpp"
 #include "response/report.hpp"
 
 namespace {
@@ -129,6 +134,16 @@ TEST(Response, OutputDelayAddsItsCycles) {
   EXPECT_EQ(p.logic.cycles, 5);
   expect_replays(m, dir, p.logic.counterexample);
   expect_not_yet_active(dir, p.logic.counterexample, 1);
+  // After an on-delay: the two delays add up (10 + 20 cycles).
+  auto both = matrix(cause(1, "S1", R"("time": {"mode": "on_delay", "ms": 1000})"),
+                     effect(1, "Y1", R"("output_delay_ms": 2000)"), link(1, 1));
+  auto dir2 = scratch("on_and_output_delay");
+  const auto r2 = analyse(both, dir2);
+  const auto& q = only_path(r2, 1);
+  ASSERT_EQ(q.logic.kind, Figure::Kind::Exact) << q.logic.reason;
+  EXPECT_EQ(q.logic.cycles, 30);
+  expect_replays(both, dir2, q.logic.counterexample);
+  expect_not_yet_active(dir2, q.logic.counterexample, 1);
 }
 
 // I.4: a reference to an element evaluated earlier in the scan reads its
@@ -219,15 +234,71 @@ TEST(Response, MaskedPathIsUnbounded) {
 
 TEST(Response, OverTheProcessSafetyTimeFails) {
   auto m = matrix(cause(1, "S1", R"("time": {"mode": "on_delay", "ms": 5000})"), effect(1, "Y1"), link(1, 1));
-  auto r = analyse(m, scratch("over"));
+  auto dir = scratch("over");
+  auto r = analyse(m, dir);
   const auto& p = only_path(r, 1);
   EXPECT_EQ(*p.total_ms, 5200);
   EXPECT_EQ(*p.margin_ms, -200);
   EXPECT_EQ(p.verdict, Verdict::Over);
   EXPECT_EQ(response::exit_code(r), 1);
+  expect_replays(m, dir, p.logic.counterexample);
+  expect_not_yet_active(dir, p.logic.counterexample, 1);
   std::string json = response::response_report(r, "m.json", response::Format::Json, "");
   EXPECT_NE(json.find("\"schema\": \"cemv-response/1\""), std::string::npos) << json;
   EXPECT_NE(json.find("\"verdict\": \"over\""), std::string::npos) << json;
+}
+
+// 6.5.2: an XooN assignment is one path, triggered by X of its N causes.
+TEST(Response, XooNAssignmentIsOnePathTriggeredByXCauses) {
+  auto m = matrix(cause(1, "S1") + "," + cause(2, "S2") + "," + cause(3, "S3"), effect(1, "Y1"),
+                  R"({"cause": 1, "effect": 1, "type": "N", "xoon": 2}, {"cause": 2, "effect": 1, "type": "N", "xoon": 2},
+                     {"cause": 3, "effect": 1, "type": "N", "xoon": 2})");
+  auto r = analyse(m, scratch("xoon"));
+  ASSERT_EQ(r.paths.size(), 1u);
+  const auto& p = r.paths.front();
+  EXPECT_EQ(p.path.causes, (std::vector<int>{1, 2, 3}));
+  EXPECT_EQ(p.path.needed, 2);
+  EXPECT_EQ(p.path.key(), "c1_2_3.e1");  // a name the property language reads
+  ASSERT_EQ(p.logic.kind, Figure::Kind::Exact) << p.logic.reason;
+  EXPECT_EQ(p.logic.cycles, 0);
+}
+
+// Long delays are not unrolled (docs/response-time.md, "Method"): a 30 min
+// on-delay at 100 ms is exactly 18,000 cycles, proved, and the run one cycle
+// short (17,999 cycles of a held demand) replays on the runtime.
+TEST(Response, ThirtyMinuteOnDelayIsExactWithoutUnrolling) {
+  auto m = matrix(cause(1, "S1", R"("time": {"mode": "on_delay", "ms": 1800000})"), effect(1, "Y1"), link(1, 1));
+  auto dir = scratch("long");
+  const auto r = analyse(m, dir);
+  const auto& p = only_path(r, 1);
+  ASSERT_EQ(p.logic.kind, Figure::Kind::Exact) << p.logic.reason;
+  EXPECT_EQ(p.logic.cycles, 18000);
+  expect_replays(m, dir, p.logic.counterexample);
+  expect_not_yet_active(dir, p.logic.counterexample, 1);
+}
+
+// The proof of a bound does not unroll it: one induction step of the
+// invariant engine, with the monitor-bound candidates of its miner
+// (docs/response-time.md, "Method"), proves an on-delay of 10 cycles then an
+// output delay of 20 at T = 30, and cannot prove T = 29.
+TEST(Response, InvariantEngineProvesTheBoundInOneStep) {
+  auto m = matrix(cause(1, "S1", R"("time": {"mode": "on_delay", "ms": 1000})"),
+                  effect(1, "Y1", R"("output_delay_ms": 2000)"), link(1, 1));
+  const auto path = response::response_paths(m, {}).at(0);
+  for (long long t : {30LL, 29LL}) {
+    auto file = properties::parse_properties(
+        response::response_property_text(m, path, response::Mode::Normal, t, "probe"), m, "probe");
+    z3::context ctx;
+    auto problem = checker::reduce(checker::property_problem(m, file, file.properties.at(0))(ctx));
+    auto r = checker::make_prover("invariants+induction")
+                 ->prove(problem.problem, checker::Limits::within(std::chrono::seconds(120)));
+    if (t == 30) {
+      EXPECT_EQ(r.verdict, checker::Verdict::Proved) << r.reason;
+      EXPECT_LE(r.k, 1);
+    } else {
+      EXPECT_NE(r.verdict, checker::Verdict::Proved);
+    }
+  }
 }
 
 }  // namespace

@@ -1,0 +1,116 @@
+// `cemv import-workbook` and `cemv export-workbook`: the Safety Matrix's six
+// tables as an ODS or XLSX workbook (6.6, docs/workbook.md). After an import
+// into an existing matrix (`--into OLD`), what changed is listed by the
+// structural comparison of cemv diff (6.6.3: the import log's "Matrix
+// comparison", source the spreadsheet, reference the matrix before).
+#include <iostream>
+#include <memory>
+#include <stdexcept>
+
+#include "cli/commands.hpp"
+#include "cli/matrix_input.hpp"
+#include "cli/output.hpp"
+#include "diff/structural.hpp"
+#include "formats/matrix_json.hpp"
+#include "formats/workbook.hpp"
+
+namespace cemv::cli {
+
+namespace {
+
+std::string change_lines(const diff::StructuralDiff& d) {
+  std::string out;
+  std::size_t critical = 0;
+  for (const auto& c : d.changes) {
+    critical += c.critical() ? 1 : 0;
+    out += std::string("  ") + (c.critical() ? "critical     " : "non-critical ") + diff::to_string(c.kind) + " " + c.label();
+    if (c.kind == diff::ChangeKind::Moved)
+      out += " (number " + std::to_string(c.old_id) + " -> " + std::to_string(c.new_id) + ")";
+    out += "\n";
+    for (const auto& f : c.fields)
+      out += "      " + f.field + ": " + (f.old_value.empty() ? "(none)" : f.old_value) + " -> " +
+             (f.new_value.empty() ? "(none)" : f.new_value) + (f.critical ? "" : "  [non-critical]") + "\n";
+  }
+  return std::to_string(d.changes.size()) + " change" + (d.changes.size() == 1 ? "" : "s") + ", " +
+         std::to_string(critical) + " critical\n" + out;
+}
+
+}  // namespace
+
+void add_workbook_commands(CLI::App& app, Context& ctx) {
+  struct ImportOptions {
+    std::string input;
+    std::string output = "-";
+    std::string into;
+  };
+  auto im = std::make_shared<ImportOptions>();
+  auto* imp = app.add_subcommand(
+      "import-workbook",
+      "Read an ODS or XLSX workbook (the six tables of 6.6.2, or a C&E grid on its first sheet) and write a "
+      "cemv-matrix/1 file; warnings on stderr");
+  imp->add_option("FILE", im->input, "Workbook (.ods or .xlsx, told by its content; '-' = standard input)")->required();
+  imp->add_option("-o,--output", im->output, "Write the matrix here instead of stdout");
+  imp->add_option("--into", im->into,
+                  "The matrix before the import (6.6.3): list what the workbook changes in it (the structural "
+                  "comparison of cemv diff)");
+  add_quiet_flag(imp, ctx);
+  imp->callback([im, &ctx] {
+    check_writable(im->output);
+    std::optional<model::Matrix> old;
+    if (!im->into.empty()) old = load_matrix_input(im->into);
+    const std::string name = input_name(im->input);
+    const std::string bytes = read_input(im->input);
+    formats::WorkbookImportResult result;
+    try {
+      result = formats::import_workbook(bytes, name);
+    } catch (const formats::LoadError& e) {
+      throw e.in_file(name);
+    }
+    if (!ctx.quiet) {
+      for (const auto& w : result.warnings) std::cerr << w.message("warning") << "\n";
+      std::cerr << name << ": note: " << result.summary << "\n";
+    }
+    write_output(im->output, formats::to_canonical_json(result.matrix));
+    if (old && !ctx.quiet) {
+      const diff::StructuralDiff d = diff::compare_structure(*old, result.matrix);
+      std::cerr << name << ": note: matrix comparison (6.6.3), source " << name << ", reference " << input_name(im->into)
+                << ": " << (d.empty() ? "no change\n" : change_lines(d));
+    }
+    ctx.exit_code = 0;
+  });
+
+  struct ExportOptions {
+    std::string file;
+    std::string output;
+    std::string format;
+  };
+  auto ex = std::make_shared<ExportOptions>();
+  auto* exp = app.add_subcommand(
+      "export-workbook",
+      "Write a matrix as the six tables of 6.6.2 (matrix properties, alarm profiles, causes configuration, "
+      "intersections overview, effects configuration, legend) in an ODS or XLSX workbook");
+  exp->add_option("MATRIX", ex->file, "Matrix file (cemv-matrix/1; '-' = standard input)")->required();
+  exp->add_option("-o,--output", ex->output, "The workbook: FILE.ods or FILE.xlsx ('-' = stdout, with --format)")
+      ->required();
+  exp->add_option("--format", ex->format, "ods or xlsx (default: from the extension of -o)")
+      ->check(CLI::IsMember({"ods", "xlsx"}));
+  add_quiet_flag(exp, ctx);
+  exp->callback([ex, &ctx] {
+    std::optional<formats::WorkbookFormat> format = formats::workbook_format_of(ex->output);
+    if (!ex->format.empty()) {
+      auto given = ex->format == "ods" ? formats::WorkbookFormat::Ods : formats::WorkbookFormat::Xlsx;
+      if (format && *format != given)
+        throw std::invalid_argument("export-workbook: --format " + ex->format + " contradicts the extension of " + ex->output);
+      format = given;
+    }
+    if (!format)
+      throw std::invalid_argument("export-workbook: -o " + ex->output +
+                                  ": the workbook's name must end in .ods or .xlsx (or give --format)");
+    check_writable(ex->output);
+    const model::Matrix m = load_matrix_input(ex->file);
+    write_output(ex->output, formats::export_workbook(m, *format));
+    ctx.exit_code = 0;
+  });
+}
+
+}  // namespace cemv::cli

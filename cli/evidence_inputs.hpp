@@ -1,0 +1,20 @@
+// What `cemv evidence` reads besides the matrix and the properties: the
+// results of `cemv testgen` (cemv-coverage/1, docs/testgen.md) and of
+// `cemv testgen --mutation-report` (cemv-mutation-report/1, docs/mutation.md).
+// A file made for another version of the matrix (another signature) is
+// refused: the report ties every figure to the one matrix it names.
+#pragma once
+
+#include <string>
+
+#include "model/matrix.hpp"
+#include "reports/evidence.hpp"
+
+namespace cemv::cli {
+
+// Throw formats::LoadError (FILE: error: PATH: what) for unreadable files,
+// wrong formats and other signatures.
+reports::CoverageFigures read_coverage(const std::string& file, const model::Matrix& m);
+reports::MutationFigures read_mutation(const std::string& file, const model::Matrix& m);
+
+}  // namespace cemv::cli

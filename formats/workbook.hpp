@@ -1,0 +1,48 @@
+// Workbooks (6.6, docs/workbook.md): the Safety Matrix's six tables (matrix
+// properties, alarm profiles, causes configuration, intersections overview,
+// effects configuration, legend) as an OpenDocument (`*.ods`) or Office Open
+// XML (`*.xlsx`) spreadsheet, read and written losslessly; and a workbook
+// holding a C&E grid on its first sheet (the LSST table saved from a
+// spreadsheet program), read as import-csv reads the grid.
+//
+// Everything comes from outside: a workbook is read under the limits of
+// docs/workbook.md "Limits" (file, inflated entries, cells, rows, text), every
+// problem is a LoadError placed at FILE:SHEET:ROW:COLUMN.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "formats/diagnostics.hpp"
+#include "model/matrix.hpp"
+
+namespace cemv::formats {
+
+enum class WorkbookFormat { Ods, Xlsx };
+
+// From the file name's extension (.ods / .xlsx, any letter case); nullopt otherwise.
+std::optional<WorkbookFormat> workbook_format_of(std::string_view file_name);
+
+struct WorkbookImportResult {
+  model::Matrix matrix;             // passed the JSON loader's checks (not validate's)
+  std::vector<LoadIssue> warnings;  // in sheet order: rows not imported (6.6.3), ignored tag options, ...
+  std::string summary;              // how the workbook was read
+};
+
+// Reads a workbook from its bytes (no file system access). The format is told
+// by the content (ODS: `mimetype`/`content.xml`, XLSX: the package parts), not
+// the name; `file_name` names the input in messages and, for a grid, gives
+// the matrix its name as for a CSV grid. Throws LoadError.
+WorkbookImportResult import_workbook(std::string_view bytes, const std::string& file_name);
+
+// import_workbook's matrix alone: the entry point of the fuzz target.
+model::Matrix parse_workbook(std::string_view bytes, std::string_view file_name);
+
+// The six tables of the matrix as a workbook file's bytes, deterministic (the
+// same matrix gives the same bytes). Importing them gives back the same
+// canonical JSON and signature.
+std::string export_workbook(const model::Matrix& m, WorkbookFormat format);
+
+}  // namespace cemv::formats

@@ -1,0 +1,111 @@
+// What the checker keeps between problems: Z3 contexts (checker/context_pool)
+// and the runtime traces of a check run (checker/witness_pool).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <stdexcept>
+#include <thread>
+
+#include "checker/context_pool.hpp"
+#include "checker/engines/solving.hpp"
+#include "checker/witness_pool.hpp"
+#include "formats/matrix_json.hpp"
+#include "model/vocabulary.hpp"
+#include "properties/parser.hpp"
+#include "runtime/runtime.hpp"
+
+using namespace cemv;
+using namespace cemv::checker;
+
+namespace {
+
+TEST(ContextPool, HandsOnAReleasedContext) {
+  const z3::context* first = nullptr;
+  {
+    PooledContext a;
+    first = &*a;
+    z3::expr x = (*a).int_const("x");
+    z3::solver s(*a);
+    s.add(x > 1);
+    EXPECT_EQ(s.check(), z3::sat);
+  }
+  PooledContext b;
+  EXPECT_EQ(&*b, first);
+  // Nothing of the first problem is left in it.
+  z3::solver s(*b);
+  EXPECT_EQ(s.assertions().size(), 0u);
+  EXPECT_EQ(s.check(), z3::sat);
+}
+
+TEST(ContextPool, DiscardsAnInterruptedContext) {
+  const z3::context* interrupted = nullptr;
+  {
+    PooledContext a;
+    interrupted = &*a;
+    Limits over = Limits::within(std::chrono::milliseconds(0));
+    Watchdog watchdog(*a, over);  // fires at once: the deadline has passed
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  PooledContext b;
+  EXPECT_NE(&*b, interrupted);
+}
+
+TEST(ContextPool, DiscardsAContextLeftByAnException) {
+  const z3::context* left = nullptr;
+  try {
+    PooledContext a;
+    left = &*a;
+    throw std::runtime_error("mid-way");
+  } catch (const std::runtime_error&) {
+  }
+  PooledContext b;
+  EXPECT_NE(&*b, left);
+}
+
+// The tank example: cause 3 is the emergency stop pushbutton HS-100, a
+// discrete de-energize-to-trip tag: FALSE trips it.
+struct Tank {
+  model::Matrix m = formats::load_matrix(std::filesystem::path(CEMV_SOURCE_DIR) / "examples/tank-overfill/matrix.json");
+  properties::Trace run(const std::vector<model::CycleInput>& inputs) const {
+    runtime::Runtime rt(m);
+    properties::Trace t;
+    for (const auto& in : inputs) {
+      rt.step(in);
+      std::vector<int> observables;
+      rt.snapshot(observables);
+      t.push_back({in, observables});
+    }
+    return t;
+  }
+};
+
+TEST(WitnessPool, AnswersWithATraceThatMeetsTheAntecedent) {
+  Tank tank;
+  auto f = properties::parse_properties(
+      "property p \"\" { always cause[3].active implies effect[1].active }\n"
+      "property q \"\" { assume not cause[3].active\n always cause[3].active implies effect[1].active }\n",
+      tank.m, "<test>");
+  WitnessPool pool;
+  EXPECT_FALSE(pool.witnesses(tank.m, f.properties[0], f.assumptions, true));
+  // At rest: the assumptions hold, the antecedent is not met.
+  std::vector<model::CycleInput> rest(3, model::default_cycle_input(tank.m));
+  pool.add(tank.run(rest));
+  EXPECT_TRUE(pool.witnesses(tank.m, f.properties[0], f.assumptions, false));
+  EXPECT_FALSE(pool.witnesses(tank.m, f.properties[0], f.assumptions, true));
+  // The pushbutton pressed: cause 3 trips.
+  std::vector<model::CycleInput> pressed = rest;
+  const auto button = model::InputTable(tank.m).find("HS_100_ESD");
+  ASSERT_TRUE(button);
+  for (int k = 0; k < 3; ++k) {
+    model::CycleInput in = model::default_cycle_input(tank.m);
+    in.tags[*button].value = 0.0f;
+    pressed.push_back(in);
+  }
+  pool.add(tank.run(pressed));
+  EXPECT_TRUE(pool.witnesses(tank.m, f.properties[0], f.assumptions, true));
+  // Its assumption excludes exactly the cycles that meet the antecedent.
+  EXPECT_FALSE(pool.witnesses(tank.m, f.properties[1], f.assumptions, true));
+  EXPECT_TRUE(pool.witnesses(tank.m, f.properties[1], f.assumptions, false));
+}
+
+}  // namespace
