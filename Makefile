@@ -3,7 +3,7 @@ BUILD  ?= build
 JOBS   ?= $(shell nproc)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps build demo test bench sanitize clean
+.PHONY: all deps build demo test bench sanitize fuzz clean
 
 all: build
 
@@ -31,5 +31,18 @@ sanitize: deps
 	cmake --build build-sanitize -j $(JOBS)
 	cd build-sanitize && ctest --output-on-failure -j $(JOBS)
 
+# The libFuzzer targets of the importers (docs/fuzzing.md): clang-14 with ASan
+# and UBSan in their own build dir, then each target for FUZZ_SECONDS (default
+# 600) over its corpus in fuzz/corpus/, new inputs in build-fuzz/scratch/,
+# findings in build-fuzz/findings/. `make fuzz FUZZ_SECONDS=60` for a short run;
+# FUZZ_TARGETS="csv scenario" for some of them.
+FUZZ_SECONDS ?= 600
+FUZZ_TARGETS ?=
+fuzz:
+	@scripts/install-deps fuzz
+	cmake -S . -B build-fuzz -DCEMV_FUZZ=ON -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCEMV_BENCH=OFF
+	cmake --build build-fuzz -j $(JOBS) --target fuzz_targets
+	FUZZ_BUILD=build-fuzz FUZZ_SECONDS=$(FUZZ_SECONDS) fuzz/run.sh $(FUZZ_TARGETS)
+
 clean:
-	rm -rf $(BUILD) build-sanitize
+	rm -rf $(BUILD) build-sanitize build-fuzz

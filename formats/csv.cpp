@@ -605,7 +605,10 @@ class RecordImporter {
   template <typename Element, typename Get>
   void attach(std::map<int, std::vector<PendingTag>>& pending, std::vector<Element>& elements,
               const char* kind, Get get) {
-    for (auto& [owner, tags] : pending) {
+    for (auto& entry : pending) {
+      // Not a structured binding: clang before 16 cannot capture one in a lambda.
+      const int owner = entry.first;
+      auto& tags = entry.second;
       auto it = std::find_if(elements.begin(), elements.end(),
                              [&](const Element& e) { return e.id == owner; });
       if (it == elements.end()) {

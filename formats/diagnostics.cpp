@@ -10,6 +10,8 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <iterator>
+#include <utility>
 
 #include "model/text.hpp"
 
@@ -43,6 +45,24 @@ std::pair<std::size_t, std::size_t> line_and_column(std::string_view text, std::
 
 std::string line_column(std::string_view text, std::size_t index) {
   auto [line, column] = line_and_column(text, index);
+  return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
+LineIndex::LineIndex(std::string_view text) : size_(text.size()) {
+  for (std::size_t k = text.find('\n'); k != std::string_view::npos; k = text.find('\n', k + 1))
+    breaks_.push_back(k);
+}
+
+std::pair<std::size_t, std::size_t> LineIndex::line_and_column(std::size_t index) const {
+  index = std::min(index, size_);
+  auto before = std::lower_bound(breaks_.begin(), breaks_.end(), index);  // the breaks before index
+  std::size_t line = 1 + static_cast<std::size_t>(before - breaks_.begin());
+  std::size_t column = before == breaks_.begin() ? index + 1 : index - *std::prev(before);
+  return {line, column};
+}
+
+std::string LineIndex::line_column(std::size_t index) const {
+  auto [line, column] = line_and_column(index);
   return "line " + std::to_string(line) + ", column " + std::to_string(column);
 }
 
@@ -234,12 +254,25 @@ bool prescan(std::string_view text, std::vector<LoadIssue>& issues, const JsonLi
   };
   std::vector<Level> levels;
   const std::size_t n = text.size();
+  // Issues are placed through one LineIndex: a file of many bad numbers has
+  // an issue each, and counting the lines before each one was quadratic.
+  std::optional<LineIndex> lines;
+  auto place = [&](std::size_t index) {
+    if (!lines) lines.emplace(text);
+    return lines->line_column(index);
+  };
+  // Beyond kMaxIssues such a file is clearly not what it should be (as in the loaders).
+  auto too_many = [&] {
+    if (issues.size() < kMaxIssues) return false;
+    issues.push_back({"", "too many problems; the rest are not listed"});
+    return true;
+  };
   // JSON is UTF-8 text (RFC 8259 section 8.1): say where it is not, in words
   // of our own, before the parser does in its own.
   if (std::size_t bad = first_invalid_utf8(text); bad != std::string_view::npos) {
     char hex[8];
     std::snprintf(hex, sizeof hex, "0x%02X", static_cast<unsigned char>(text[bad]));
-    issues.push_back({line_column(text, bad), std::string("invalid UTF-8: byte ") + hex +
+    issues.push_back({place(bad), std::string("invalid UTF-8: byte ") + hex +
                                                   " does not belong here (a " + document +
                                                   " is UTF-8 text; save it as UTF-8)"});
     return false;
@@ -251,7 +284,7 @@ bool prescan(std::string_view text, std::vector<LoadIssue>& issues, const JsonLi
         if (text[i] == '\\') ++i;
     } else if (c == '{' || c == '[') {
       if (levels.size() == static_cast<std::size_t>(kMaxJsonDepth)) {
-        issues.push_back({line_column(text, i), "JSON nesting deeper than " + std::to_string(kMaxJsonDepth) +
+        issues.push_back({place(i), "JSON nesting deeper than " + std::to_string(kMaxJsonDepth) +
                                                     " levels (a " + document + " needs " +
                                                     std::to_string(limits.depth_needed) + ")"});
         return false;
@@ -261,7 +294,7 @@ bool prescan(std::string_view text, std::vector<LoadIssue>& issues, const JsonLi
       if (!levels.empty()) levels.pop_back();
     } else if (c == ',') {
       if (!levels.empty() && levels.back().object && ++levels.back().members > limits.max_members) {
-        issues.push_back({line_column(text, i), "object with more than " + std::to_string(limits.max_members) +
+        issues.push_back({place(i), "object with more than " + std::to_string(limits.max_members) +
                                                     " members (no object of a " + document +
                                                     " has that many)"});
         return false;
@@ -280,7 +313,8 @@ bool prescan(std::string_view text, std::vector<LoadIssue>& issues, const JsonLi
         double v = std::strtod(token.c_str(), nullptr);
         if (errno == ERANGE && std::isinf(v)) {
           ok = false;
-          issues.push_back({line_column(text, i), "number " + in_quotes(token) +
+          if (too_many()) return false;
+          issues.push_back({place(i), "number " + in_quotes(token) +
                                                       " is out of range (overflows a double)"});
         }
       }
@@ -293,7 +327,8 @@ bool prescan(std::string_view text, std::vector<LoadIssue>& issues, const JsonLi
       for (auto& ch : lower) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
       if (lower == "nan" || lower == "inf" || lower == "infinity") {
         ok = false;
-        issues.push_back({line_column(text, i), in_quotes(word) +
+        if (too_many()) return false;
+        issues.push_back({place(i), in_quotes(word) +
                                                     " is not a JSON number (JSON has no NaN or Infinity)"});
       }
       i = end - 1;

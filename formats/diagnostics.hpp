@@ -107,6 +107,20 @@ std::pair<std::size_t, std::size_t> line_and_column(std::string_view text, std::
 // "line L, column C": 1-based line and column (in bytes) of a 0-based byte index.
 std::string line_column(std::string_view text, std::size_t index);
 
+// The same for many indexes of one text: the line breaks are found once, each
+// index is then placed by binary search (line_and_column counts from the start
+// every time, which is quadratic over the issues of a large file).
+class LineIndex {
+ public:
+  explicit LineIndex(std::string_view text);
+  std::pair<std::size_t, std::size_t> line_and_column(std::size_t index) const;
+  std::string line_column(std::size_t index) const;
+
+ private:
+  std::size_t size_;
+  std::vector<std::size_t> breaks_;  // offsets of '\n', ascending
+};
+
 // Reads a whole file with the size guard (also for pipes and devices, which
 // have no size to check first); refuses directories. Throws LoadError.
 std::string read_text_file(const std::filesystem::path& file);

@@ -221,13 +221,19 @@ std::optional<std::size_t> JsonPositions::find_enclosing(std::string path, bool 
 
 void locate_issues(std::string_view text, const std::string& file, std::vector<LoadIssue>& issues) {
   std::optional<JsonPositions> positions;
+  // A loader may report an issue per element of a large file: the line breaks
+  // are found once (placing each issue by counting them again was quadratic).
+  std::optional<LineIndex> lines;
   for (auto& i : issues) {
     if (i.file.empty()) i.file = file;
     if (i.line > 0 || !is_path(i.where, i.file)) continue;
-    if (!positions) positions.emplace(text);
+    if (!positions) {
+      positions.emplace(text);
+      lines.emplace(text);
+    }
     bool repeated = i.what.rfind("duplicate key", 0) == 0;
     if (auto at = positions->find_enclosing(i.where, repeated)) {
-      auto [line, column] = line_and_column(text, *at);
+      auto [line, column] = lines->line_and_column(*at);
       i.line = line;
       i.column = column;
     }

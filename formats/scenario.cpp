@@ -226,8 +226,9 @@ class Parser {
       tags_seen_.insert(tag_key(name));
       if (!idx) {
         std::string hint = did_you_mean(name, input_names_);
-        bool is_output = std::any_of(outputs_.begin(), outputs_.end(), [&](const OutputRef& o) {
-          return tag_key(o.name) == tag_key(name);
+        // The key by value: clang before 16 cannot capture a structured binding.
+        bool is_output = std::any_of(outputs_.begin(), outputs_.end(), [&, key = tag_key(name)](const OutputRef& o) {
+          return tag_key(o.name) == key;
         });
         if (is_output)
           error(path, in_quotes(name) +

@@ -37,6 +37,17 @@ foreach(_kind big deep devzero)
                 COMMAND bash ${_malformed_dir}/generated.sh ${_kind} $<TARGET_FILE:cemv>)
 endforeach()
 
+# Found by fuzzing (docs/fuzzing.md): a file of many issues, each placed by
+# counting the line breaks before it, took minutes; now well under a second.
+# The timeout is the regression check (not a performance target).
+cemv_cli_test(NAME cli_fmt_generated_many_nan EXIT 2
+              MATCH "many-nan.json:2:1: error: 'NaN' is not a JSON number"
+              COMMAND bash ${_malformed_dir}/generated.sh many-nan $<TARGET_FILE:cemv>)
+cemv_cli_test(NAME cli_simulate_generated_many_issues EXIT 2
+              MATCH "many-issues.json:3:2: error: steps\\[1\\]\\.inputs: unknown tag 'NO_SUCH_TAG'"
+              COMMAND bash ${_malformed_dir}/generated.sh many-issues $<TARGET_FILE:cemv>)
+set_tests_properties(cli_fmt_generated_many_nan cli_simulate_generated_many_issues PROPERTIES TIMEOUT 120)
+
 cemv_cli_test(NAME cli_signature_malformed EXIT 2
               MATCH "^tests/formats/malformed/unknown-key-cause\\.json:13:7: error: causes\\[0\\]\\.bypas_tag: unknown key"
               COMMAND $<TARGET_FILE:cemv> signature tests/formats/malformed/unknown-key-cause.json)

@@ -93,6 +93,32 @@ TEST(Quoting, ControlBytesAreEscapedInEveryFormat) {
   }
 }
 
+// Found by fuzzing (docs/fuzzing.md): issues were placed by counting the line
+// breaks before each one, quadratic in a file of many issues. LineIndex places
+// them in one pass and must agree with line_and_column everywhere.
+TEST(LineIndex, AgreesWithLineAndColumn) {
+  const std::string text = "a\nbc\n\n{\n  \"x\": 1\n}";
+  LineIndex lines(text);
+  for (std::size_t i = 0; i <= text.size() + 2; ++i) {
+    EXPECT_EQ(lines.line_and_column(i), line_and_column(text, i)) << "index " << i;
+    EXPECT_EQ(lines.line_column(i), line_column(text, i)) << "index " << i;
+  }
+  LineIndex empty("");
+  EXPECT_EQ(empty.line_and_column(0), (std::pair<std::size_t, std::size_t>{1, 1}));
+}
+
+// The guarded parse lists at most kMaxIssues bad numbers, then says it stopped.
+TEST(GuardedJson, StopsListingBadNumbersAfterTheLimit) {
+  std::string text = "[";
+  for (int i = 0; i < 500; ++i) text += i == 0 ? "NaN" : ",\nNaN";
+  text += "]";
+  std::vector<LoadIssue> issues;
+  EXPECT_FALSE(parse_guarded_json(text, "many.json", issues));
+  ASSERT_EQ(issues.size(), kMaxIssues + 1);
+  EXPECT_EQ(issues[1].line, 2u);
+  EXPECT_EQ(issues.back().what, "too many problems; the rest are not listed");
+}
+
 TEST(ScenarioMatrixKey, ResolvedAgainstTheScenarioFolder) {
   auto p = scenario_matrix_path(kScenarios / "rejects" / "typo_tag.json");
   ASSERT_TRUE(p.has_value());
