@@ -21,6 +21,7 @@
 #include "properties/evaluator.hpp"
 #include "properties/monitor.hpp"
 #include "properties/parser.hpp"
+#include "testgen/explore.hpp"
 #include "testgen/scenario_writer.hpp"
 #include "testgen/search.hpp"
 #include "testgen/testgen.hpp"
@@ -72,6 +73,7 @@ class GroupRun {
         throw checker::InternalError("the runtime does not reproduce the witness of objective " +
                                      results_[i].objective.id);
       }
+      if (simulate(i, g)) continue;
       SearchResult proof = search_.prove_unreachable(g);
       ObjectiveResult& res = results_[i];
       if (proof.kind == SearchResult::Kind::Infeasible) {
@@ -131,6 +133,57 @@ class GroupRun {
     if (!adopt(d, std::move(all), i, r.method)) return false;
     d.roots = eg.roots;
     return true;
+  }
+
+  // BMC did not reach the objective within its budget: seeded random runs on
+  // the runtime look for a witness, first continuing the open test, then
+  // from start-up (testgen/explore.hpp); BMC then finds the run's last
+  // cycles from the state a few cycles before its witness, shortest first.
+  bool simulate(std::size_t i, const Goal& g) {
+    std::uint64_t seed = 1469598103934665603ULL;  // FNV-1a of the objective id: fixed runs
+    for (char c : results_[i].objective.id) seed = (seed ^ static_cast<unsigned char>(c)) * 1099511628211ULL;
+    if (open_ && drafts_.back().inputs.size() < options_.max_test_cycles) {
+      Draft& d = drafts_.back();
+      SearchResult r = detail::explore(m_, g, d.inputs, seed);
+      if (r.kind == SearchResult::Kind::Found) {
+        for (auto& [cycles, method] : completions(g, d.inputs, r)) {
+          std::vector<model::CycleInput> all = d.inputs;
+          all.insert(all.end(), cycles.begin(), cycles.end());
+          if (adopt(d, std::move(all), i, method)) return true;
+        }
+      }
+    }
+    SearchResult r = detail::explore(m_, g, {}, seed + 1);
+    if (r.kind != SearchResult::Kind::Found) return false;
+    for (auto& [cycles, method] : completions(g, {}, r)) {
+      SearchResult s;
+      s.kind = SearchResult::Kind::Found;
+      s.cycles = std::move(cycles);
+      s.method = method;
+      if (start(i, g, s)) return true;
+    }
+    return false;
+  }
+
+  // The simulated run with its last cycles found again by BMC from the state
+  // shortly before the witness, then the simulated run itself.
+  std::vector<std::pair<std::vector<model::CycleInput>, std::string>> completions(
+      const Goal& g, const std::vector<model::CycleInput>& prefix, const SearchResult& r) {
+    constexpr std::size_t kTail = 3;
+    std::vector<std::pair<std::vector<model::CycleInput>, std::string>> out;
+    const std::size_t keep = r.cycles.size() > kTail ? r.cycles.size() - kTail : 0;
+    if (!prefix.empty() || keep > 0) {
+      std::vector<model::CycleInput> head = prefix;
+      head.insert(head.end(), r.cycles.begin(), r.cycles.begin() + static_cast<long>(keep));
+      SearchResult b = search_.find(g, head, options_.objective_budget_s / 4);
+      if (b.kind == SearchResult::Kind::Found) {
+        std::vector<model::CycleInput> cycles(r.cycles.begin(), r.cycles.begin() + static_cast<long>(keep));
+        cycles.insert(cycles.end(), b.cycles.begin(), b.cycles.end());
+        out.push_back({std::move(cycles), "simulation+" + b.method});
+      }
+    }
+    out.push_back({r.cycles, "simulation"});
+    return out;
   }
 
   bool start(std::size_t i, const Goal& g, const SearchResult& r) {

@@ -174,9 +174,17 @@ void effect_objectives(ObjectiveBuilder& b, const Effect& e) {
           node, sif, odr + " and " + held(act, d - 1) + " and not " + held(act, d), d + 2, {odr, act});
     b.add(id + ".delay.expiry", "output-delay", "Output delay (" + dur + ") of " + label(e) + ": expiry cycle", node, sif,
           "prev(" + odr + ") and not " + odr + " and " + act, d + 3, {odr, act});
+    // Restarted, not resumed: a bypass interrupts the running delay, and one
+    // cycle before the full duration has run again since the bypass ended,
+    // the outputs still wait (E.7 "any interruption ... restarts it").
     if (e.bypass_tag || e.soft_bypass_allowed)
-      b.add(id + ".delay.restart", "output-delay", "Output delay of " + label(e) + " restarted after a bypass", node, sif,
-            "rose(" + odr + ") and prev(" + ek(e, "bypassed") + ")", 3, {odr, ek(e, "bypassed")});
+      b.add(id + ".delay.restart", "output-delay",
+            "Output delay (" + dur + ") of " + label(e) + " restarted by a bypass that interrupted it: one cycle "
+            "before expiry, counted from the end of the bypass",
+            node, sif,
+            odr + " and " + held(act, d - 1) + " and not " + held(act, d) + " and within(" + ek(e, "bypassed") +
+                " and prev(" + odr + "), " + std::to_string(2 * d + 4) + " cycles)",
+            2 * d + 4, {odr, act, ek(e, "bypassed")});
   }
   // Bypass (E.1, E.6).
   if (e.bypass_tag)

@@ -6,8 +6,12 @@
 
 #include <gtest/gtest.h>
 
+#include "checker/replay.hpp"
 #include "formats/matrix_json.hpp"
+#include "properties/evaluator.hpp"
+#include "properties/monitor.hpp"
 #include "properties/parser.hpp"
+#include "testgen/explore.hpp"
 #include "testgen/checklist.hpp"
 #include "testgen/testgen.hpp"
 
@@ -73,6 +77,33 @@ TEST(Generate, TankLowLevelGroupCoveredAndGreen) {
   for (auto& c : mutant.causes)
     if (c.id == 4) c.analog->limit += 1.0f;
   EXPECT_FALSE(testgen::replay_suite(mutant, s).all_passed());
+}
+
+// Seeded random runs on the runtime find what BMC's budget does not reach
+// on a loaded machine: one cycle before a 100-cycle output delay expires,
+// behind a 2oo3 analog cause with an on-delay (pipeline-hipps effect 3), and
+// after a bypass restarted it (compressor effect 2). The runtime and the
+// concrete evaluator confirm the witness in the run's last cycle.
+TEST(Explore, FindsLongDelayWitnesses) {
+  for (const auto& [name, id] : {std::pair{"pipeline-hipps", "effect.3.delay.before"},
+                                 std::pair{"compressor", "effect.2.delay.restart"}}) {
+    model::Matrix m = example(name);
+    std::vector<testgen::Objective> objs;
+    for (auto& o : testgen::derive_objectives(m))
+      if (o.id == id) objs.push_back(o);
+    ASSERT_EQ(objs.size(), 1u) << id;
+    const auto file = properties::parse_properties(testgen::objectives_file_text(objs), m, "objectives");
+    const auto& p = file.properties[0];
+    testgen::detail::Goal g{&file, &p, properties::property_roots(p, file.assumptions, m), objs[0].horizon};
+    const auto r = testgen::detail::explore(m, g, {}, 42);
+    ASSERT_EQ(r.kind, testgen::detail::SearchResult::Kind::Found) << id << ": " << r.reason;
+    const auto t = checker::run_on_runtime(m, r.cycles);
+    properties::Trace trace;
+    for (std::size_t k = 0; k < t.inputs.size(); ++k) trace.push_back({t.inputs[k], t.observables[k]});
+    const auto e = properties::Evaluator(m).evaluate(p, file.assumptions, trace);
+    ASSERT_TRUE(e.holds && e.cycle) << id;
+    EXPECT_EQ(*e.cycle + 1, r.cycles.size()) << id;
+  }
 }
 
 TEST(Replay, ReportsLoadErrorsAsFailedTests) {
