@@ -123,7 +123,9 @@ void tag_objectives(ObjectiveBuilder& b, const Cause& c, const std::string& id, 
     const std::string healthy = "not (" + tripped(c, i) + ")";
     std::string others;
     for (std::size_t j = 0; j < n; ++j)
-      if (j != i) others += " and good(" + tag_atom(c.tags[j].name) + ") and not (" + tripped(c, j) + ")";
+      if (j != i)  // a reference always has good quality (I.3): the language has no quality for it
+        others += (is_ref(c.tags[j].name) ? std::string() : " and good(" + tag_atom(c.tags[j].name) + ")") +
+                  " and not (" + tripped(c, j) + ")";
     switch (c.bad_quality) {
       case model::BadQuality::Trip:
         b.add(ti + ".bad_quality", "bad-quality",

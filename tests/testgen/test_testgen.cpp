@@ -14,6 +14,7 @@
 #include "testgen/explore.hpp"
 #include "testgen/checklist.hpp"
 #include "testgen/testgen.hpp"
+#include "tests/support/random_matrix.hpp"
 
 namespace {
 
@@ -35,6 +36,20 @@ TEST(Objectives, EveryExampleParsesWithUniqueIds) {
     auto file = properties::parse_properties(testgen::objectives_file_text(objs), m, "objectives");
     EXPECT_EQ(file.properties.size(), objs.size()) << name;
   }
+}
+
+// Generated matrices with every option (internal references among the tags
+// of a cause included, which have no quality of their own) give objectives
+// that parse: the catalogue of the 128 x 128 benchmark matrix too.
+TEST(Objectives, RandomMatricesParse) {
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    const model::Matrix m = testsupport::random_matrix(seed);
+    const auto objs = testgen::derive_objectives(m);
+    EXPECT_NO_THROW(properties::parse_properties(testgen::objectives_file_text(objs), m, "objectives")) << seed;
+  }
+  const model::Matrix big = testsupport::big_matrix(1);
+  EXPECT_NO_THROW(properties::parse_properties(testgen::objectives_file_text(testgen::derive_objectives(big)), big,
+                                               "objectives"));
 }
 
 TEST(Objectives, CatalogueNamesTheIssueKinds) {
