@@ -409,10 +409,12 @@ class Decider {
     };
     constexpr int kRuns = 300;
     constexpr std::size_t kSegments = 10;
-    for (int r = 0; r < kRuns && Clock::now() < deadline_; ++r) {
-      // Every eighth run may hold an input for hours of cycles (a soft
-      // bypass timeout moved by a second); the others stay short.
-      Run run = gen.next(kSegments, r % 8 == 7 ? 1000000 : 5000);
+    // At most a third of the group's time: a proof still gets the rest.
+    const Clock::time_point stop = std::min(deadline_, Clock::now() + o_.timeout / 3);
+    for (int r = 0; r < kRuns && Clock::now() < stop; ++r) {
+      // Every sixteenth run may hold an input for hours of cycles (a soft
+      // bypass timeout of 8 h moved by a second); the others stay short.
+      Run run = gen.next(kSegments, r % 16 == 15 ? 400000 : 5000);
       if (differs(run) < 0) continue;
       run = minimise_run(std::move(run), differs);
       const long c = differs(run);

@@ -80,6 +80,11 @@ SearchResult explore(const model::Matrix& m, const Goal& g, const std::vector<mo
   // Long enough for the objective's timers, not for hours of soft bypass
   // (accelerated BMC's macro steps reach those).
   const std::size_t max_cycles = std::max<std::size_t>(400, 4 * static_cast<std::size_t>(std::max(0, g.horizon)));
+  // Each run replays the prefix first: a long test gets fewer runs, so that
+  // one objective costs at most ~1,000,000 simulated cycles.
+  const std::size_t per_run = prefix.size() + max_cycles;
+  runs = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(std::max(0, runs)),
+                                                std::max<std::size_t>(20, 1000000 / per_run)));
   for (int r = 0; r < runs; ++r) {
     checker::Run run = gen.next(segments, max_cycles);
     if (judge.witness(run) < 0) continue;

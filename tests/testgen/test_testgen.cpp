@@ -97,11 +97,11 @@ TEST(Generate, TankLowLevelGroupCoveredAndGreen) {
 // Seeded random runs on the runtime find what BMC's budget does not reach
 // on a loaded machine: one cycle before a 100-cycle output delay expires,
 // behind a 2oo3 analog cause with an on-delay (pipeline-hipps effect 3), and
-// after a bypass restarted it (compressor effect 2). The runtime and the
+// an S latch that holds after a 5 s pulse ends (cause 6). The runtime and the
 // concrete evaluator confirm the witness in the run's last cycle.
 TEST(Explore, FindsLongDelayWitnesses) {
   for (const auto& [name, id] : {std::pair{"pipeline-hipps", "effect.3.delay.before"},
-                                 std::pair{"compressor", "effect.2.delay.restart"}}) {
+                                 std::pair{"pipeline-hipps", "intersection.c6.e1.latched"}}) {
     model::Matrix m = example(name);
     std::vector<testgen::Objective> objs;
     for (auto& o : testgen::derive_objectives(m))
