@@ -90,8 +90,33 @@ class GroupRun {
   }
 
  private:
-  // Replays `inputs` and marks what they witness; false when `target` is not witnessed.
+  // A long witness of accelerated BMC holds its inputs through each macro
+  // step, operator commands included: the same command issued in every cycle
+  // of a stretch, one checklist step per cycle. The run without the repeats
+  // is adopted when it still witnesses the objective.
   bool adopt(Draft& d, std::vector<model::CycleInput> inputs, std::size_t target, const std::string& method) {
+    std::vector<model::CycleInput> once = inputs;
+    bool changed = false;
+    for (std::size_t k = once.size(); k-- > 1;) {
+      if (once[k].commands.empty() || !same_commands(inputs[k].commands, inputs[k - 1].commands)) continue;
+      once[k].commands.clear();
+      changed = true;
+    }
+    if (changed && adopt_run(d, std::move(once), target, method)) return true;
+    return adopt_run(d, std::move(inputs), target, method);
+  }
+
+  static bool same_commands(const std::vector<model::Command>& a, const std::vector<model::Command>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+      if (a[i].op != b[i].op || a[i].cause != b[i].cause || a[i].effect != b[i].effect || a[i].tag != b[i].tag ||
+          a[i].group != b[i].group || a[i].on != b[i].on || a[i].tag_name != b[i].tag_name || a[i].value != b[i].value)
+        return false;
+    return true;
+  }
+
+  // Replays `inputs` and marks what they witness; false when `target` is not witnessed.
+  bool adopt_run(Draft& d, std::vector<model::CycleInput> inputs, std::size_t target, const std::string& method) {
     checker::ConcreteTrace t = checker::run_on_runtime(m_, inputs);
     properties::Trace trace;
     trace.reserve(t.inputs.size());
