@@ -11,11 +11,13 @@
 #include "checker/check/recheck.hpp"
 #include "checker/engines/portfolio.hpp"
 #include "checker/engines/relational.hpp"
+#include "checker/random_runs.hpp"
 #include "checker/replay.hpp"
 #include "checker/shrink.hpp"
 #include "encoder/product.hpp"
 #include "formats/matrix_json.hpp"
 #include "model/graph.hpp"
+#include "runtime/runtime.hpp"
 
 namespace cemv::checker {
 
@@ -232,6 +234,7 @@ class Decider {
       out.method = "identical cone";
       return;
     }
+    if (falsify(ra, rb, out)) return;
     std::vector<std::string> keys;
     for (const auto& k : keys_) keys.push_back(k.key);
     ProverResult r;
@@ -357,6 +360,90 @@ class Decider {
     out.method = "interface";
     if (!only_a.empty()) out.reason = "only in the first matrix: " + only_a;
     if (!only_b.empty()) out.reason += std::string(out.reason.empty() ? "" : "; ") + "only in the second matrix: " + only_b;
+    return false;
+  }
+
+  // Seeded random runs of both reference runtimes side by side, on one plant
+  // (every tag both read takes one value) and the same operator: a mutant
+  // that differs mostly does so on a run of a few segments, found long before
+  // a solver has unrolled the analog arithmetic or a long timer
+  // (checker/random_runs.hpp). The inputs vary over both cones, held for the
+  // durations of both matrices. A run found is a real run of both runtimes;
+  // only what the runs cannot separate goes to the provers.
+  bool falsify(const std::vector<Node>& ra, const std::vector<Node>& rb, GroupEquivalence& out) {
+    if (keys_.empty()) return false;
+    std::vector<std::string> tags;
+    std::vector<model::Command> commands;
+    {
+      z3::context ctx;
+      for (const auto& [m, roots] : {std::make_pair(&a_, &ra), std::make_pair(&b_, &rb)}) {
+        std::shared_ptr<encoder::Encoding> enc = encoder::encode(ctx, *m, *roots);
+        for (std::size_t i = 0; i < enc->tag_value.size(); ++i)
+          if (enc->tag_value[i] || enc->tag_bad[i]) tags.push_back(enc->inputs.tags()[i].name);
+        for (const auto& c : enc->commands) commands.push_back(c.command());
+      }
+    }
+    RunSpace space = run_space(a_, &b_, tags, commands);
+    if (commands.empty()) space.commands.clear();  // no command reaches the cones
+    RandomRuns gen(std::move(space), 0x5eedULL);
+    const model::CycleInput start_a = model::default_cycle_input(a_);
+    model::CycleInput start_b = model::default_cycle_input(b_);
+    {
+      const model::InputTable ta(a_), tb(b_);
+      for (std::size_t i = 0; i < tb.size(); ++i)
+        if (auto j = ta.find(tb.tags()[i].name)) start_b.tags[i] = start_a.tags[*j];
+    }
+    auto differs = [&](const Run& run) -> long {
+      const auto in_a = expand(a_, run, start_a), in_b = expand(b_, run, start_b);
+      runtime::Runtime x(a_), y(b_);
+      std::vector<int> oa, ob;
+      for (std::size_t c = 0; c < in_a.size(); ++c) {
+        x.step(in_a[c]);
+        y.step(in_b[c]);
+        x.snapshot(oa);
+        y.snapshot(ob);
+        for (const auto& k : keys_)
+          if (oa[k.index_a] != ob[k.index_b]) return static_cast<long>(c);
+      }
+      return -1;
+    };
+    constexpr int kRuns = 300;
+    constexpr std::size_t kSegments = 10;
+    // At most a third of the group's time: a proof still gets the rest.
+    const Clock::time_point stop = std::min(deadline_, Clock::now() + o_.timeout / 3);
+    for (int r = 0; r < kRuns && Clock::now() < stop; ++r) {
+      // Every sixteenth run may hold an input for hours of cycles (a soft
+      // bypass timeout of 8 h moved by a second); the others stay short.
+      Run run = gen.next(kSegments, r % 16 == 15 ? 400000 : 5000);
+      if (differs(run) < 0) continue;
+      run = minimise_run(std::move(run), differs);
+      const long c = differs(run);
+      if (c < 0) return false;
+      ConcreteTrace ta = run_on_runtime(a_, expand(a_, run, start_a));
+      ConcreteTrace tb = run_on_runtime(b_, expand(b_, run, start_b));
+      const std::size_t cycle = static_cast<std::size_t>(c);
+      for (const auto& k : keys_) {
+        const int va = ta.observables[cycle][k.index_a], vb = tb.observables[cycle][k.index_b];
+        if (va == vb) continue;
+        Distinction d;
+        d.key = k.key;
+        d.type = k.type;
+        d.cycle = static_cast<int>(cycle);
+        d.value_a = va;
+        d.value_b = vb;
+        ta.inputs.resize(cycle + 1);
+        ta.observables.resize(cycle + 1);
+        tb.inputs.resize(cycle + 1);
+        tb.observables.resize(cycle + 1);
+        d.run_a = std::move(ta);
+        d.run_b = std::move(tb);
+        out.verdict = EquivalenceVerdict::Differs;
+        out.method = "simulation";
+        out.distinction = std::move(d);
+        return true;
+      }
+      throw InternalError("equivalence of " + g_.name + ": a simulated run differs once and not when replayed");
+    }
     return false;
   }
 

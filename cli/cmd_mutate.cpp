@@ -1,13 +1,20 @@
-// `cemv mutate MATRIX --out DIR [--equivalence] [--timeout S]`: every
+// `cemv mutate MATRIX --out DIR [--equivalence] [--timeout S] [--suite DIR]`: every
 // single-point mutant of a matrix as a cemv-matrix/1 file, with an index
 // (cemv-mutants/1, docs/mutation.md); with --equivalence, each mutant decided
 // equivalent or not on the product of the two transition systems, and a
 // distinguishing scenario written for each one that is not.
+// With --suite, the mutation adequacy report of an acceptance suite already
+// written (`cemv testgen`'s folder, every *.scenario.json in it), as
+// `cemv testgen --mutation-report` gives it for a suite it generates.
 // Exit 0; with --equivalence 3 when a mutant stays undecided; 2 invalid
-// input; 4 internal error (a distinguishing run the runtimes do not replay).
+// input; 4 internal error (a distinguishing run the runtimes do not replay);
+// with --suite 1 when a non-equivalent mutant survives the suite.
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <sstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -21,6 +28,9 @@
 #include "cli/scenario_defaults.hpp"
 #include "formats/matrix_json.hpp"
 #include "mutate/mutants.hpp"
+#ifdef CEMV_WITH_TESTGEN
+#include "testgen/testgen.hpp"
+#endif
 
 namespace cemv::cli {
 
@@ -35,6 +45,7 @@ struct MutateArgs {
   double timeout_s = 60.0;
   bool list_operators = false;
   bool quiet = false;
+  std::string suite_dir;
 };
 
 // The distinguishing run as a scenario of the original matrix that expects
@@ -61,6 +72,32 @@ int run_mutate(const MutateArgs& a) {
   const model::Matrix m = load_valid_matrix(a.matrix_file, "mutated");
   check_writable_directory(a.out_dir);
   const std::filesystem::path dir(a.out_dir);
+  if (!a.suite_dir.empty()) {
+#ifdef CEMV_WITH_TESTGEN
+    testgen::TestSuite suite;
+    std::vector<std::filesystem::path> files;
+    std::error_code ec;
+    for (const auto& e : std::filesystem::directory_iterator(a.suite_dir, ec)) {
+      const std::string name = e.path().filename().string();
+      if (name.size() > 14 && name.ends_with(".scenario.json")) files.push_back(e.path());
+    }
+    if (ec || files.empty()) throw std::runtime_error("mutate: --suite " + a.suite_dir + ": no *.scenario.json test in this folder");
+    std::sort(files.begin(), files.end());
+    for (const auto& f : files) {
+      std::ifstream in(f, std::ios::binary);
+      std::ostringstream text;
+      text << in.rdbuf();
+      if (!in && !in.eof()) throw std::runtime_error("mutate: cannot read " + f.string());
+      testgen::Test t;
+      t.file_name = f.filename().string();
+      t.scenario_json = text.str();
+      suite.tests.push_back(std::move(t));
+    }
+    return mutation_report(m, suite, a.out_dir);
+#else
+    throw std::runtime_error("mutate: --suite needs the test generator, which this build does not include");
+#endif
+  }
   mutate::MutantSet set = mutate::mutants(m);
   ordered_json index;
   index["format"] = "cemv-mutants/1";
@@ -135,9 +172,14 @@ void add_mutate_commands(CLI::App& app, Context& ctx) {
       ->type_name("S");
   cmd->add_flag("--list-operators", a.list_operators, "print the mutation operators and exit");
   cmd->add_flag("-q,--quiet", a.quiet, "print nothing but errors (no summary)");
+  cmd->add_option("--suite", a.suite_dir,
+                  "the mutation report of the acceptance suite in this folder (cemv testgen's tests): "
+                  "mutation-report.json and .md into --out")
+      ->type_name("DIR");
   cmd->footer(
       "Exit status: 0 done; 2 invalid input or unwritable folder; 3 some mutant's equivalence undecided\n"
-      "(--equivalence); 4 internal error (a distinguishing run the runtimes do not reproduce).\n");
+      "(--equivalence, --suite); 1 a non-equivalent mutant survives the suite (--suite); 4 internal error\n"
+      "(a distinguishing run the runtimes do not reproduce).\n");
   cmd->callback([&ctx]() {
     if (!a.list_operators && a.matrix_file.empty()) throw CLI::RequiredError("MATRIX");
     try {

@@ -21,6 +21,7 @@
 #include "properties/evaluator.hpp"
 #include "properties/monitor.hpp"
 #include "properties/parser.hpp"
+#include "testgen/explore.hpp"
 #include "testgen/scenario_writer.hpp"
 #include "testgen/search.hpp"
 #include "testgen/testgen.hpp"
@@ -72,6 +73,7 @@ class GroupRun {
         throw checker::InternalError("the runtime does not reproduce the witness of objective " +
                                      results_[i].objective.id);
       }
+      if (simulate(i, g)) continue;
       SearchResult proof = search_.prove_unreachable(g);
       ObjectiveResult& res = results_[i];
       if (proof.kind == SearchResult::Kind::Infeasible) {
@@ -88,8 +90,33 @@ class GroupRun {
   }
 
  private:
-  // Replays `inputs` and marks what they witness; false when `target` is not witnessed.
+  // A long witness of accelerated BMC holds its inputs through each macro
+  // step, operator commands included: the same command issued in every cycle
+  // of a stretch, one checklist step per cycle. The run without the repeats
+  // is adopted when it still witnesses the objective.
   bool adopt(Draft& d, std::vector<model::CycleInput> inputs, std::size_t target, const std::string& method) {
+    std::vector<model::CycleInput> once = inputs;
+    bool changed = false;
+    for (std::size_t k = once.size(); k-- > 1;) {
+      if (once[k].commands.empty() || !same_commands(inputs[k].commands, inputs[k - 1].commands)) continue;
+      once[k].commands.clear();
+      changed = true;
+    }
+    if (changed && adopt_run(d, std::move(once), target, method)) return true;
+    return adopt_run(d, std::move(inputs), target, method);
+  }
+
+  static bool same_commands(const std::vector<model::Command>& a, const std::vector<model::Command>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+      if (a[i].op != b[i].op || a[i].cause != b[i].cause || a[i].effect != b[i].effect || a[i].tag != b[i].tag ||
+          a[i].group != b[i].group || a[i].on != b[i].on || a[i].tag_name != b[i].tag_name || a[i].value != b[i].value)
+        return false;
+    return true;
+  }
+
+  // Replays `inputs` and marks what they witness; false when `target` is not witnessed.
+  bool adopt_run(Draft& d, std::vector<model::CycleInput> inputs, std::size_t target, const std::string& method) {
     checker::ConcreteTrace t = checker::run_on_runtime(m_, inputs);
     properties::Trace trace;
     trace.reserve(t.inputs.size());
@@ -131,6 +158,57 @@ class GroupRun {
     if (!adopt(d, std::move(all), i, r.method)) return false;
     d.roots = eg.roots;
     return true;
+  }
+
+  // BMC did not reach the objective within its budget: seeded random runs on
+  // the runtime look for a witness, first continuing the open test, then
+  // from start-up (testgen/explore.hpp); BMC then finds the run's last
+  // cycles from the state a few cycles before its witness, shortest first.
+  bool simulate(std::size_t i, const Goal& g) {
+    std::uint64_t seed = 1469598103934665603ULL;  // FNV-1a of the objective id: fixed runs
+    for (char c : results_[i].objective.id) seed = (seed ^ static_cast<unsigned char>(c)) * 1099511628211ULL;
+    if (open_ && drafts_.back().inputs.size() < options_.max_test_cycles) {
+      Draft& d = drafts_.back();
+      SearchResult r = detail::explore(m_, g, d.inputs, seed);
+      if (r.kind == SearchResult::Kind::Found) {
+        for (auto& [cycles, method] : completions(g, d.inputs, r)) {
+          std::vector<model::CycleInput> all = d.inputs;
+          all.insert(all.end(), cycles.begin(), cycles.end());
+          if (adopt(d, std::move(all), i, method)) return true;
+        }
+      }
+    }
+    SearchResult r = detail::explore(m_, g, {}, seed + 1);
+    if (r.kind != SearchResult::Kind::Found) return false;
+    for (auto& [cycles, method] : completions(g, {}, r)) {
+      SearchResult s;
+      s.kind = SearchResult::Kind::Found;
+      s.cycles = std::move(cycles);
+      s.method = method;
+      if (start(i, g, s)) return true;
+    }
+    return false;
+  }
+
+  // The simulated run with its last cycles found again by BMC from the state
+  // shortly before the witness, then the simulated run itself.
+  std::vector<std::pair<std::vector<model::CycleInput>, std::string>> completions(
+      const Goal& g, const std::vector<model::CycleInput>& prefix, const SearchResult& r) {
+    constexpr std::size_t kTail = 3;
+    std::vector<std::pair<std::vector<model::CycleInput>, std::string>> out;
+    const std::size_t keep = r.cycles.size() > kTail ? r.cycles.size() - kTail : 0;
+    if (!prefix.empty() || keep > 0) {
+      std::vector<model::CycleInput> head = prefix;
+      head.insert(head.end(), r.cycles.begin(), r.cycles.begin() + static_cast<long>(keep));
+      SearchResult b = search_.find(g, head, options_.objective_budget_s / 4);
+      if (b.kind == SearchResult::Kind::Found) {
+        std::vector<model::CycleInput> cycles(r.cycles.begin(), r.cycles.begin() + static_cast<long>(keep));
+        cycles.insert(cycles.end(), b.cycles.begin(), b.cycles.end());
+        out.push_back({std::move(cycles), "simulation+" + b.method});
+      }
+    }
+    out.push_back({r.cycles, "simulation"});
+    return out;
   }
 
   bool start(std::size_t i, const Goal& g, const SearchResult& r) {

@@ -123,7 +123,9 @@ void tag_objectives(ObjectiveBuilder& b, const Cause& c, const std::string& id, 
     const std::string healthy = "not (" + tripped(c, i) + ")";
     std::string others;
     for (std::size_t j = 0; j < n; ++j)
-      if (j != i) others += " and good(" + tag_atom(c.tags[j].name) + ") and not (" + tripped(c, j) + ")";
+      if (j != i)  // a reference always has good quality (I.3): the language has no quality for it
+        others += (is_ref(c.tags[j].name) ? std::string() : " and good(" + tag_atom(c.tags[j].name) + ")") +
+                  " and not (" + tripped(c, j) + ")";
     switch (c.bad_quality) {
       case model::BadQuality::Trip:
         b.add(ti + ".bad_quality", "bad-quality",
@@ -256,15 +258,55 @@ void suppression(ObjectiveBuilder& b, const Cause& c, const std::string& id, int
   if (c.soft_bypass.allowed)
     b.add(id + ".bypass.soft", "bypass", "Soft bypass of " + label(c) + " suppresses it", node, sif,
           ck(c, "soft_bypassed") + " and " + tm + " and not " + act, h, {ck(c, "soft_bypassed"), act});
+  // The timed soft bypass (C.1, T.2): switched on in cycle s it is on in
+  // cycles s .. s+D-1 and removed with the timeout alarm in s+D; the prealarm
+  // shows from s+P. Each boundary and the cycle before it, so that a timeout
+  // or prealarm moved either way shows at one of the checkpoints.
+  if (c.soft_bypass.allowed && c.soft_bypass.max_s > 0) {
+    const std::string sb = ck(c, "soft_bypassed"), pre = ck(c, "bypass_prealarm"), to = ck(c, "bypass_timeout");
+    auto held = [&](int n) { return n <= 0 ? sb : "held(" + sb + ", " + std::to_string(n) + " cycles)"; };
+    auto on_for = [&](int n) { return sb + " and " + held(n - 1) + " and not " + held(n); };  // the n-th cycle on
+    const int d = b.cycles(c.soft_bypass.max_s * 1000ULL);
+    const std::vector<std::string> seen{sb, pre, to, ck(c, "bypassed")};
+    if (c.soft_bypass.prealarm_s > 0 && c.soft_bypass.prealarm_s < c.soft_bypass.max_s) {
+      const int p = b.cycles(c.soft_bypass.prealarm_s * 1000ULL);
+      b.add(id + ".bypass.prealarm.before", "bypass",
+            "Soft bypass of " + label(c) + ": one cycle before its prealarm (" +
+                std::to_string(c.soft_bypass.prealarm_s) + " s)",
+            node, sif, on_for(p) + " and not " + pre, p + 1, seen);
+      b.add(id + ".bypass.prealarm", "bypass",
+            "Soft bypass of " + label(c) + ": prealarm after " + std::to_string(c.soft_bypass.prealarm_s) + " s",
+            node, sif, on_for(p + 1) + " and " + pre, p + 2, seen);
+    }
+    b.add(id + ".bypass.timeout.before", "bypass",
+          "Soft bypass of " + label(c) + ": still on one cycle before its timeout (" +
+              std::to_string(c.soft_bypass.max_s) + " s)",
+          node, sif, on_for(d), d + 1, seen);
+    b.add(id + ".bypass.timeout", "bypass",
+          "Soft bypass of " + label(c) + " removed after " + std::to_string(c.soft_bypass.max_s) +
+              " s with the timeout alarm",
+          node, sif, "rose(" + to + ") and prev(" + held(d - 1) + ") and not " + sb, d + 2, seen);
+  }
   if (c.inhibit_tag)
     b.add(id + ".inhibit", "inhibit", "Inhibit tag " + *c.inhibit_tag + " suppresses " + label(c), node, sif,
           tag_atom(*c.inhibit_tag) + " and " + tm + " and not " + act, h, {ck(c, "inhibited"), act});
 }
 
 void acknowledgement(ObjectiveBuilder& b, const Cause& c, const std::string& id, int sif) {
-  const bool latch = !c.auto_ack && (c.time.mode == model::TimeMode::None || c.time.mode == model::TimeMode::OnDelay);
-  if (!latch) return;
+  const bool can_latch = c.time.mode == model::TimeMode::None || c.time.mode == model::TimeMode::OnDelay;
   const model::Node node{model::Node::Kind::Cause, c.id};
+  // Automatic acknowledgement (C.7): the cause goes inactive in the cycle its
+  // trip request clears, no acknowledgement required; with a latch it would
+  // stay active.
+  if (c.auto_ack && can_latch)
+    b.add(id + ".ack.auto", "acknowledgement",
+          label(c) + " goes inactive by itself when its trip clears (automatic acknowledgement)", node, sif,
+          "fell(" + ck(c, "trip_requested") + ") and fell(" + ck(c, "active") + ") and not " +
+              ck(c, "ack_required"),
+          c.time.mode == model::TimeMode::OnDelay ? b.cycles(c.time.ms) + 2 : 2,
+          {ck(c, "active"), ck(c, "ack_required")});
+  const bool latch = !c.auto_ack && can_latch;
+  if (!latch) return;
   const std::string ack = "issued(ack_cause, cause = " + std::to_string(c.id) + ")";
   const std::string sw = b.matrix().secure_write ? " and " + tag_atom(b.matrix().secure_write->enable_tag) : "";
   const std::string req = ck(c, "ack_required"), tr = ck(c, "trip_requested");

@@ -4,8 +4,10 @@
 // E.2, E.5, E.6), XooN at X-1 and X (E.2), reset (E.4), overrides (E.3), the
 // output delay (E.7), bypass (E.1), the pass-through/mask table and the
 // output values (E.8, E.9).
+#include <algorithm>
 #include <map>
 
+#include "model/graph.hpp"
 #include "testgen/objective_builder.hpp"
 
 namespace cemv::testgen::detail {
@@ -82,6 +84,17 @@ void intersection_objectives(ObjectiveBuilder& b, const Effect& e) {
             "Override of " + label(e) + " suppresses the request of " + label(c) + " (intersection " + type + ")", node,
             sif, ck(c, "active") + " and " + ek(e, "override_active") + " and not " + act + others, 2,
             {ck(c, "active"), act, ek(e, "override_active")});
+    // N and S requests ignore an override (E.6): an S or N cell changed to R
+    // or V would let it through.
+    if (!overridable(x->type) && e.override_time)
+      b.add(id + ".not_overridden", "intersection",
+            "An override of " + label(e) + " does not suppress the request of " + label(c) + " (intersection " +
+                type + ")",
+            node, sif,
+            "issued(override_effect, effect = " + std::to_string(e.id) + ")" +
+                (m.secure_write ? " and " + tag_atom(m.secure_write->enable_tag) : "") + " and " +
+                ck(c, "active") + " and " + act + " and not " + ek(e, "override_active") + others,
+            2, {ck(c, "active"), act, ek(e, "override_active")});
   }
   // XooN assignment (E.2): X the smallest, the type of the lowest cause id.
   std::vector<const model::Intersection*> xoon;
@@ -157,6 +170,22 @@ void effect_objectives(ObjectiveBuilder& b, const Effect& e) {
                 " s with the timeout alarm",
             node, sif, "rose(" + ek(e, "override_failed_timeout") + ")", b.cycles(e.override_time->max_s * 1000ULL) + 2,
             {ov, ek(e, "override_failed_timeout"), act});
+    // The cycle before each boundary too: a timeout or prealarm moved earlier
+    // shows there (T.2: started in cycle s, the override runs s .. s+D-1).
+    auto on_for = [&](int n) {
+      auto held = [&](int k) { return k <= 0 ? ov : "held(" + ov + ", " + std::to_string(k) + " cycles)"; };
+      return ov + " and " + held(n - 1) + " and not " + held(n);
+    };
+    if (e.override_time->max_s > 0)
+      b.add(id + ".override.timeout.before", "override",
+            "Override of " + label(e) + ": still running one cycle before its timeout", node, sif,
+            on_for(b.cycles(e.override_time->max_s * 1000ULL)), b.cycles(e.override_time->max_s * 1000ULL) + 1,
+            {ov, ek(e, "override_failed_timeout"), act});
+    if (e.override_time->prealarm_s > 0 && e.override_time->prealarm_s < e.override_time->max_s)
+      b.add(id + ".override.prealarm.before", "override",
+            "Override of " + label(e) + ": one cycle before its prealarm", node, sif,
+            on_for(b.cycles(e.override_time->prealarm_s * 1000ULL)) + " and not " + ek(e, "override_prealarm"),
+            b.cycles(e.override_time->prealarm_s * 1000ULL) + 1, {ov, ek(e, "override_prealarm")});
     if (e.override_time->prealarm_s > 0 && e.override_time->prealarm_s < e.override_time->max_s)
       b.add(id + ".override.prealarm", "override", "Override prealarm of " + label(e), node, sif,
             "rose(" + ek(e, "override_prealarm") + ")", b.cycles(e.override_time->prealarm_s * 1000ULL) + 2,
@@ -174,9 +203,17 @@ void effect_objectives(ObjectiveBuilder& b, const Effect& e) {
           node, sif, odr + " and " + held(act, d - 1) + " and not " + held(act, d), d + 2, {odr, act});
     b.add(id + ".delay.expiry", "output-delay", "Output delay (" + dur + ") of " + label(e) + ": expiry cycle", node, sif,
           "prev(" + odr + ") and not " + odr + " and " + act, d + 3, {odr, act});
+    // Restarted, not resumed: a bypass interrupts the running delay, and one
+    // cycle before the full duration has run again since the bypass ended,
+    // the outputs still wait (E.7 "any interruption ... restarts it").
     if (e.bypass_tag || e.soft_bypass_allowed)
-      b.add(id + ".delay.restart", "output-delay", "Output delay of " + label(e) + " restarted after a bypass", node, sif,
-            "rose(" + odr + ") and prev(" + ek(e, "bypassed") + ")", 3, {odr, ek(e, "bypassed")});
+      b.add(id + ".delay.restart", "output-delay",
+            "Output delay (" + dur + ") of " + label(e) + " restarted by a bypass that interrupted it: one cycle "
+            "before expiry, counted from the end of the bypass",
+            node, sif,
+            odr + " and " + held(act, d - 1) + " and not " + held(act, d) + " and within(" + ek(e, "bypassed") +
+                " and prev(" + odr + "), " + std::to_string(2 * d + 4) + " cycles)",
+            2 * d + 4, {odr, act, ek(e, "bypassed")});
   }
   // Bypass (E.1, E.6).
   if (e.bypass_tag)
@@ -227,6 +264,25 @@ void effect_objectives(ObjectiveBuilder& b, const Effect& e) {
 
 void matrix_objectives(ObjectiveBuilder& b) {
   const model::Matrix& m = b.matrix();
+  // Per cause: active, and no effect it cannot reach (no intersection, no
+  // reference) active, so that an intersection added in an empty cell shows.
+  const model::DependencyGraph graph(m);
+  for (const auto& c : m.causes) {
+    if (c.function == model::CauseFunction::Comment) continue;
+    const auto reach = graph.reach_of({model::Node::Kind::Cause, c.id});
+    std::vector<std::string> quiet;
+    std::vector<std::string> seen{ck(c, "active")};
+    for (const auto& e : m.effects) {
+      if (e.function == model::EffectFunction::Comment) continue;
+      if (std::binary_search(reach.begin(), reach.end(), model::Node{model::Node::Kind::Effect, e.id})) continue;
+      quiet.push_back("not " + ek(e, "active"));
+      seen.push_back(ek(e, "active"));
+    }
+    if (quiet.empty()) continue;
+    b.add("intersection.c" + std::to_string(c.id) + ".none", "intersection",
+          label(c) + " trips none of the effects it has no intersection with", {model::Node::Kind::Cause, c.id},
+          first_sif(c.sif), ck(c, "active") + " and " + join(quiet, " and "), 1, seen);
+  }
   const model::Cause* soft_cause = nullptr;
   const model::Effect* soft_effect = nullptr;
   const model::Effect* override_effect = nullptr;

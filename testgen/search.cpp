@@ -10,6 +10,7 @@
 #include "checker/engines/accelerated_bmc.hpp"
 #include "checker/engines/bmc.hpp"
 #include "checker/engines/portfolio.hpp"
+#include "checker/random_runs.hpp"
 #include "checker/replay.hpp"
 #include "checker/shrink.hpp"
 #include "encoder/encode.hpp"
@@ -33,43 +34,11 @@ constexpr int kLongHorizon = 8;
 
 std::string name_of(const z3::expr& v) { return v.decl().name().str(); }
 
-// Values an engineer would set on an analog input, for every cause reading
-// it (docs/semantics.md C.3-C.5): at rest, at the limit and the next float on
-// the safe side, the hysteresis threshold and the next float beyond it, the
-// prewarning, clearly tripped; plus the value the test holds. A search
-// restricted to them is fast and its steps read like a test sheet; only when
-// it fails are all floats allowed.
+// Values an engineer would set on an analog input (checker/random_runs.hpp):
+// a search restricted to them is fast and its steps read like a test sheet;
+// only when it fails are all floats allowed.
 std::vector<float> engineer_values(const model::Matrix& m, const model::InputTag& tag, float hold) {
-  std::vector<float> v{hold, model::default_tag_value(m, tag).value, 0.0f};
-  const float inf = std::numeric_limits<float>::infinity();
-  for (const auto& c : m.causes) {
-    if (c.input != model::InputKind::Analog || !c.analog) continue;
-    bool reads = false;
-    for (const auto& t : c.tags) reads |= model::tag_key(t.name) == model::tag_key(tag.name);
-    if (!reads) continue;
-    const auto& a = *c.analog;
-    const bool high = a.limit_type == model::LimitType::High;
-    const float safe = high ? -inf : inf;
-    const float thr = high ? a.limit - a.hysteresis : a.limit + a.hysteresis;
-    const float margin = std::max(1.0f, a.hysteresis);
-    v.push_back(a.limit);
-    v.push_back(std::nextafter(a.limit, safe));
-    v.push_back(thr);
-    v.push_back(std::nextafter(thr, safe));
-    v.push_back(high ? a.limit + 2 * margin : a.limit - 2 * margin);
-    v.push_back(high ? thr - margin : thr + margin);
-    if (a.prewarning) {
-      v.push_back(*a.prewarning);
-      v.push_back(std::nextafter(*a.prewarning, safe));
-    }
-    if (a.delta > 0.0f) {
-      v.push_back(a.limit + a.delta);
-      v.push_back(a.limit - a.delta);
-    }
-  }
-  std::sort(v.begin(), v.end());
-  v.erase(std::unique(v.begin(), v.end()), v.end());
-  return v;
+  return checker::analog_test_values(m, tag, hold);
 }
 
 // The goal's safety problem in `ctx`; with a prefix, the initial state is the

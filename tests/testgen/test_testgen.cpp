@@ -6,10 +6,15 @@
 
 #include <gtest/gtest.h>
 
+#include "checker/replay.hpp"
 #include "formats/matrix_json.hpp"
+#include "properties/evaluator.hpp"
+#include "properties/monitor.hpp"
 #include "properties/parser.hpp"
+#include "testgen/explore.hpp"
 #include "testgen/checklist.hpp"
 #include "testgen/testgen.hpp"
+#include "tests/support/random_matrix.hpp"
 
 namespace {
 
@@ -31,6 +36,20 @@ TEST(Objectives, EveryExampleParsesWithUniqueIds) {
     auto file = properties::parse_properties(testgen::objectives_file_text(objs), m, "objectives");
     EXPECT_EQ(file.properties.size(), objs.size()) << name;
   }
+}
+
+// Generated matrices with every option (internal references among the tags
+// of a cause included, which have no quality of their own) give objectives
+// that parse: the catalogue of the 128 x 128 benchmark matrix too.
+TEST(Objectives, RandomMatricesParse) {
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    const model::Matrix m = testsupport::random_matrix(seed);
+    const auto objs = testgen::derive_objectives(m);
+    EXPECT_NO_THROW(properties::parse_properties(testgen::objectives_file_text(objs), m, "objectives")) << seed;
+  }
+  const model::Matrix big = testsupport::big_matrix(1);
+  EXPECT_NO_THROW(properties::parse_properties(testgen::objectives_file_text(testgen::derive_objectives(big)), big,
+                                               "objectives"));
 }
 
 TEST(Objectives, CatalogueNamesTheIssueKinds) {
@@ -73,6 +92,33 @@ TEST(Generate, TankLowLevelGroupCoveredAndGreen) {
   for (auto& c : mutant.causes)
     if (c.id == 4) c.analog->limit += 1.0f;
   EXPECT_FALSE(testgen::replay_suite(mutant, s).all_passed());
+}
+
+// Seeded random runs on the runtime find what BMC's budget does not reach
+// on a loaded machine: one cycle before a 100-cycle output delay expires,
+// behind a 2oo3 analog cause with an on-delay (pipeline-hipps effect 3), and
+// an S latch that holds after a 5 s pulse ends (cause 6). The runtime and the
+// concrete evaluator confirm the witness in the run's last cycle.
+TEST(Explore, FindsLongDelayWitnesses) {
+  for (const auto& [name, id] : {std::pair{"pipeline-hipps", "effect.3.delay.before"},
+                                 std::pair{"pipeline-hipps", "intersection.c6.e1.latched"}}) {
+    model::Matrix m = example(name);
+    std::vector<testgen::Objective> objs;
+    for (auto& o : testgen::derive_objectives(m))
+      if (o.id == id) objs.push_back(o);
+    ASSERT_EQ(objs.size(), 1u) << id;
+    const auto file = properties::parse_properties(testgen::objectives_file_text(objs), m, "objectives");
+    const auto& p = file.properties[0];
+    testgen::detail::Goal g{&file, &p, properties::property_roots(p, file.assumptions, m), objs[0].horizon};
+    const auto r = testgen::detail::explore(m, g, {}, 42);
+    ASSERT_EQ(r.kind, testgen::detail::SearchResult::Kind::Found) << id << ": " << r.reason;
+    const auto t = checker::run_on_runtime(m, r.cycles);
+    properties::Trace trace;
+    for (std::size_t k = 0; k < t.inputs.size(); ++k) trace.push_back({t.inputs[k], t.observables[k]});
+    const auto e = properties::Evaluator(m).evaluate(p, file.assumptions, trace);
+    ASSERT_TRUE(e.holds && e.cycle) << id;
+    EXPECT_EQ(*e.cycle + 1, r.cycles.size()) << id;
+  }
 }
 
 TEST(Replay, ReportsLoadErrorsAsFailedTests) {

@@ -1,6 +1,6 @@
 if(TARGET cemv_testgen)
   add_executable(test_testgen ${CMAKE_CURRENT_LIST_DIR}/test_testgen.cpp)
-  target_link_libraries(test_testgen PRIVATE cemv_testgen GTest::gtest_main)
+  target_link_libraries(test_testgen PRIVATE cemv_testgen cemv_testsupport GTest::gtest_main)
   target_compile_definitions(test_testgen PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   gtest_discover_tests(test_testgen DISCOVERY_TIMEOUT 60)
 
