@@ -240,9 +240,11 @@ ProverResult PropertyChecker::decide(const model::Matrix& m, Goal goal, bool sli
   // Only the property's own counterexample is shown; the witness that an
   // antecedent can hold needs no readable form.
   if (goal != Goal::Property) o.shrink_budget = std::chrono::milliseconds(0);
-  // An antecedent is expected to be reachable, usually within a few delays:
-  // BMC alone finds that without the induction engines' set-up.
-  if (goal == Goal::Antecedent) o.quick_bmc_depth = o.bmc_depth;
+  // An antecedent is expected to be reachable, usually within a few delays,
+  // and so is what a cover asks for: BMC alone finds that without the
+  // induction engines' set-up.
+  if (goal == Goal::Antecedent || (goal == Goal::Property && p_.kind == PropertyKind::Reachable))
+    o.quick_bmc_depth = o.bmc_depth;
   return Portfolio(factory(m, goal, sliced), o).run(limits);
 }
 
