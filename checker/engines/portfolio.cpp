@@ -304,7 +304,7 @@ ProverResult Portfolio::confirmed(const ProblemFactory& make, ProverResult answe
     shrink_limits.cancel = nullptr;
     PreferredValue preferred = options_.preferred;
     if (!preferred) preferred = [](const std::string&) { return std::optional<Value>(Value{}); };
-    answer.cex = shrink_trace(owned.problem, answer.cex, preferred, shrink_limits);
+    answer.cex = shrink_trace(owned.problem, answer.cex, preferred, shrink_limits, options_.shrink_max_cycles);
   }
   if (answer.verdict == Verdict::Falsified && options_.reduce) {
     // Back to the problem as the caller stated it, and replayed there: a

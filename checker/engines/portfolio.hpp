@@ -51,6 +51,15 @@ struct PortfolioOptions {
   // need otherwise (by input name); empty = 0, FALSE, 0.0 for every input.
   PreferredValue preferred;
   std::chrono::milliseconds shrink_budget{10000};
+  // Longer counterexamples are not made readable: they come from the
+  // accelerated unrolling, whose inputs are already held over macro steps,
+  // and the core-guided search over a hundred cycles costs more than the
+  // decision and could run into shrink_budget, so that the trace shown would
+  // depend on the machine's load (cemv response's T - 1 runs: compressor
+  // 69 s -> 37 s of CPU, the same report). Where the search ran out of its
+  // budget on the 102-cycle pipeline defect, the trace it left was worse to
+  // read than the engine's, every analog input toggling.
+  std::size_t shrink_max_cycles = 64;
   // Before the race: k-induction up to this k with the encoder's lemmas
   // only, in the calling thread, within `quick_budget` (-1: no quick attempt).
   int quick_k = 1;
