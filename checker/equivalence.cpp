@@ -270,6 +270,21 @@ class Decider {
         return;
       }
       {
+        // A few cycles of BMC next: a structural change mostly shows within
+        // a cycle or two of the right inputs, which a solver finds where the
+        // random runs needed several tags set together (the 128 x 128
+        // benchmark: a 2oo3 cause whose effect three other causes latch).
+        // Its first answer is a shortest difference.
+        Limits probe;
+        probe.deadline = std::min(deadline_, Clock::now() + o_.timeout / 6);
+        probe.max_depth = kShortestCheckDepth - 1;
+        {
+          z3::context ctx;
+          OwnedProblem op = make(ctx);
+          r = Bmc().prove(op.problem, probe);
+        }
+      }
+      if (r.verdict != Verdict::Falsified) {
         // The relational engine next: where the two copies are built alike,
         // a.x = b.x is inductive and proves the group in a few solver calls.
         // Its proof is re-checked with the real float semantics in a fresh
