@@ -11,11 +11,14 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <cstdlib>
+#include <fstream>
 #include <stdexcept>
 #include <string>
 
 #include "diff/semantic.hpp"
 #include "diff/structural.hpp"
+#include "formats/matrix_json.hpp"
 #include "model/graph.hpp"
 #include "model/validate.hpp"
 #include "tests/support/random_matrix.hpp"
@@ -116,4 +119,21 @@ BENCHMARK(BM_DiffBigMatrixStructureOnly)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
-BENCHMARK_MAIN();
+// With CEMV_DIFF_PAIR_DIR set, the pairs are written there first (old.json,
+// removed.json, type-changed.json), so that one comparison can be rerun and
+// profiled as `cemv diff old.json removed.json`.
+int main(int argc, char** argv) {
+  if (const char* dir = std::getenv("CEMV_DIFF_PAIR_DIR")) {
+    auto write = [&](const char* name, const model::Matrix& m) {
+      std::ofstream(std::string(dir) + "/" + name) << formats::to_canonical_json(m) << "\n";
+    };
+    write("old.json", big());
+    write("removed.json", one_intersection_changed(true).changed);
+    write("type-changed.json", one_intersection_changed(false).changed);
+  }
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

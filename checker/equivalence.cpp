@@ -1,14 +1,13 @@
 #include "checker/equivalence.hpp"
 
 #include <algorithm>
-#include <functional>
 #include <limits>
-#include <map>
 #include <set>
 #include <stdexcept>
 #include <unordered_map>
 
 #include "checker/check/recheck.hpp"
+#include "checker/engines/bmc.hpp"
 #include "checker/engines/portfolio.hpp"
 #include "checker/engines/relational.hpp"
 #include "checker/random_runs.hpp"
@@ -56,11 +55,15 @@ std::vector<Node> roots_in(const model::Matrix& m, const model::Matrix& other, c
   return v;
 }
 
-// The part of `m` an encoding of `roots` reads, with every text that no
-// semantics reads set aside (names, descriptions, notes, SIF, SIL, units):
-// two matrices with equal restrictions have equal encodings term for term.
-std::string cone_configuration(const model::Matrix& m, const std::vector<Node>& roots) {
+// The part of `m` an encoding of `roots` reads (every node of their cone,
+// docs/encoding.md "Cone of influence", and the matrix-level settings); with
+// `texts_aside`, every text that no semantics reads is set aside too (names,
+// descriptions, notes, SIF, SIL, units): two matrices with equal such
+// restrictions have equal encodings term for term. Without, the restriction
+// is a matrix the reference runtime runs as the slice the product encodes.
+model::Matrix cone_matrix(const model::Matrix& m, const std::vector<Node>& roots, bool texts_aside) {
   model::Matrix r;
+  if (!texts_aside) r.name = m.name;
   r.cycle_ms = m.cycle_ms;
   r.secure_write = m.secure_write;
   r.group_deactivation = m.group_deactivation;
@@ -68,29 +71,37 @@ std::string cone_configuration(const model::Matrix& m, const std::vector<Node>& 
   for (const auto& n : model::DependencyGraph(m).feeders_of(roots)) cone.insert(n);
   for (auto c : m.causes) {
     if (!cone.count({Node::Kind::Cause, c.id})) continue;
-    c.name = "c" + std::to_string(c.id);
-    c.description.clear();
-    c.note.clear();
-    c.sif.clear();
-    c.sil = 0;
-    if (c.analog) c.analog->unit.clear();
+    if (texts_aside) {
+      c.name = "c" + std::to_string(c.id);
+      c.description.clear();
+      c.note.clear();
+      c.sif.clear();
+      c.sil = 0;
+      if (c.analog) c.analog->unit.clear();
+    }
     r.causes.push_back(c);
   }
   for (auto e : m.effects) {
     if (!cone.count({Node::Kind::Effect, e.id})) continue;
-    e.name = "e" + std::to_string(e.id);
-    e.description.clear();
-    e.note.clear();
-    e.sif.clear();
-    e.sil = 0;
+    if (texts_aside) {
+      e.name = "e" + std::to_string(e.id);
+      e.description.clear();
+      e.note.clear();
+      e.sif.clear();
+      e.sil = 0;
+    }
     r.effects.push_back(e);
   }
   for (auto is : m.intersections) {
     if (!cone.count({Node::Kind::Effect, is.effect}) || !cone.count({Node::Kind::Cause, is.cause})) continue;
-    is.note.clear();
+    if (texts_aside) is.note.clear();
     r.intersections.push_back(is);
   }
-  return formats::to_canonical_json(r);
+  return r;
+}
+
+std::string cone_configuration(const model::Matrix& m, const std::vector<Node>& roots) {
+  return formats::to_canonical_json(cone_matrix(m, roots, true));
 }
 
 struct KeyInfo {
@@ -202,6 +213,10 @@ std::vector<model::CycleInput> product_inputs(const Trace& t, const encoder::Enc
   return out;
 }
 
+// How many cycles deep BMC looks for a difference shorter than a random run's
+// (Decider::shortest).
+constexpr int kShortestCheckDepth = 4;
+
 class Decider {
  public:
   Decider(const model::Matrix& a, const model::Matrix& b, const ObservableGroup& g, const EquivalenceOptions& o)
@@ -234,34 +249,70 @@ class Decider {
       out.method = "identical cone";
       return;
     }
-    if (falsify(ra, rb, out)) return;
     std::vector<std::string> keys;
     for (const auto& k : keys_) keys.push_back(k.key);
     ProverResult r;
     try {
-      Limits limits;
-      limits.deadline = deadline_;
       const ProblemFactory make = product_factory(a_, b_, ra, rb, keys);
-      // The relational engine first: where the two copies are built alike,
-      // a.x = b.x is inductive and proves the group in a few solver calls.
-      // Its proof is re-checked with the real float semantics in a fresh
-      // context (an InternalError if it fails), like every portfolio answer.
-      {
-        z3::context ctx;
-        OwnedProblem op = make(ctx);
-        r = make_relational_prover()->prove(op.problem, limits);
-      }
-      if (r.verdict == Verdict::Proved) {
-        check::recheck(make, r);
-        out.verdict = EquivalenceVerdict::Equivalent;
-        out.method = r.method;
+      // Random runs first: a difference a run of a few segments shows is
+      // found on the runtimes long before a solver has unrolled the analog
+      // arithmetic or a long timer. The run found is then held against BMC
+      // below its length, at most kShortestCheckDepth cycles deep: BMC's
+      // first answer is a shortest difference, so a shorter run is found
+      // where there is one that short, and where the bound reaches the run's
+      // length the random run is a shortest one too. Deeper than that, the
+      // run stays as minimised (random_runs.hpp): unrolling the product
+      // deeper costs many times what the runs did (tank-overfill's soft bypass
+      // at 3 s: 1 s CPU with the run alone, 29 s with BMC to depth 30, still
+      // some 20 s to depth 8 where the cone has analog causes).
+      if (const std::optional<int> found = falsify(ra, rb, out)) {
+        if (*found > 0) shortest(make, *found, ra, rb, out);
         return;
       }
-      r = Portfolio(make).run(limits);
+      {
+        // A few cycles of BMC next: a structural change mostly shows within
+        // a cycle or two of the right inputs, which a solver finds where the
+        // random runs needed several tags set together (the 128 x 128
+        // benchmark: a 2oo3 cause whose effect three other causes latch).
+        // Its first answer is a shortest difference.
+        Limits probe;
+        probe.deadline = std::min(deadline_, Clock::now() + o_.timeout / 6);
+        probe.max_depth = kShortestCheckDepth - 1;
+        {
+          z3::context ctx;
+          OwnedProblem op = make(ctx);
+          r = Bmc().prove(op.problem, probe);
+        }
+      }
+      if (r.verdict != Verdict::Falsified) {
+        // The relational engine next: where the two copies are built alike,
+        // a.x = b.x is inductive and proves the group in a few solver calls.
+        // Its proof is re-checked with the real float semantics in a fresh
+        // context (an InternalError if it fails), like every portfolio answer.
+        // At most a third of the time: Houdini on a product whose copies do
+        // differ weakens the claims one by one to no proof, and BMC in the
+        // portfolio needs the rest.
+        Limits limits;
+        limits.deadline = std::min(deadline_, Clock::now() + o_.timeout / 3);
+        {
+          z3::context ctx;
+          OwnedProblem op = make(ctx);
+          r = make_relational_prover()->prove(op.problem, limits);
+        }
+        if (r.verdict == Verdict::Proved) {
+          check::recheck(make, r);
+          out.verdict = EquivalenceVerdict::Equivalent;
+          out.method = r.method;
+          return;
+        }
+        limits.deadline = deadline_;
+        r = Portfolio(make).run(limits);
+      }
     } catch (const std::invalid_argument& e) {
       out.verdict = EquivalenceVerdict::Differs;
       out.method = "interface";
       out.reason = e.what();
+      out.distinction.reset();
       return;
     }
     out.method = r.method;
@@ -363,15 +414,45 @@ class Decider {
     return false;
   }
 
+  // BMC on the product below the random run's cycle `found` (0-based), at
+  // most kShortestCheckDepth cycles: a shorter difference replaces the run;
+  // an answer cut short by the time limit is said in `reason`.
+  void shortest(const ProblemFactory& make, int found, const std::vector<Node>& ra, const std::vector<Node>& rb,
+                GroupEquivalence& out) {
+    Limits limits;
+    limits.deadline = std::min(deadline_, Clock::now() + o_.timeout / 6);
+    limits.max_depth = std::min(found - 1, kShortestCheckDepth - 1);
+    ProverResult r;
+    {
+      z3::context ctx;
+      OwnedProblem op = make(ctx);
+      r = Bmc().prove(op.problem, limits);
+    }
+    std::string why;
+    GroupEquivalence shorter = out;
+    if (r.verdict == Verdict::Falsified && confirm(r.cex, ra, rb, shorter, why)) {
+      shorter.method = "simulation, bmc";
+      out = std::move(shorter);
+    } else if (r.verdict != Verdict::Unknown || r.reason != "bound reached") {
+      out.reason = "a shorter difference is not ruled out (BMC: " +
+                   (r.verdict == Verdict::Unknown ? r.reason : std::string("a run the runtimes do not reproduce")) +
+                   ")";
+    }
+  }
+
   // Seeded random runs of both reference runtimes side by side, on one plant
   // (every tag both read takes one value) and the same operator: a mutant
   // that differs mostly does so on a run of a few segments, found long before
   // a solver has unrolled the analog arithmetic or a long timer
   // (checker/random_runs.hpp). The inputs vary over both cones, held for the
-  // durations of both matrices. A run found is a real run of both runtimes;
-  // only what the runs cannot separate goes to the provers.
-  bool falsify(const std::vector<Node>& ra, const std::vector<Node>& rb, GroupEquivalence& out) {
-    if (keys_.empty()) return false;
+  // durations of both matrices. The runs are searched on the slices the
+  // product encodes (the cones of the group's roots, run by the runtime: a
+  // 128 x 128 matrix costs the cycles of its cone only), and what is found
+  // is replayed on both whole matrices. Returns the 0-based cycle of the
+  // difference (`out` filled); only what the runs cannot separate goes to
+  // the provers.
+  std::optional<int> falsify(const std::vector<Node>& ra, const std::vector<Node>& rb, GroupEquivalence& out) {
+    if (keys_.empty()) return std::nullopt;
     std::vector<std::string> tags;
     std::vector<model::Command> commands;
     {
@@ -393,17 +474,43 @@ class Decider {
       for (std::size_t i = 0; i < tb.size(); ++i)
         if (auto j = ta.find(tb.tags()[i].name)) start_b.tags[i] = start_a.tags[*j];
     }
+    // The slices, started from the whole matrices' values (a tag's value at
+    // rest depends on every cause that reads it, in the cone or not).
+    const model::Matrix sa = ra.empty() ? a_ : cone_matrix(a_, ra, false);
+    const model::Matrix sb = rb.empty() ? b_ : cone_matrix(b_, rb, false);
+    auto start_of = [](const model::Matrix& slice, const model::Matrix& whole, const model::CycleInput& start) {
+      model::CycleInput s = model::default_cycle_input(slice);
+      const model::InputTable ts(slice), tw(whole);
+      for (std::size_t i = 0; i < ts.size(); ++i)
+        if (auto j = tw.find(ts.tags()[i].name)) s.tags[i] = start.tags[*j];
+      return s;
+    };
+    const model::CycleInput slice_start_a = start_of(sa, a_, start_a), slice_start_b = start_of(sb, b_, start_b);
+    std::vector<std::pair<std::size_t, std::size_t>> slice_index;  // per key, in observables(sa), (sb)
+    {
+      const auto oa = model::observables(sa), ob = model::observables(sb);
+      auto at = [](const std::vector<model::Observable>& obs, const std::string& key) -> std::optional<std::size_t> {
+        for (std::size_t i = 0; i < obs.size(); ++i)
+          if (obs[i].key == key) return i;
+        return std::nullopt;
+      };
+      for (const auto& k : keys_) {
+        auto x = at(oa, k.key), y = at(ob, k.key);
+        if (!x || !y) return std::nullopt;  // not in a slice: the provers decide
+        slice_index.emplace_back(*x, *y);
+      }
+    }
     auto differs = [&](const Run& run) -> long {
-      const auto in_a = expand(a_, run, start_a), in_b = expand(b_, run, start_b);
-      runtime::Runtime x(a_), y(b_);
+      const auto in_a = expand(sa, run, slice_start_a), in_b = expand(sb, run, slice_start_b);
+      runtime::Runtime x(sa), y(sb);
       std::vector<int> oa, ob;
       for (std::size_t c = 0; c < in_a.size(); ++c) {
         x.step(in_a[c]);
         y.step(in_b[c]);
         x.snapshot(oa);
         y.snapshot(ob);
-        for (const auto& k : keys_)
-          if (oa[k.index_a] != ob[k.index_b]) return static_cast<long>(c);
+        for (const auto& [i, j] : slice_index)
+          if (oa[i] != ob[j]) return static_cast<long>(c);
       }
       return -1;
     };
@@ -418,33 +525,44 @@ class Decider {
       if (differs(run) < 0) continue;
       run = minimise_run(std::move(run), differs);
       const long c = differs(run);
-      if (c < 0) return false;
+      if (c < 0) continue;
+      // The run on the whole matrices: the difference must be there, in the
+      // same cycle (the slice is exact for the group's observables,
+      // docs/encoding.md); a run that is not is left to the provers.
       ConcreteTrace ta = run_on_runtime(a_, expand(a_, run, start_a));
       ConcreteTrace tb = run_on_runtime(b_, expand(b_, run, start_b));
       const std::size_t cycle = static_cast<std::size_t>(c);
+      bool earlier = false;
+      for (std::size_t k = 0; k < cycle && !earlier; ++k)
+        for (const auto& key : keys_) earlier |= ta.observables[k][key.index_a] != tb.observables[k][key.index_b];
+      if (earlier) continue;
       for (const auto& k : keys_) {
-        const int va = ta.observables[cycle][k.index_a], vb = tb.observables[cycle][k.index_b];
-        if (va == vb) continue;
-        Distinction d;
-        d.key = k.key;
-        d.type = k.type;
-        d.cycle = static_cast<int>(cycle);
-        d.value_a = va;
-        d.value_b = vb;
-        ta.inputs.resize(cycle + 1);
-        ta.observables.resize(cycle + 1);
-        tb.inputs.resize(cycle + 1);
-        tb.observables.resize(cycle + 1);
-        d.run_a = std::move(ta);
-        d.run_b = std::move(tb);
+        if (ta.observables[cycle][k.index_a] == tb.observables[cycle][k.index_b]) continue;
         out.verdict = EquivalenceVerdict::Differs;
         out.method = "simulation";
-        out.distinction = std::move(d);
-        return true;
+        out.distinction = distinction(k, cycle, std::move(ta), std::move(tb));
+        return static_cast<int>(cycle);
       }
-      throw InternalError("equivalence of " + g_.name + ": a simulated run differs once and not when replayed");
     }
-    return false;
+    return std::nullopt;
+  }
+
+  // The distinction of two runtime runs that first differ on key `k` in
+  // `cycle`: both cut after it.
+  static Distinction distinction(const KeyInfo& k, std::size_t cycle, ConcreteTrace ta, ConcreteTrace tb) {
+    Distinction d;
+    d.key = k.key;
+    d.type = k.type;
+    d.cycle = static_cast<int>(cycle);
+    d.value_a = ta.observables[cycle][k.index_a];
+    d.value_b = tb.observables[cycle][k.index_b];
+    ta.inputs.resize(cycle + 1);
+    ta.observables.resize(cycle + 1);
+    tb.inputs.resize(cycle + 1);
+    tb.observables.resize(cycle + 1);
+    d.run_a = std::move(ta);
+    d.run_b = std::move(tb);
+    return d;
   }
 
   // Replays a product run on both runtimes; true (and `out` filled) when they
@@ -464,22 +582,9 @@ class Decider {
     ConcreteTrace ta = run_on_runtime(a_, in_a), tb = run_on_runtime(b_, in_b);
     for (std::size_t c = 0; c < ta.observables.size(); ++c)
       for (const auto& k : keys_) {
-        int va = ta.observables[c][k.index_a], vb = tb.observables[c][k.index_b];
-        if (va == vb) continue;
-        Distinction d;
-        d.key = k.key;
-        d.type = k.type;
-        d.cycle = static_cast<int>(c);
-        d.value_a = va;
-        d.value_b = vb;
-        ta.inputs.resize(c + 1);
-        ta.observables.resize(c + 1);
-        tb.inputs.resize(c + 1);
-        tb.observables.resize(c + 1);
-        d.run_a = std::move(ta);
-        d.run_b = std::move(tb);
+        if (ta.observables[c][k.index_a] == tb.observables[c][k.index_b]) continue;
         out.verdict = EquivalenceVerdict::Differs;
-        out.distinction = std::move(d);
+        out.distinction = distinction(k, c, std::move(ta), std::move(tb));
         return true;
       }
     why = "the run of " + std::to_string(readable.length()) + " cycles gives equal values of every observable of " +
@@ -497,62 +602,7 @@ class Decider {
   std::vector<KeyInfo> keys_;
 };
 
-void add_keys(std::vector<std::string>& keys, std::set<std::string>& seen, const std::vector<model::Observable>& obs,
-              const std::function<bool(const model::Observable&)>& take) {
-  for (const auto& o : obs)
-    if (take(o) && seen.insert(o.key).second) keys.push_back(o.key);
-}
-
 }  // namespace
-
-const char* to_string(EquivalenceVerdict v) {
-  switch (v) {
-    case EquivalenceVerdict::Equivalent: return "equivalent";
-    case EquivalenceVerdict::Differs: return "differs";
-    case EquivalenceVerdict::Unknown: return "unknown";
-  }
-  return "unknown";
-}
-
-std::vector<ObservableGroup> effect_groups(const model::Matrix& a, const model::Matrix& b) {
-  std::set<int> ids;
-  for (const auto* m : {&a, &b})
-    for (const auto& e : m->effects) ids.insert(e.id);
-  const auto oa = model::observables(a), ob = model::observables(b);
-  std::vector<ObservableGroup> out;
-  for (int id : ids) {
-    ObservableGroup g;
-    g.name = model::to_string(Node{Node::Kind::Effect, id});
-    g.roots = {Node{Node::Kind::Effect, id}};
-    std::set<std::string> seen;
-    auto mine = [id](const model::Observable& o) { return o.kind == Node::Kind::Effect && o.id == id; };
-    add_keys(g.keys, seen, oa, mine);
-    add_keys(g.keys, seen, ob, mine);
-    out.push_back(std::move(g));
-  }
-  return out;
-}
-
-std::vector<ObservableGroup> output_groups(const model::Matrix& a, const model::Matrix& b) {
-  std::map<std::pair<int, int>, std::string> tags;  // (effect, k) -> key
-  for (const auto* m : {&a, &b})
-    for (const auto& o : model::observables(*m))
-      if (o.kind == Node::Kind::Effect && o.field == "tag") tags.emplace(std::make_pair(o.id, o.tag), o.key);
-  std::vector<ObservableGroup> out;
-  for (const auto& [where, key] : tags)
-    out.push_back(ObservableGroup{key, {key}, {Node{Node::Kind::Effect, where.first}}});
-  return out;
-}
-
-ObservableGroup whole_matrix(const model::Matrix& a, const model::Matrix& b) {
-  ObservableGroup g;
-  g.name = "matrix";
-  std::set<std::string> seen;
-  auto all = [](const model::Observable&) { return true; };
-  add_keys(g.keys, seen, model::observables(a), all);
-  add_keys(g.keys, seen, model::observables(b), all);
-  return g;
-}
 
 GroupEquivalence decide_equivalence(const model::Matrix& a, const model::Matrix& b, const ObservableGroup& group,
                                     const EquivalenceOptions& options) {

@@ -3,6 +3,7 @@
 #include <stdexcept>
 #include <unordered_map>
 #include <unordered_set>
+#include <vector>
 
 namespace cemv::encoder {
 
@@ -13,11 +14,12 @@ namespace {
 class Copier {
  public:
   Copier(TransitionSystem& out, const TransitionSystem& in, const std::string& prefix)
-      : out_(out), in_(in), prefix_(prefix), from_(in.ctx()), to_(in.ctx()) {}
+      : out_(out), in_(in), prefix_(prefix), from_(in.ctx()), to_(in.ctx()), keep_(in.ctx()) {}
 
   void run() {
     for (const auto& s : in_.statevars()) {
       z3::expr v = out_.make_statevar(prefix_ + s.name, s.var.get_sort());
+      renamed_.emplace(s.var.id(), static_cast<std::size_t>(to_.size()));
       from_.push_back(s.var);
       to_.push_back(v);
     }
@@ -43,8 +45,38 @@ class Copier {
  private:
   z3::expr copy(const z3::expr& e) {
     register_floats(e);
-    z3::expr copy = e;
-    return copy.substitute(from_, to_);
+    return rewrite(e);
+  }
+  // e over the renamed state variables. One memo for every term of the copy:
+  // the next-state functions, named terms and lemmas of an encoding share
+  // most of their subterms, and a substitution per term walked the shared
+  // part again for each (a 128 x 128 cone: minutes; docs/performance.md).
+  z3::expr rewrite(const z3::expr& e) {
+    if (auto it = memo_.find(e.id()); it != memo_.end()) return it->second;
+    z3::expr r = e;
+    if (auto v = renamed_.find(e.id()); v != renamed_.end()) {
+      r = to_[static_cast<int>(v->second)];
+    } else if (!e.is_app()) {
+      r = z3::expr(e).substitute(from_, to_);  // a quantifier (none in encodings today): Z3's own substitution
+    } else if (e.num_args() > 0) {
+      z3::expr_vector args(e.ctx());
+      std::vector<Z3_ast> raw;
+      bool changed = false;
+      for (unsigned i = 0; i < e.num_args(); ++i) {
+        z3::expr a = rewrite(e.arg(i));
+        changed |= !z3::eq(a, e.arg(i));
+        args.push_back(a);
+        raw.push_back(a);
+      }
+      if (changed) {
+        Z3_ast u = Z3_update_term(e.ctx(), e, static_cast<unsigned>(raw.size()), raw.data());
+        e.ctx().check_error();
+        r = z3::expr(e.ctx(), u);
+      }
+    }
+    keep_.push_back(e);  // the memo's keys are AST ids: keep them alive
+    memo_.emplace(e.id(), r);
+    return r;
   }
   // The Evaluator (and every engine that samples runs) reads float constants
   // through TransitionSystem::float_value: the product must know them too.
@@ -63,6 +95,9 @@ class Copier {
   const TransitionSystem& in_;
   std::string prefix_;
   z3::expr_vector from_, to_;
+  std::unordered_map<unsigned, std::size_t> renamed_;  // state variable id -> index in to_
+  std::unordered_map<unsigned, z3::expr> memo_;
+  z3::expr_vector keep_;
   std::unordered_set<unsigned> seen_;
 };
 

@@ -1,9 +1,9 @@
-// TEST DOUBLE of checker/equivalence.hpp (see README.md): every function the
-// real header declares, defined here so that the linker never takes the real
-// equivalence.o from cemv_checker. The verdict is chosen by a word in a name.
+// TEST DOUBLE of checker::decide_equivalence (see README.md): defined here so
+// that the linker never takes the real equivalence.o from cemv_checker; the
+// observable groups and the verdict's text are the real ones
+// (checker/observable_groups.cpp). The verdict is chosen by a word in a name.
 #include <algorithm>
 #include <cctype>
-#include <set>
 #include <string>
 
 #include "checker/equivalence.hpp"
@@ -19,45 +19,7 @@ bool has(std::string s, const char* word) {
   return s.find(word) != std::string::npos;
 }
 
-std::vector<std::string> keys_of(const model::Matrix& m, const model::Node& n) {
-  std::vector<std::string> out;
-  for (const auto& o : model::observables(m))
-    if (o.kind == n.kind && o.id == n.id) out.push_back(o.key);
-  return out;
-}
-
 }  // namespace
-
-const char* to_string(EquivalenceVerdict v) {
-  switch (v) {
-    case EquivalenceVerdict::Equivalent: return "equivalent";
-    case EquivalenceVerdict::Differs: return "differs";
-    case EquivalenceVerdict::Unknown: return "unknown";
-  }
-  return "?";
-}
-
-std::vector<ObservableGroup> effect_groups(const model::Matrix& a, const model::Matrix& b) {
-  std::set<int> ids;
-  for (const auto* m : {&a, &b})
-    for (const auto& e : m->effects) ids.insert(e.id);
-  std::vector<ObservableGroup> out;
-  for (int id : ids) {
-    const model::Node n{model::Node::Kind::Effect, id};
-    ObservableGroup g{"effect[" + std::to_string(id) + "]", keys_of(a.find_effect(id) ? a : b, n), {n}};
-    out.push_back(std::move(g));
-  }
-  return out;
-}
-
-std::vector<ObservableGroup> output_groups(const model::Matrix&, const model::Matrix&) { return {}; }
-
-ObservableGroup whole_matrix(const model::Matrix& a, const model::Matrix&) {
-  ObservableGroup g;
-  g.name = "matrix";
-  for (const auto& o : model::observables(a)) g.keys.push_back(o.key);
-  return g;
-}
 
 GroupEquivalence decide_equivalence(const model::Matrix& a, const model::Matrix& b, const ObservableGroup& group,
                                     const EquivalenceOptions&) {
