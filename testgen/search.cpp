@@ -162,6 +162,10 @@ SearchResult Searcher::find_once(const Goal& g, const std::vector<model::CycleIn
     limits.deadline = deadline;
     if (!limits.over()) r = checker::Bmc{}.prove(op.problem, limits);
   }
+  // A witness has at least one cycle (after a prefix too: the objective is
+  // reached by what the search adds); an empty one is an engine's error.
+  if (r.verdict == Verdict::Falsified && r.cex.length() == 0)
+    throw checker::InternalError("objective search: " + r.method + " answered reachable without a witness");
   if (r.verdict != Verdict::Falsified) {
     out.reason = (r.reason.empty() ? "not found" : r.reason) + " (" + r.method + ", depth " + std::to_string(r.k) + ")";
     return out;

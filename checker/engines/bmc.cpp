@@ -33,9 +33,13 @@ ProverResult Bmc::prove(const SafetyProblem& problem, const Limits& limits) {
       assume.push_back(violated);
       z3::check_result cr = s.check(assume);
       if (cr == z3::sat) {
+        // Reading the model is solver work too, and the watchdog may cancel
+        // it when the deadline passes: the verdict is set only once the
+        // trace is read, never a Falsified without its counterexample.
+        Trace cex = trace_from_model(ts, u, s.get_model(), k);
         r.verdict = Verdict::Falsified;
         r.k = k;
-        r.cex = trace_from_model(ts, u, s.get_model(), k);
+        r.cex = std::move(cex);
         r.seconds = seconds_since(start);
         return r;
       }

@@ -6,7 +6,7 @@ if(TARGET cemv_checker)
   target_link_libraries(cemv_checker_problems PUBLIC cemv_checker cemv_encoder cemv_formats cemv_model)
 
   add_executable(test_checker_engines ${CMAKE_CURRENT_LIST_DIR}/test_engines.cpp)
-  target_link_libraries(test_checker_engines PRIVATE cemv_checker_problems GTest::gtest_main)
+  target_link_libraries(test_checker_engines PRIVATE cemv_checker_problems cemv_testsupport GTest::gtest_main)
   gtest_discover_tests(test_checker_engines DISCOVERY_MODE PRE_TEST)
 endif()
 
