@@ -85,16 +85,25 @@ void intersection_objectives(ObjectiveBuilder& b, const Effect& e) {
             sif, ck(c, "active") + " and " + ek(e, "override_active") + " and not " + act + others, 2,
             {ck(c, "active"), act, ek(e, "override_active")});
     // N and S requests ignore an override (E.6): an S or N cell changed to R
-    // or V would let it through.
-    if (!overridable(x->type) && e.override_time)
+    // or V would let it through. The toggle must be one that would start an
+    // override on a V/R request (E.3 step 2): a reset-tag edge where the
+    // effect has a reset tag (the override command is refused then, O.3),
+    // no override running, the effect not bypassed, no output delay running.
+    if (!overridable(x->type) && e.override_time) {
+      const std::string ov = ek(e, "override_active");
+      const std::string toggle =
+          e.reset_tag ? "rose(" + tag_atom(*e.reset_tag) + ")"
+                      : "issued(override_effect, effect = " + std::to_string(e.id) + ")" +
+                            (m.secure_write ? " and " + tag_atom(m.secure_write->enable_tag) : "");
       b.add(id + ".not_overridden", "intersection",
             "An override of " + label(e) + " does not suppress the request of " + label(c) + " (intersection " +
                 type + ")",
             node, sif,
-            "issued(override_effect, effect = " + std::to_string(e.id) + ")" +
-                (m.secure_write ? " and " + tag_atom(m.secure_write->enable_tag) : "") + " and " +
-                ck(c, "active") + " and " + act + " and not " + ek(e, "override_active") + others,
-            2, {ck(c, "active"), act, ek(e, "override_active")});
+            toggle + " and not prev(" + ov + ") and not " + ek(e, "bypassed") +
+                (e.output_delay_ms > 0 ? " and not prev(" + ek(e, "output_delay_running") + ")" : "") + " and " +
+                ck(c, "active") + " and " + act + " and not " + ov + others,
+            2, {ck(c, "active"), act, ov});
+    }
   }
   // XooN assignment (E.2): X the smallest, the type of the lowest cause id.
   std::vector<const model::Intersection*> xoon;
