@@ -24,6 +24,10 @@ namespace cemv::checker {
 
 namespace {
 
+// Random runs tried for a vacuity witness before the engines are asked
+// (checker/witness_pool.hpp).
+constexpr int kRandomWitnessRuns = 8;
+
 using properties::Expr;
 using properties::PropertyKind;
 
@@ -202,6 +206,13 @@ PropertyChecker::PropertyChecker(const model::Matrix& m, const properties::Prope
   // (with the inputs the monitor added) names every input a sliced problem
   // has; the unsliced retry leaves the others free.
   preferred_ = plant_at_rest(*enc, m_);
+  std::vector<std::string> tags;
+  for (std::size_t i = 0; i < enc->tag_value.size(); ++i)
+    if (enc->tag_value[i] || enc->tag_bad[i]) tags.push_back(enc->inputs.tags()[i].name);
+  std::vector<model::Command> commands;
+  for (const auto& c : enc->commands) commands.push_back(c.command());
+  cone_space_ = run_space(m_, nullptr, tags, commands);
+  if (commands.empty()) cone_space_.commands.clear();  // a cone without commands: runs change inputs only
 }
 
 ProblemFactory PropertyChecker::factory(const model::Matrix& m, Goal goal, bool sliced) const {
@@ -229,9 +240,11 @@ ProverResult PropertyChecker::decide(const model::Matrix& m, Goal goal, bool sli
   // Only the property's own counterexample is shown; the witness that an
   // antecedent can hold needs no readable form.
   if (goal != Goal::Property) o.shrink_budget = std::chrono::milliseconds(0);
-  // An antecedent is expected to be reachable, usually within a few delays:
-  // BMC alone finds that without the induction engines' set-up.
-  if (goal == Goal::Antecedent) o.quick_bmc_depth = o.bmc_depth;
+  // An antecedent is expected to be reachable, usually within a few delays,
+  // and so is what a cover asks for: BMC alone finds that without the
+  // induction engines' set-up.
+  if (goal == Goal::Antecedent || (goal == Goal::Property && p_.kind == PropertyKind::Reachable))
+    o.quick_bmc_depth = o.bmc_depth;
   return Portfolio(factory(m, goal, sliced), o).run(limits);
 }
 
@@ -288,6 +301,8 @@ PropertyChecker::Vacuity PropertyChecker::vacuity() const {
   // A witness that the antecedent can hold is a run in which the assumptions
   // hold too: most properties need no more than that one question.
   if (witnesses_ && witnesses_->witnesses(m_, p_, file_.assumptions, has_antecedent_)) return v;
+  if (witnesses_ && witnesses_->search(m_, p_, file_.assumptions, has_antecedent_, cone_space_, kRandomWitnessRuns))
+    return v;
   std::optional<ProverResult> t;
   if (has_antecedent_) {
     t = decide(m_, Goal::Antecedent, true, deadline_);

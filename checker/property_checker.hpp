@@ -7,7 +7,8 @@
 //   (re-check)    done by the portfolio: the proof's invariant and induction
 //                 step re-proved, a trace re-simulated, in a fresh context;
 //   vacuity       assumptions satisfiable, antecedent reachable: first
-//                 asked of the runtime traces the run has produced
+//                 asked of the runtime traces the run has produced, then of
+//                 seeded random runs of the cone on the runtime
 //                 (checker/witness_pool.hpp), then of the engines;
 //   support       the matrix elements the proof needs.
 #pragma once
@@ -62,6 +63,7 @@ class PropertyChecker {
   std::vector<model::Node> roots_;
   bool has_antecedent_ = false;
   PreferredValue preferred_;  // the plant at rest, for readable counterexamples
+  RunSpace cone_space_;        // the inputs and commands of the cone, for random witnesses
   WitnessPool* witnesses_;     // runtime traces of this check run (may be null)
 };
 

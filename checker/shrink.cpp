@@ -88,24 +88,37 @@ Trace shrink_trace(const SafetyProblem& problem, const Trace& cex, const Preferr
     }
     if (!model) return cex;
     // 2. Grow: a core drops more than the violation needs. Take back every
-    // dropped literal the model already satisfies, and try the others one by
-    // one, in order: what is left is a maximal set of inputs at rest. The
-    // tries are counted, not timed, so the result never depends on the
-    // machine's speed: a long trace keeps what the cheap part gives.
-    std::size_t tries = 0;
+    // dropped literal the model already satisfies; then the others, a whole
+    // run of them at once and, when that fails, each half in turn, down to
+    // single literals (what a single literal cannot take back, a larger set
+    // containing it cannot either): what is left is a maximal set of inputs
+    // at rest, in a number of solver calls that grows with the inputs the
+    // violation needs, not with the length of the trace. The tries are
+    // counted, not timed, so the result never depends on the machine's
+    // speed: a long trace keeps what the cheap part gives.
+    std::vector<std::size_t> open;
     for (std::size_t i = 0; i < literals.size(); ++i) {
       if (kept[i]) continue;
-      if (model->eval(meaning[i], true).is_true()) {
-        kept[i] = true;
-        continue;
-      }
-      if (limits.over() || ++tries > kMaxGrowTries) continue;
-      set_timeout(s, limits);
-      if (s.check(vector_of(kept, i)) == z3::sat) {
-        kept[i] = true;
-        model = s.get_model();
-      }
+      if (model->eval(meaning[i], true).is_true()) kept[i] = true;
+      else open.push_back(i);
     }
+    std::size_t tries = 0;
+    auto take_back = [&](auto&& self, std::size_t lo, std::size_t hi) -> void {
+      if (lo >= hi || ++tries > kMaxGrowTries) return;
+      std::vector<bool> trial = kept;
+      for (std::size_t j = lo; j < hi; ++j) trial[open[j]] = true;
+      set_timeout(s, limits);
+      if (s.check(vector_of(trial)) == z3::sat) {
+        kept = std::move(trial);
+        model = s.get_model();
+        return;
+      }
+      if (hi - lo == 1) return;
+      const std::size_t mid = lo + (hi - lo) / 2;
+      self(self, lo, mid);
+      self(self, mid, hi);
+    };
+    take_back(take_back, 0, open.size());
     return trace_from_model(ts, u, *model, last);
   } catch (const z3::exception&) {
     // A limit or a solver failure: the engine's own (already re-checked)

@@ -108,4 +108,24 @@ TEST(WitnessPool, AnswersWithATraceThatMeetsTheAntecedent) {
   EXPECT_TRUE(pool.witnesses(tank.m, f.properties[1], f.assumptions, false));
 }
 
+// Cause 1 of the tank is a 2oo3 of analog transmitters with a 2 s on-delay
+// (20 cycles): the seeded random runs of its cone reach it held for 5 cycles
+// on the runtime, keep that run, and the pool answers from it afterwards. An
+// antecedent that no run can meet leaves the pool as it was.
+TEST(WitnessPool, RandomRunsFindAnAntecedentBehindAVotedDelay) {
+  Tank tank;
+  auto f = properties::parse_properties(
+      "property p \"\" { always held(cause[1].active, 5 cycles) implies effect[1].active }\n"
+      "property q \"\" { always cause[1].active and not cause[1].active implies effect[1].active }\n",
+      tank.m, "<test>");
+  const RunSpace space = run_space(tank.m, nullptr, {"LT_100A", "LT_100B", "LT_100C"}, {});
+  WitnessPool pool;
+  EXPECT_FALSE(pool.witnesses(tank.m, f.properties[0], f.assumptions, true));
+  EXPECT_FALSE(pool.search(tank.m, f.properties[1], f.assumptions, true, space, 8));
+  EXPECT_FALSE(pool.witnesses(tank.m, f.properties[0], f.assumptions, false));  // nothing was kept
+  ASSERT_TRUE(pool.search(tank.m, f.properties[0], f.assumptions, true, space, 8));
+  EXPECT_TRUE(pool.witnesses(tank.m, f.properties[0], f.assumptions, true));
+  EXPECT_FALSE(pool.witnesses(tank.m, f.properties[1], f.assumptions, true));
+}
+
 }  // namespace
