@@ -278,7 +278,17 @@ void matrix_objectives(ObjectiveBuilder& b) {
   const model::DependencyGraph graph(m);
   for (const auto& c : m.causes) {
     if (c.function == model::CauseFunction::Comment) continue;
-    const auto reach = graph.reach_of({model::Node::Kind::Cause, c.id});
+    // Effects that what the cause reads (its internal references, I.3) also
+    // drives are left out: `Cause[1]` tripping cause 8 trips effect 1 through
+    // cause 1 as well, and a cause reading `Effect[1]` is active only with
+    // effect 1, so "cause active, that effect inactive" cannot happen.
+    const model::Node self{model::Node::Kind::Cause, c.id};
+    std::vector<model::Node> reach = graph.reach_of(self);
+    for (const auto& edge : graph.edges())
+      if (edge.kind == model::Edge::Kind::Reference && edge.to == self)
+        for (const auto& r : graph.reach_of(edge.from)) reach.push_back(r);
+    std::sort(reach.begin(), reach.end());
+    reach.erase(std::unique(reach.begin(), reach.end()), reach.end());
     std::vector<std::string> quiet;
     std::vector<std::string> seen{ck(c, "active")};
     for (const auto& e : m.effects) {

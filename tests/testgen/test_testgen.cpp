@@ -2,6 +2,7 @@
 // with unique ids; a generated suite covers its objectives and replays green;
 // replay reports failures on a matrix the suite was not made for.
 #include <filesystem>
+#include <map>
 #include <set>
 
 #include <gtest/gtest.h>
@@ -51,6 +52,23 @@ TEST(Objectives, RandomMatricesParse) {
   const model::Matrix big = testsupport::big_matrix(1);
   EXPECT_NO_THROW(properties::parse_properties(testgen::objectives_file_text(testgen::derive_objectives(big)), big,
                                                "objectives"));
+}
+
+// intersection.cI.none leaves out the effects that what the cause reads
+// also drives: compressor cause 5 reads Effect[1] (active only with effect 1),
+// cause 8 reads Cause[1] and Cause[3] (which trip every other effect), so
+// neither objective can hold with those effects inactive.
+TEST(Objectives, NoneLeavesOutEffectsTheReferencesDrive) {
+  std::map<std::string, std::string> none;
+  for (const auto& o : testgen::derive_objectives(example("compressor")))
+    if (o.id.size() > 5 && o.id.substr(o.id.size() - 5) == ".none") none[o.id] = o.property;
+  ASSERT_TRUE(none.count("intersection.c5.none"));
+  EXPECT_EQ(none["intersection.c5.none"].find("effect[1]"), std::string::npos);
+  EXPECT_NE(none["intersection.c5.none"].find("not effect[5].active"), std::string::npos);
+  EXPECT_FALSE(none.count("intersection.c8.none"));
+  // Cause 2 reads only its own transmitter: every effect it cannot reach.
+  ASSERT_TRUE(none.count("intersection.c2.none"));
+  EXPECT_NE(none["intersection.c2.none"].find("not effect[5].active"), std::string::npos);
 }
 
 TEST(Objectives, CatalogueNamesTheIssueKinds) {
