@@ -1,5 +1,6 @@
 #include "reports/evidence.hpp"
 
+#include <cstdio>
 #include <ctime>
 #include <map>
 #include <set>
@@ -55,12 +56,9 @@ th.effect{writing-mode:vertical-rl;transform:rotate(180deg);white-space:nowrap;h
 .legend span{display:inline-block;padding:1px 6px;margin-right:6px;border:1px solid #9ca3af}
 img.diagram{max-width:100%;border:1px solid #d1d5db}
 pre{white-space:pre-wrap;font-size:9pt;background:#f9fafb;border:1px solid #e5e7eb;padding:6px}
-@media screen{.pagefoot.print,.pagehead.print{display:none}}
 @media print{
  @page{size:A4;margin:18mm 12mm 16mm 12mm}
  body{margin:0;font-size:9.5pt}
- .pagehead.print{position:fixed;top:-12mm;left:0;right:0;border:none}
- .pagefoot.print{position:fixed;bottom:-11mm;left:0;right:0;border:none}
  .pagehead.screen,.pagefoot.screen{display:none}
  section.page{break-before:page}
  h2,h3{break-after:avoid}tr,img,.cex{break-inside:avoid}
@@ -76,6 +74,36 @@ const char* verdict_class(checker::PropertyVerdict v) {
   }
 }
 
+// A CSS string literal of `s`: quotes and backslashes escaped, control
+// characters and '<' (which could end the <style> element) as hex escapes.
+std::string css_string(const std::string& s) {
+  std::string out = "\"";
+  for (unsigned char c : s) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += static_cast<char>(c);
+    } else if (c < 0x20 || c == 0x7f || c == '<') {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\%X ", c);
+      out += buf;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out + "\"";
+}
+
+// The header and footer of every printed page, in the page margins (CSS
+// paged media margin boxes), so they never cover the text: position:fixed
+// blocks were drawn over the first and last lines of each page's content.
+std::string page_boxes(const std::string& stamp) {
+  const char* box = "font-family:\"DejaVu Sans\",Arial,Helvetica,sans-serif;font-size:7.5pt;color:#4b5563;";
+  return std::string("@media print{@page{\n @top-left{content:") + css_string("Evidence report · " + stamp) + ";" +
+         box + "vertical-align:bottom;padding-bottom:3mm}\n @bottom-left{content:" + css_string(stamp) + ";" + box +
+         "vertical-align:top;padding-top:3mm}\n @bottom-right{content:\"page \" counter(page) \" of \" counter(pages);" +
+         box + "vertical-align:top;padding-top:3mm;white-space:nowrap}}}\n";
+}
+
 class Writer {
  public:
   Writer(const model::Matrix& m, const EvidenceInputs& in) : m_(m), in_(in) {
@@ -88,9 +116,7 @@ class Writer {
     std::string stamp = "matrix " + m_.name + " · signature " + in_.check.matrix_signature + " · cemv " +
                         in_.check.tool_version + " · " + in_.date;
     o_ << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>Evidence: "
-       << html_escape(m_.name) << "</title>\n<style>" << kCss << "</style>\n</head>\n<body>\n";
-    o_ << "<div class=\"pagehead print\">Evidence report · " << html_escape(stamp) << "</div>\n";
-    o_ << "<div class=\"pagefoot print\">" << html_escape(stamp) << "</div>\n";
+       << html_escape(m_.name) << "</title>\n<style>" << kCss << page_boxes(stamp) << "</style>\n</head>\n<body>\n";
     o_ << "<div class=\"pagehead screen\">" << html_escape(stamp) << "</div>\n";
     summary();
     grid();
@@ -161,11 +187,11 @@ class Writer {
           "</span><span class=\"t-V\">V override</span><span class=\"t-R\">R reset</span><span class=\"t-X\">X "
           "not specified</span>* note only. Rows and columns: <span class=\"bypass\">bypass possible</span>"
           "<span class=\"comment\">comment only</span><span class=\"involved\">in a counterexample</span></p>\n";
-    o_ << "<table class=\"grid\">\n<tr><th>Cause</th><th>Tags</th>";
+    o_ << "<table class=\"grid\">\n<thead><tr><th>Cause</th><th>Tags</th>";
     for (const auto& e : m_.effects)
       o_ << "<th class=\"effect " << element_class(e) << "\" title=\"" << html_escape(e.description) << "\">E"
          << e.id << " " << html_escape(e.name) << "</th>";
-    o_ << "</tr>\n";
+    o_ << "</tr></thead>\n";
     for (const auto& c : m_.causes) {
       o_ << "<tr><td class=\"cause " << element_class(c) << "\" title=\"" << html_escape(c.description) << "\">C" << c.id
          << " " << html_escape(c.name) << "</td><td>";
@@ -208,7 +234,8 @@ class Writer {
       o_ << "<p class=\"ok\">No findings: the matrix passes every validation rule.</p>\n</section>\n";
       return;
     }
-    o_ << "<table>\n<tr><th>Severity</th><th>Rule</th><th>Element</th><th>Section</th><th>Finding</th></tr>\n";
+    o_ << "<table>\n<thead><tr><th>Severity</th><th>Rule</th><th>Element</th><th>Section</th><th>Finding</th>"
+          "</tr></thead>\n";
     for (const auto& d : in_.validation)
       o_ << "<tr class=\"" << (d.severity == model::Severity::Error ? "bad" : "warn") << "\"><td>"
          << model::to_string(d.severity) << "</td><td>" << html_escape(d.rule) << "</td><td>" << html_escape(d.element)
@@ -225,7 +252,8 @@ class Writer {
     o_ << "<p>Every answer is checked independently before it is reported: counterexamples and witnesses are "
           "replayed on the reference runtime and judged by the concrete property evaluator; proofs are "
           "re-proved by a fresh solver (docs/checker.md).</p>\n";
-    o_ << "<table>\n<tr><th>Property</th><th>Kind</th><th>Verdict</th><th>Method</th><th>Source</th></tr>\n";
+    o_ << "<table>\n<thead><tr><th>Property</th><th>Kind</th><th>Verdict</th><th>Method</th><th>Source</th>"
+          "</tr></thead>\n";
     for (const auto& p : in_.check.properties) {
       o_ << "<tr><td><b>" << html_escape(p.name) << "</b>";
       if (!p.description.empty()) o_ << "<br>" << html_escape(p.description);

@@ -48,8 +48,8 @@ void coverage(std::ostream& o, const CoverageFigures& c) {
 
   std::map<std::string, std::map<std::string, long long>> by_kind;  // kind -> status -> count
   for (const auto& ob : c.list) by_kind[ob.kind][ob.status]++, by_kind[ob.kind]["all"]++;
-  o << "<h3>Objectives by kind</h3>\n<table>\n<tr><th>Kind</th><th>Objectives</th><th>Covered</th>"
-       "<th>Infeasible</th><th>Undecided</th></tr>\n";
+  o << "<h3>Objectives by kind</h3>\n<table>\n<thead><tr><th>Kind</th><th>Objectives</th><th>Covered</th>"
+       "<th>Infeasible</th><th>Undecided</th></tr></thead>\n";
   for (const auto& [kind, n] : by_kind) {
     auto get = [&n = n](const char* k) { auto it = n.find(k); return it == n.end() ? 0LL : it->second; };
     o << "<tr>";
@@ -60,8 +60,8 @@ void coverage(std::ostream& o, const CoverageFigures& c) {
   }
   o << "</table>\n";
 
-  o << "<h3>Tests</h3>\n<table>\n<tr><th>Test</th><th>File</th><th>SIF</th><th>Steps</th><th>Cycles</th>"
-       "<th>Objectives covered</th></tr>\n";
+  o << "<h3>Tests</h3>\n<table>\n<thead><tr><th>Test</th><th>File</th><th>SIF</th><th>Steps</th><th>Cycles</th>"
+       "<th>Objectives covered</th></tr></thead>\n";
   for (const auto& t : c.test_list) {
     o << "<tr>";
     cell(o, t.id);
@@ -77,8 +77,8 @@ void coverage(std::ostream& o, const CoverageFigures& c) {
     o << "<p class=\"ok\">Every objective is covered.</p>\n";
     return;
   }
-  o << "<h3>Objectives not covered</h3>\n<table>\n<tr><th>Objective</th><th>Element</th><th>Status</th>"
-       "<th>What it asks</th><th>Method</th></tr>\n";
+  o << "<h3>Objectives not covered</h3>\n<table>\n<thead><tr><th>Objective</th><th>Element</th><th>Status</th>"
+       "<th>What it asks</th><th>Method</th></tr></thead>\n";
   for (const auto& ob : c.list) {
     if (ob.status == "covered") continue;
     o << "<tr>";
@@ -103,7 +103,7 @@ void mutation(std::ostream& o, const MutationFigures& f) {
     << (f.undecided ? " warn" : "") << "\">" << f.undecided << "</td><td class=\"num\">" << f.refused << "</td>";
   o << "<td class=\"num\">" << percent(double(f.detected), double(f.mutants - f.equivalent)) << "</td></tr>\n</table>\n";
   if (f.open.empty()) return;
-  o << "<table>\n<tr><th>Mutant</th><th>Element</th><th>Change</th><th>Status</th></tr>\n";
+  o << "<table>\n<thead><tr><th>Mutant</th><th>Element</th><th>Change</th><th>Status</th></tr></thead>\n";
   for (const auto& mu : f.open) {
     o << "<tr>";
     cell(o, mu.id);
@@ -141,8 +141,8 @@ void response_section(std::ostream& o, const model::Matrix& m, const EvidenceInp
       sif = p.sif;
       o << "<h3>SIF " << p.sif << " " << html_escape(p.sif_name) << ": process safety time "
         << (p.process_safety_time_ms ? html_escape(ms(p.process_safety_time_ms)) : "not declared")
-        << "</h3>\n<table>\n<tr><th>Path</th><th>Logic</th><th>Total</th><th>Margin</th><th>Verdict</th>"
-           "<th>Degraded total</th></tr>\n";
+        << "</h3>\n<table>\n<thead><tr><th>Path</th><th>Logic</th><th>Total</th><th>Margin</th><th>Verdict</th>"
+           "<th>Degraded total</th></tr></thead>\n";
     }
     std::string margin = ms(p.margin_ms);
     if (p.margin_percent) {

@@ -1,7 +1,7 @@
 // What a timing diagram draws, before any geometry: the rows of a run (which
 // signals, drawn how, with which reference lines) and its columns (the cycles
 // shown one by one and the constant stretches folded). Internal to
-// reports/timing_svg.cpp; kept apart so the drawing code stays short.
+// reports/timing_svg*.cpp; kept apart so the drawing code stays short.
 #pragma once
 
 #include <cstddef>

@@ -57,6 +57,26 @@ struct Lane {
 
 }  // namespace
 
+// k-induction as the quick attempt runs it: first with no strengthening at
+// all, which settles what holds in every cycle by the cycle's own
+// definitions (no Houdini run over the lemmas); then with the lemmas, to
+// PortfolioOptions::quick_k. The race's k-induction starts the same way, so
+// that a quick attempt cut short by its wall-clock budget on a loaded machine
+// does not change the answer (method, k, invariant) the race then gives.
+ProverResult Portfolio::quick_k_induction(const SafetyProblem& problem, const Limits& limits) const {
+  KInductionOptions o;
+  o.mine_invariants = false;
+  o.use_lemmas = false;
+  o.max_k = 0;
+  ProverResult r = KInduction(o).prove(problem, limits);
+  if (r.verdict == Verdict::Unknown && options_.quick_k > 0 && !limits.over()) {
+    o.use_lemmas = true;
+    o.max_k = options_.quick_k;
+    r = KInduction(o).prove(problem, limits);
+  }
+  return r;
+}
+
 Portfolio::Portfolio(ProblemFactory make, PortfolioOptions options)
     : make_(std::move(make)), options_(std::move(options)) {}
 
@@ -89,19 +109,7 @@ std::optional<ProverResult> Portfolio::quick_attempt(const ProblemFactory& make,
   OwnedProblem owned = make(ctx);
   Limits quick = limits;
   quick.deadline = std::min(limits.deadline, std::chrono::steady_clock::now() + options_.quick_budget);
-  // First with no strengthening at all, which settles what holds in every
-  // cycle by the cycle's own definitions (no Houdini run over the lemmas);
-  // then with the lemmas.
-  KInductionOptions o;
-  o.mine_invariants = false;
-  o.use_lemmas = false;
-  o.max_k = 0;
-  ProverResult r = KInduction(o).prove(owned.problem, quick);
-  if (r.verdict == Verdict::Unknown && options_.quick_k > 0) {
-    o.use_lemmas = true;
-    o.max_k = options_.quick_k;
-    r = KInduction(o).prove(owned.problem, quick);
-  }
+  ProverResult r = quick_k_induction(owned.problem, quick);
   if (r.verdict == Verdict::Unknown && options_.quick_bmc_depth > options_.quick_k && !quick.over()) {
     Limits bmc = quick;
     bmc.max_depth = std::min(limits.max_depth, options_.quick_bmc_depth);
@@ -136,7 +144,13 @@ ProverResult Portfolio::race(const ProblemFactory& make, const Limits& limits) c
         Limits mine = limits;
         mine.cancel = &lane->cancel;
         if (lane->engine == "bmc") mine.max_depth = std::min(mine.max_depth, options_.bmc_depth);
-        r = make_prover(lane->engine, options_.max_k)->prove(owned.problem, mine);
+        if (lane->engine == "k-induction" && options_.quick_k >= 0) {
+          r = quick_k_induction(owned.problem, mine);
+          if (r->verdict == Verdict::Unknown && !mine.over())
+            r = make_prover(lane->engine, options_.max_k)->prove(owned.problem, mine);
+        } else {
+          r = make_prover(lane->engine, options_.max_k)->prove(owned.problem, mine);
+        }
       } catch (...) {
         error = std::current_exception();
       }

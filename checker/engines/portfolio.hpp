@@ -73,6 +73,7 @@ class Portfolio {
 
  private:
   std::optional<ProverResult> quick_attempt(const ProblemFactory& make, const Limits& limits) const;
+  ProverResult quick_k_induction(const SafetyProblem& problem, const Limits& limits) const;
   ProverResult race(const ProblemFactory& make, const Limits& limits) const;
   ProverResult confirmed(const ProblemFactory& make, ProverResult answer, const Limits& limits,
                          std::chrono::steady_clock::time_point start) const;
