@@ -18,6 +18,7 @@
 #include "checker/prover.hpp"
 #include "checker/replay.hpp"
 #include "formats/matrix_json.hpp"
+#include "formats/scenario.hpp"
 #include "properties/evaluator.hpp"
 #include "properties/monitor.hpp"
 #include "properties/parser.hpp"
@@ -60,8 +61,16 @@ class GroupRun {
       const properties::Property& p = file_.properties[i];
       t0_ = std::chrono::steady_clock::now();
       Goal g{&file_, &p, properties::property_roots(p, file_.assumptions, m_), results_[i].objective.horizon};
-      if (open_ && drafts_.back().inputs.size() < options_.max_test_cycles && extend(i, g)) continue;
+      if (room() && extend(i, g)) continue;
       SearchResult r = search_.find(g, {}, options_.objective_budget_s);
+      if (r.kind == SearchResult::Kind::Found && !fits(r.cycles.size())) {
+        ObjectiveResult& res = results_[i];
+        res.status = ObjectiveStatus::Undecided;
+        res.reason = "its shortest witness found has " + std::to_string(r.cycles.size()) +
+                     " cycles, more than a test may have (TestgenOptions::max_test_cycles and the scenario limits)";
+        announce(res);
+        continue;
+      }
       if (r.kind == SearchResult::Kind::Found && start(i, g, r)) continue;
       if (r.kind == SearchResult::Kind::Found) {
         // A slice over-approximates what lies outside its cone
@@ -90,6 +99,30 @@ class GroupRun {
   }
 
  private:
+  // The open test may be extended while it is shorter than the step limit
+  // (docs/testgen.md, "Synthesis and minimisation"): steps are what a field
+  // engineer performs, so a hold of 8 hours counts as one step, not as 288,000
+  // cycles, and the soft-bypass checkpoints of a cause follow each other in
+  // one test. The cycle limit only bounds the memory of a replay.
+  bool room() const {
+    if (!open_) return false;
+    const Draft& d = drafts_.back();
+    if (!fits(d.inputs.size() + 1)) return false;
+    std::vector<std::size_t> checkpoints;
+    for (const auto& w : d.witnesses) checkpoints.push_back(w.first);
+    return detail::count_steps(d.inputs, checkpoints) < options_.max_test_steps;
+  }
+
+  // A test must load as a scenario (formats/scenario.hpp: at most
+  // kMaxScenarioCycles cycles and kMaxScenarioTagValues input values) and stay
+  // within the cycle limit, which bounds the memory of generating it (a few
+  // KB per cycle: inputs, observables and the evaluator's trace).
+  bool fits(std::size_t cycles) const {
+    const std::size_t width = std::max<std::size_t>(1, model::InputTable(m_).size());
+    return cycles <= options_.max_test_cycles && cycles <= formats::kMaxScenarioCycles &&
+           cycles <= formats::kMaxScenarioTagValues / width;
+  }
+
   // A long witness of accelerated BMC holds its inputs through each macro
   // step, operator commands included: the same command issued in every cycle
   // of a stretch, one checklist step per cycle. The run without the repeats
@@ -117,6 +150,7 @@ class GroupRun {
 
   // Replays `inputs` and marks what they witness; false when `target` is not witnessed.
   bool adopt_run(Draft& d, std::vector<model::CycleInput> inputs, std::size_t target, const std::string& method) {
+    if (!fits(inputs.size())) return false;
     checker::ConcreteTrace t = checker::run_on_runtime(m_, inputs);
     properties::Trace trace;
     trace.reserve(t.inputs.size());
@@ -167,7 +201,7 @@ class GroupRun {
   bool simulate(std::size_t i, const Goal& g) {
     std::uint64_t seed = 1469598103934665603ULL;  // FNV-1a of the objective id: fixed runs
     for (char c : results_[i].objective.id) seed = (seed ^ static_cast<unsigned char>(c)) * 1099511628211ULL;
-    if (open_ && drafts_.back().inputs.size() < options_.max_test_cycles) {
+    if (room()) {
       Draft& d = drafts_.back();
       SearchResult r = detail::explore(m_, g, d.inputs, seed);
       if (r.kind == SearchResult::Kind::Found) {

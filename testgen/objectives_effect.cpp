@@ -85,16 +85,25 @@ void intersection_objectives(ObjectiveBuilder& b, const Effect& e) {
             sif, ck(c, "active") + " and " + ek(e, "override_active") + " and not " + act + others, 2,
             {ck(c, "active"), act, ek(e, "override_active")});
     // N and S requests ignore an override (E.6): an S or N cell changed to R
-    // or V would let it through.
-    if (!overridable(x->type) && e.override_time)
+    // or V would let it through. The toggle must be one that would start an
+    // override on a V/R request (E.3 step 2): a reset-tag edge where the
+    // effect has a reset tag (the override command is refused then, O.3),
+    // no override running, the effect not bypassed, no output delay running.
+    if (!overridable(x->type) && e.override_time) {
+      const std::string ov = ek(e, "override_active");
+      const std::string toggle =
+          e.reset_tag ? "rose(" + tag_atom(*e.reset_tag) + ")"
+                      : "issued(override_effect, effect = " + std::to_string(e.id) + ")" +
+                            (m.secure_write ? " and " + tag_atom(m.secure_write->enable_tag) : "");
       b.add(id + ".not_overridden", "intersection",
             "An override of " + label(e) + " does not suppress the request of " + label(c) + " (intersection " +
                 type + ")",
             node, sif,
-            "issued(override_effect, effect = " + std::to_string(e.id) + ")" +
-                (m.secure_write ? " and " + tag_atom(m.secure_write->enable_tag) : "") + " and " +
-                ck(c, "active") + " and " + act + " and not " + ek(e, "override_active") + others,
-            2, {ck(c, "active"), act, ek(e, "override_active")});
+            toggle + " and not prev(" + ov + ") and not " + ek(e, "bypassed") +
+                (e.output_delay_ms > 0 ? " and not prev(" + ek(e, "output_delay_running") + ")" : "") + " and " +
+                ck(c, "active") + " and " + act + " and not " + ov + others,
+            2, {ck(c, "active"), act, ov});
+    }
   }
   // XooN assignment (E.2): X the smallest, the type of the lowest cause id.
   std::vector<const model::Intersection*> xoon;
@@ -269,7 +278,17 @@ void matrix_objectives(ObjectiveBuilder& b) {
   const model::DependencyGraph graph(m);
   for (const auto& c : m.causes) {
     if (c.function == model::CauseFunction::Comment) continue;
-    const auto reach = graph.reach_of({model::Node::Kind::Cause, c.id});
+    // Effects that what the cause reads (its internal references, I.3) also
+    // drives are left out: `Cause[1]` tripping cause 8 trips effect 1 through
+    // cause 1 as well, and a cause reading `Effect[1]` is active only with
+    // effect 1, so "cause active, that effect inactive" cannot happen.
+    const model::Node self{model::Node::Kind::Cause, c.id};
+    std::vector<model::Node> reach = graph.reach_of(self);
+    for (const auto& edge : graph.edges())
+      if (edge.kind == model::Edge::Kind::Reference && edge.to == self)
+        for (const auto& r : graph.reach_of(edge.from)) reach.push_back(r);
+    std::sort(reach.begin(), reach.end());
+    reach.erase(std::unique(reach.begin(), reach.end()), reach.end());
     std::vector<std::string> quiet;
     std::vector<std::string> seen{ck(c, "active")};
     for (const auto& e : m.effects) {

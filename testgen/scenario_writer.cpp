@@ -35,6 +35,17 @@ bool same_tags(const std::vector<model::TagValue>& a, const std::vector<model::T
 
 }  // namespace
 
+bool starts_step(const std::vector<model::CycleInput>& inputs, std::size_t k, bool after_checkpoint) {
+  return k == 0 || after_checkpoint || !inputs[k].commands.empty() || !same_tags(inputs[k].tags, inputs[k - 1].tags);
+}
+
+std::size_t count_steps(const std::vector<model::CycleInput>& inputs, const std::vector<std::size_t>& checkpoints) {
+  const std::set<std::size_t> at(checkpoints.begin(), checkpoints.end());
+  std::size_t steps = 0;
+  for (std::size_t k = 0; k < inputs.size(); ++k) steps += starts_step(inputs, k, k > 0 && at.count(k - 1));
+  return steps;
+}
+
 std::vector<model::Observable> field_observables(const model::Matrix& m) {
   std::vector<model::Observable> out;
   for (const auto& o : model::observables(m)) {
@@ -118,9 +129,7 @@ std::string test_scenario_json(const model::Matrix& m, const std::string& matrix
     }
     current = in.tags;
     std::size_t n = 1;
-    while (k + n - 1 < inputs.size() && !at.count(k + n - 1) && k + n < inputs.size() &&
-           inputs[k + n].commands.empty() && same_tags(inputs[k + n].tags, current))
-      ++n;
+    while (k + n < inputs.size() && !starts_step(inputs, k + n, at.count(k + n - 1) > 0)) ++n;
     const std::size_t last = k + n - 1;
     auto cp = at.find(last);
     if (cp != at.end()) step["description"] = cp->second->descriptions.empty() ? "" : cp->second->descriptions.front();

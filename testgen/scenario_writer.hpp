@@ -25,6 +25,16 @@ struct Checkpoint {
 // objectives' own: what can be seen in the field.
 std::vector<model::Observable> field_observables(const model::Matrix& m);
 
+// Whether a new step starts at cycle k: the first cycle, a cycle after a
+// checkpoint, a cycle with operator commands, or one whose inputs differ from
+// the cycle before. Any other cycle holds the inputs of the step before, so a
+// hold of hours is one step ("Wait 8 h"), however many cycles it spans.
+bool starts_step(const std::vector<model::CycleInput>& inputs, std::size_t k, bool after_checkpoint);
+
+// The number of steps test_scenario_json writes for these inputs and
+// checkpoint cycles (0-based): what bounds the length of a test.
+std::size_t count_steps(const std::vector<model::CycleInput>& inputs, const std::vector<std::size_t>& checkpoints);
+
 // `observables`: the runtime's snapshot (model::observables order) per cycle.
 // Returns the file text and the number of steps.
 std::string test_scenario_json(const model::Matrix& m, const std::string& matrix_ref, const std::string& description,

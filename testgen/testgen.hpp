@@ -105,7 +105,8 @@ struct TestgenOptions {
   double objective_budget_s = 20.0;   // search per objective (BMC, then accelerated BMC)
   double proof_budget_s = 3.0;        // infeasibility proof per objective
   int max_depth = 40;                 // BMC cycles beyond an objective's horizon
-  std::size_t max_test_cycles = 2000; // a test is not extended beyond this
+  std::size_t max_test_steps = 100;   // a test is not extended beyond this many steps
+  std::size_t max_test_cycles = 600000;   // nor beyond this many cycles (memory, ~4 KB a cycle)
   std::string matrix_ref;             // the scenarios' `matrix` key ("" = none)
   std::function<void(const ObjectiveResult&)> on_decided;  // progress, serialised
 };

@@ -2,6 +2,7 @@
 // with unique ids; a generated suite covers its objectives and replays green;
 // replay reports failures on a matrix the suite was not made for.
 #include <filesystem>
+#include <map>
 #include <set>
 
 #include <gtest/gtest.h>
@@ -12,6 +13,7 @@
 #include "properties/monitor.hpp"
 #include "properties/parser.hpp"
 #include "testgen/explore.hpp"
+#include "testgen/scenario_writer.hpp"
 #include "testgen/checklist.hpp"
 #include "testgen/testgen.hpp"
 #include "tests/support/random_matrix.hpp"
@@ -52,6 +54,23 @@ TEST(Objectives, RandomMatricesParse) {
                                                "objectives"));
 }
 
+// intersection.cI.none leaves out the effects that what the cause reads
+// also drives: compressor cause 5 reads Effect[1] (active only with effect 1),
+// cause 8 reads Cause[1] and Cause[3] (which trip every other effect), so
+// neither objective can hold with those effects inactive.
+TEST(Objectives, NoneLeavesOutEffectsTheReferencesDrive) {
+  std::map<std::string, std::string> none;
+  for (const auto& o : testgen::derive_objectives(example("compressor")))
+    if (o.id.size() > 5 && o.id.substr(o.id.size() - 5) == ".none") none[o.id] = o.property;
+  ASSERT_TRUE(none.count("intersection.c5.none"));
+  EXPECT_EQ(none["intersection.c5.none"].find("effect[1]"), std::string::npos);
+  EXPECT_NE(none["intersection.c5.none"].find("not effect[5].active"), std::string::npos);
+  EXPECT_FALSE(none.count("intersection.c8.none"));
+  // Cause 2 reads only its own transmitter: every effect it cannot reach.
+  ASSERT_TRUE(none.count("intersection.c2.none"));
+  EXPECT_NE(none["intersection.c2.none"].find("not effect[5].active"), std::string::npos);
+}
+
 TEST(Objectives, CatalogueNamesTheIssueKinds) {
   model::Matrix m = example("tank-overfill");
   std::set<std::string> kinds;
@@ -87,6 +106,17 @@ TEST(Generate, TankLowLevelGroupCoveredAndGreen) {
     ASSERT_GE(res.test, 0);
     ASSERT_LT(res.test, static_cast<int>(s.tests.size()));
   }
+  // The timed soft bypass of cause 4 (3600 s, prealarm 3000 s): its four
+  // checkpoints follow each other in one test, since a test is bounded by
+  // its steps and an hour's hold is one step ("Wait 50 min").
+  std::set<int> bypass_tests;
+  for (const auto& res : s.objectives)
+    if (res.objective.id.rfind("cause.4.bypass.", 0) == 0 && res.objective.id.find("prealarm") != std::string::npos)
+      bypass_tests.insert(res.test);
+  for (const auto& res : s.objectives)
+    if (res.objective.id.rfind("cause.4.bypass.timeout", 0) == 0) bypass_tests.insert(res.test);
+  EXPECT_EQ(bypass_tests.size(), 1u);
+  for (const auto& t : s.tests) EXPECT_LE(t.steps, o.max_test_steps + 20) << t.id;
   // A matrix with the low-level cause's limit moved: the suite catches it.
   model::Matrix mutant = m;
   for (auto& c : mutant.causes)
@@ -119,6 +149,32 @@ TEST(Explore, FindsLongDelayWitnesses) {
     ASSERT_TRUE(e.holds && e.cycle) << id;
     EXPECT_EQ(*e.cycle + 1, r.cycles.size()) << id;
   }
+}
+
+// A step holds its inputs for as many cycles as nothing changes: 10,000
+// cycles with one input change, one command and a checkpoint are 4 steps
+// (the cycle after a checkpoint starts a step), and the scenario file stays
+// small whatever the hold.
+TEST(Generate, LongHoldsAreOneStep) {
+  const model::Matrix m = example("tank-overfill");
+  std::vector<model::CycleInput> inputs(10000, model::default_cycle_input(m));
+  for (std::size_t k = 5000; k < inputs.size(); ++k) inputs[k].tags[0].value = 95.0f;
+  model::Command reset;
+  reset.op = model::CommandOp::ResetEffect;
+  reset.effect = m.effects.front().id;
+  inputs[7000].commands.push_back(reset);
+  const std::vector<std::size_t> checkpoints{5999, 9999};
+  EXPECT_EQ(testgen::detail::count_steps(inputs, checkpoints), 3u + 1u);
+  EXPECT_EQ(testgen::detail::count_steps(inputs, {}), 3u);
+  const auto run = checker::run_on_runtime(m, inputs);
+  std::vector<testgen::detail::Checkpoint> cps{{5999, {"a"}, {}}, {9999, {"b"}, {}}};
+  std::size_t steps = 0;
+  std::vector<testgen::FieldStep> field;
+  const std::string text =
+      testgen::detail::test_scenario_json(m, "", "hold", inputs, run.observables, cps, steps, field);
+  EXPECT_EQ(steps, 4u);
+  EXPECT_EQ(field.size(), 4u);
+  EXPECT_LT(text.size(), 20000u);
 }
 
 TEST(Replay, ReportsLoadErrorsAsFailedTests) {

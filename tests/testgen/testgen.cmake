@@ -7,6 +7,9 @@ if(TARGET cemv_testgen)
   # Not in make test: prints the objectives of a matrix (a developer's tool).
   add_executable(cemv_testgen_objectives ${CMAKE_CURRENT_LIST_DIR}/tool_objectives.cpp)
   target_link_libraries(cemv_testgen_objectives PRIVATE cemv_testgen)
+  # Not in make test: the benchmark's 128 x 128 matrix as JSON (bench/testgen.cmake).
+  add_executable(cemv_big_matrix_json ${CMAKE_CURRENT_LIST_DIR}/tool_big_matrix.cpp)
+  target_link_libraries(cemv_big_matrix_json PRIVATE cemv_formats cemv_testsupport)
 
   # The generated suite of every example replays 100 % green on its matrix
   # (examples/*/acceptance, written by cemv testgen), and its coverage.json
