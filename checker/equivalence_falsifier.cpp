@@ -3,6 +3,7 @@
 
 #include <algorithm>
 
+#include "checker/context_pool.hpp"
 #include "checker/random_runs.hpp"
 #include "checker/replay.hpp"
 #include "encoder/encode.hpp"
@@ -23,7 +24,7 @@ std::optional<int> RandomFalsifier::find(GroupEquivalence& out) const {
   std::vector<std::string> tags;
   std::vector<model::Command> commands;
   {
-    z3::context ctx;
+    PooledContext ctx;
     for (const auto& [m, roots] : {std::make_pair(&a_, &ra), std::make_pair(&b_, &rb)}) {
       std::shared_ptr<encoder::Encoding> enc = encoder::encode(ctx, *m, *roots);
       for (std::size_t i = 0; i < enc->tag_value.size(); ++i)

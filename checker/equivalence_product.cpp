@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include "checker/context_pool.hpp"
 #include "checker/replay.hpp"
 #include "checker/shrink.hpp"
 #include "encoder/product.hpp"
@@ -261,7 +262,7 @@ bool replay_product_run(const EquivalenceQuestion& q, const OwnedProblem& op, co
 }
 
 bool replay_product_run(const EquivalenceQuestion& q, const Trace& cex, GroupEquivalence& out, std::string& why) {
-  z3::context ctx;
+  PooledContext ctx;
   const OwnedProblem op = product_factory(q)(ctx);
   return replay_product_run(q, op, cex, out, why);
 }
