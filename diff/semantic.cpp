@@ -7,6 +7,7 @@
 #include "checker/prover.hpp"
 #include "checker/replay.hpp"
 #include "model/graph.hpp"
+#include "runtime/runtime.hpp"
 
 namespace cemv::diff {
 
@@ -153,6 +154,91 @@ std::optional<checker::GroupEquivalence> from_effect_run(const checker::GroupEqu
   return out;
 }
 
+// An output tag that does not differ in its effect's distinguishing run
+// mostly differs once the run goes on the way a field test does: the trip
+// held until the output delay has run (E.7), then the plant back at rest
+// (defaults, no commands). A latch added (N -> S), a reset or a mask changed
+// shows there, a few cycles after the effect's own difference, where a
+// search over the product from start-up must unroll the whole run (the
+// 128 x 128 benchmark: 60 s per tag, undecided). Both runtimes run the
+// continued inputs, so the answer is replayed by construction; it is not
+// proved shortest (docs/change-acceptance.md). nullopt when no continuation
+// tried shows the tag differing: the tag is then decided on its own.
+std::optional<checker::GroupEquivalence> from_continued_effect_run(const checker::GroupEquivalence& effect,
+                                                                   const checker::ObservableGroup& tag,
+                                                                   const model::Matrix& a, const model::Matrix& b) {
+  if (!effect.distinction || tag.keys.size() != 1) return std::nullopt;
+  const checker::Distinction& d = *effect.distinction;
+  if (d.run_a.inputs.empty() || d.run_b.inputs.empty()) return std::nullopt;
+  const auto oa = model::observables(a), ob = model::observables(b);
+  auto index = [&](const std::vector<model::Observable>& obs) -> std::optional<std::size_t> {
+    for (std::size_t i = 0; i < obs.size(); ++i)
+      if (obs[i].key == tag.keys.front()) return i;
+    return std::nullopt;
+  };
+  const auto ia = index(oa), ib = index(ob);
+  if (!ia || !ib) return std::nullopt;
+  const model::Effect* ea = a.find_effect(tag.roots.front().id);
+  const model::Effect* eb = b.find_effect(tag.roots.front().id);
+  if (!ea || !eb) return std::nullopt;
+  auto delay_cycles = [](const model::Matrix& m, const model::Effect& e) {
+    return static_cast<std::size_t>((e.output_delay_ms + m.cycle_ms - 1) / m.cycle_ms);
+  };
+  const std::size_t delay = std::max(delay_cycles(a, *ea), delay_cycles(b, *eb));
+  constexpr std::size_t kRelease = 8;  // cycles at rest after the hold
+  // At rest: the scenario defaults, and, for an effect that passes process
+  // data through (E.9), the same with the process value at 1, so that the
+  // released output does not rest at the value it acts with.
+  std::vector<std::pair<model::CycleInput, model::CycleInput>> rests;
+  {
+    const runtime::Runtime ra(a), rb(b);
+    rests.push_back({ra.default_input(), rb.default_input()});
+    const auto& pd = ea->process_data ? ea->process_data : eb->process_data;
+    if (pd && pd->tag) {
+      auto raised = rests.front();
+      const auto ja = ra.inputs().find(*pd->tag), jb = rb.inputs().find(*pd->tag);
+      if (ja) raised.first.tags[*ja].value = 1.0f;
+      if (jb) raised.second.tags[*jb].value = 1.0f;
+      if (ja || jb) rests.push_back(std::move(raised));
+    }
+  }
+  auto continued = [&](const std::vector<model::CycleInput>& run, const model::CycleInput& rest, std::size_t hold) {
+    std::vector<model::CycleInput> in = run;
+    model::CycleInput held = run.back();
+    held.commands.clear();
+    for (std::size_t k = 0; k < hold; ++k) in.push_back(held);
+    for (std::size_t k = 0; k < kRelease; ++k) in.push_back(rest);
+    return in;
+  };
+  for (const auto& [rest_a, rest_b] : rests)
+  for (std::size_t hold : {std::size_t{0}, delay + 1, delay + 8}) {
+    const auto ta = checker::run_on_runtime(a, continued(d.run_a.inputs, rest_a, hold));
+    const auto tb = checker::run_on_runtime(b, continued(d.run_b.inputs, rest_b, hold));
+    const std::size_t n = std::min(ta.observables.size(), tb.observables.size());
+    for (std::size_t k = 0; k < n; ++k) {
+      const int va = ta.observables[k][*ia], vb = tb.observables[k][*ib];
+      if (va == vb) continue;
+      checker::GroupEquivalence out;
+      out.group = tag.name;
+      out.verdict = EquivalenceVerdict::Differs;
+      out.method = effect.method + ", the effect's run continued";
+      checker::Distinction t;
+      t.key = tag.keys.front();
+      t.type = oa[*ia].type;
+      t.cycle = static_cast<int>(k);
+      t.value_a = va;
+      t.value_b = vb;
+      t.run_a.inputs.assign(ta.inputs.begin(), ta.inputs.begin() + static_cast<std::ptrdiff_t>(k + 1));
+      t.run_a.observables.assign(ta.observables.begin(), ta.observables.begin() + static_cast<std::ptrdiff_t>(k + 1));
+      t.run_b.inputs.assign(tb.inputs.begin(), tb.inputs.begin() + static_cast<std::ptrdiff_t>(k + 1));
+      t.run_b.observables.assign(tb.observables.begin(), tb.observables.begin() + static_cast<std::ptrdiff_t>(k + 1));
+      out.distinction = std::move(t);
+      return out;
+    }
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 bool SemanticDiff::any_changed() const {
@@ -227,6 +313,11 @@ SemanticDiff compare_behaviour(const model::Matrix& old_m, const model::Matrix& 
         if (og.roots.front().id == id) {
           if (auto same = from_effect_run(e.result, og, old_m, rel)) {
             e.outputs.push_back(std::move(*same));
+            continue;
+          }
+          if (auto later = from_continued_effect_run(e.result, og, old_m, rel)) {
+            e.outputs.push_back(std::move(*later));
+            if (out.relabelled) confirm_on_new(*e.outputs.back().distinction, rel, new_m, r, og.name);
             continue;
           }
           e.outputs.push_back(checker::decide_equivalence(old_m, rel, og, eo));

@@ -395,3 +395,44 @@ INSTANTIATE_TEST_SUITE_P(
     });
 
 }  // namespace
+
+namespace {
+
+// An N cell made S on an effect that passes process data through (E.9), with
+// DTT outputs and an output delay: the effect differs at once (latched), but
+// its outputs rest at the value they act with while the process value is 0,
+// so they differ only once the trip is released with the process value at 1.
+// The effect's run continued that way decides each tag, and the run replays.
+TEST(ChangePairs, LatchOnAPassThroughEffectShowsInItsOutputsAfterRelease) {
+  const std::string head = R"({"format": "cemv-matrix/1", "name": "LATCH", "cycle_ms": 100,
+    "causes": [{"id": 1, "name": "C1", "tags": [{"name": "X1", "ett": true}], "time": {"mode": "timed", "ms": 300}}],
+    "effects": [{"id": 1, "name": "SHUT", "output_delay_ms": 500,
+                 "tags": [{"name": "V1", "ett": false}, {"name": "V2", "ett": false}],
+                 "process_data": {"tag": "V_BPCS", "pass_through": true}}],
+    "intersections": [{"cause": 1, "effect": 1, "type": )";
+  const model::Matrix a = formats::parse_matrix(head + R"("N"}]})", "old");
+  const model::Matrix b = formats::parse_matrix(head + R"("S"}]})", "new");
+  const Compared c = compare(a, b);
+  ASSERT_EQ(c.changed_effects(), std::vector<int>{1});
+  const auto& e = c.behaviour.effects.front();
+  ASSERT_EQ(e.outputs.size(), 2u);
+  const auto obs_a = model::observables(a), obs_b = model::observables(b);
+  for (const auto& o : e.outputs) {
+    EXPECT_EQ(o.verdict, EquivalenceVerdict::Differs) << o.group << ": " << o.reason;
+    EXPECT_NE(o.method.find("the effect's run continued"), std::string::npos) << o.method;
+    ASSERT_TRUE(o.distinction) << o.group;
+    const auto& d = *o.distinction;
+    // Replayed here once more: both runtimes give the reported values in the reported cycle.
+    const auto ta = checker::run_on_runtime(a, d.run_a.inputs), tb = checker::run_on_runtime(b, d.run_b.inputs);
+    ASSERT_EQ(ta.observables.size(), static_cast<std::size_t>(d.cycle + 1));
+    std::size_t ia = 0, ib = 0;
+    while (obs_a[ia].key != d.key) ++ia;
+    while (obs_b[ib].key != d.key) ++ib;
+    EXPECT_EQ(ta.observables.back()[ia], d.value_a);
+    EXPECT_EQ(tb.observables.back()[ib], d.value_b);
+    EXPECT_NE(d.value_a, d.value_b);
+  }
+  expect_runs_show_the_difference(b, c);
+}
+
+}  // namespace
