@@ -32,6 +32,13 @@ struct CheckOptions {
   std::string out_dir;              // counterexample scenarios go here ("" = nowhere)
   bool support = true;              // compute the support of proofs
   bool standard = false;            // the properties are the standard set
+  // The engines that decide each property (checker/engines/portfolio.hpp's
+  // names; empty = the portfolio's default set). A caller that knows which
+  // answer to expect (cemv response: a proof of T, a counterexample to T - 1)
+  // leaves out the engines that cannot give it; an Unknown then means "not
+  // with these engines", and the caller asks again with the default set.
+  // Vacuity and support questions always use the default set.
+  std::vector<std::string> engines;
   // Called once per finished property (any thread, serialised by the checker).
   std::function<void(const PropertyResult&)> on_result;
   // Called when a property's decision starts, with its name (any thread,

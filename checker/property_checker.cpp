@@ -237,6 +237,7 @@ ProverResult PropertyChecker::decide(const model::Matrix& m, Goal goal, bool sli
   }
   PortfolioOptions o;
   o.preferred = preferred_;
+  if (goal == Goal::Property && !options_.engines.empty()) o.engines = options_.engines;
   // Only the property's own counterexample is shown; the witness that an
   // antecedent can hold needs no readable form.
   if (goal != Goal::Property) o.shrink_budget = std::chrono::milliseconds(0);
