@@ -1,9 +1,5 @@
 #include "response/search.hpp"
 
-#include <chrono>
-#include <cstdio>
-#include <cstdlib>
-#include <ctime>
 #include <filesystem>
 #include <stdexcept>
 
@@ -46,16 +42,9 @@ Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles,
   // steps: readable as it is, and the core-guided search over 33 to 64
   // cycles was most of the CPU of such a probe (compressor: 2 s of 2.2 s).
   if (engines == std::vector<std::string>{"accelerated-bmc"}) options.shrink_max_cycles = 0;
-  auto t0 = std::chrono::steady_clock::now();
-  std::clock_t c0 = std::clock();
   checker::CheckResult r = checker::check_properties(m, {file}, options);
   Probe out;
   const checker::PropertyResult& pr = r.properties.at(0);
-  if (std::getenv("CEMV_RESPONSE_TRACE"))
-    std::fprintf(stderr, "probe %s T=%lld %s %s wall %.2f cpu %.2f\n", name.c_str(), cycles,
-                 checker::to_string(pr.verdict), pr.method.c_str(),
-                 std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(),
-                 double(std::clock() - c0) / CLOCKS_PER_SEC);
   out.verdict = pr.verdict;
   out.reason = pr.reason;
   out.method = pr.method;
@@ -70,15 +59,18 @@ enum class Expect { Proof, Counterexample, Either };
 
 // The engines that can give the expected answer, and give it as the whole
 // portfolio would (checker/engines/portfolio.hpp): a proof is k-induction's
-// or else invariants+induction's (BMC, PDR and the accelerated unrolling
-// only cost CPU beside them); a counterexample is BMC's when it is at most
+// or else invariants+induction's (PDR and the accelerated unrolling only cost
+// CPU beside them); a counterexample is BMC's when it is at most
 // bmc_depth + 1 cycles long, else the accelerated unrolling's. A violation of
 // "within b cycles" takes at least b + 1 cycles, so for b > bmc_depth BMC
 // cannot find one. Below b = 2 the portfolio's quick k-induction could find
 // it first: the whole portfolio then. Empty = the portfolio's default set.
 std::vector<std::string> engines_for(Expect e, long long bound) {
   switch (e) {
-    case Expect::Proof: return {"k-induction", "invariants+induction"};
+    // BMC stays: when the estimate is wrong (a masked path) its shortest
+    // counterexample is the answer, found at once instead of after the
+    // provers have given up.
+    case Expect::Proof: return {"k-induction", "invariants+induction", "bmc"};
     case Expect::Counterexample:
       if (bound < 2) return {};
       if (bound > checker::PortfolioOptions{}.bmc_depth) return {"accelerated-bmc"};
