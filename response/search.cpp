@@ -90,7 +90,7 @@ Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles,
   Probe r = decide(m, p, mode, cycles, o, engines);
   const auto want = e == Expect::Proof ? checker::PropertyVerdict::Proved : checker::PropertyVerdict::Falsified;
   if (r.verdict == want || r.verdict == checker::PropertyVerdict::Vacuous) return r;
-  return decide(m, p, mode, cycles, o, {});
+  return decide(m, p, mode, cycles, o, std::vector<std::string>{});
 }
 
 }  // namespace
