@@ -131,6 +131,21 @@ void BM_BigMatrixAllPaths(benchmark::State& state) {
 }
 BENCHMARK(BM_BigMatrixAllPaths)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 
+// One SIF group of big_matrix (its first), one job: the CPU per path, from
+// which the whole job's CPU follows (`/usr/bin/time` around the run; the
+// benchmark's own CPU column counts only its main thread).
+void BM_BigMatrixFirstSif(benchmark::State& state) {
+  model::Matrix m = testsupport::big_matrix(1);
+  response::ResponseOptions o;
+  o.sifs = {m.sif_groups.begin()->first};
+  o.timeout_s = 60;
+  response::ResponseResult r;
+  for (auto _ : state) r = response::analyse(m, o);
+  count(state, r);
+  state.SetLabel("big_matrix, SIF group " + std::to_string(o.sifs.front()) + " alone");
+}
+BENCHMARK(BM_BigMatrixFirstSif)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
+
 }  // namespace
 
 int main(int argc, char** argv) {

@@ -32,6 +32,19 @@ struct CheckOptions {
   std::string out_dir;              // counterexample scenarios go here ("" = nowhere)
   bool support = true;              // compute the support of proofs
   bool standard = false;            // the properties are the standard set
+  // The engines that decide each property (checker/engines/portfolio.hpp's
+  // names; empty = the portfolio's default set). A caller that knows which
+  // answer to expect (cemv response: a proof of T, a counterexample to T - 1)
+  // leaves out the engines that cannot give it; an Unknown then means "not
+  // with these engines", and the caller asks again with the default set.
+  // Vacuity and support questions always use the default set.
+  std::vector<std::string> engines;
+  // Counterexamples longer than this are reported as the engine found them,
+  // not made readable (PortfolioOptions::shrink_max_cycles; -1 = the
+  // portfolio's default). cemv response passes 0 for its T - 1 question when
+  // only the accelerated unrolling can answer it: that trace holds its inputs
+  // over at most 8 macro steps already.
+  int shrink_max_cycles = -1;
   // Called once per finished property (any thread, serialised by the checker).
   std::function<void(const PropertyResult&)> on_result;
   // Called when a property's decision starts, with its name (any thread,

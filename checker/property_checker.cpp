@@ -237,6 +237,9 @@ ProverResult PropertyChecker::decide(const model::Matrix& m, Goal goal, bool sli
   }
   PortfolioOptions o;
   o.preferred = preferred_;
+  if (goal == Goal::Property && !options_.engines.empty()) o.engines = options_.engines;
+  if (goal == Goal::Property && options_.shrink_max_cycles >= 0)
+    o.shrink_max_cycles = static_cast<std::size_t>(options_.shrink_max_cycles);
   // Only the property's own counterexample is shown; the witness that an
   // antecedent can hold needs no readable form.
   if (goal != Goal::Property) o.shrink_budget = std::chrono::milliseconds(0);

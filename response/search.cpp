@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "checker/check.hpp"
+#include "checker/engines/portfolio.hpp"
 #include "formats/diagnostics.hpp"
 #include "properties/parser.hpp"
 
@@ -18,7 +19,8 @@ struct Probe {
   std::string scenario;
 };
 
-Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles, const SearchOptions& o) {
+Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles, const SearchOptions& o,
+             const std::vector<std::string>& engines) {
   const std::string name = property_name(p, mode);
   const std::string text = response_property_text(m, p, mode, cycles, name);
   properties::PropertyFile file;
@@ -35,6 +37,11 @@ Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles,
   options.jobs = 1;
   options.out_dir = o.out_dir;
   options.support = false;
+  options.engines = engines;
+  // The accelerated unrolling's trace holds its inputs over at most 8 macro
+  // steps: readable as it is, and the core-guided search over 33 to 64
+  // cycles was most of the CPU of such a probe (compressor: 2 s of 2.2 s).
+  if (engines == std::vector<std::string>{"accelerated-bmc"}) options.shrink_max_cycles = 0;
   checker::CheckResult r = checker::check_properties(m, {file}, options);
   Probe out;
   const checker::PropertyResult& pr = r.properties.at(0);
@@ -43,6 +50,47 @@ Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles,
   out.method = pr.method;
   if (!pr.scenario_file.empty()) out.scenario = std::filesystem::path(pr.scenario_file).filename().string();
   return out;
+}
+
+// What a probe expects, from the search's state: the estimate and the bounds
+// above a falsified one are expected to be proved, the bound below a proved
+// one to be falsified; a bisection step may go either way.
+enum class Expect { Proof, Counterexample, Either };
+
+// The engines that can give the expected answer, and give it as the whole
+// portfolio would (checker/engines/portfolio.hpp): a proof is k-induction's
+// or else invariants+induction's (PDR and the accelerated unrolling only cost
+// CPU beside them); a counterexample is BMC's when it is at most
+// bmc_depth + 1 cycles long, else the accelerated unrolling's. A violation of
+// "within b cycles" takes at least b + 1 cycles, so for b > bmc_depth BMC
+// cannot find one. Below b = 2 the portfolio's quick k-induction could find
+// it first: the whole portfolio then. Empty = the portfolio's default set.
+std::vector<std::string> engines_for(Expect e, long long bound) {
+  switch (e) {
+    // BMC stays: when the estimate is wrong (a masked path) its shortest
+    // counterexample is the answer, found at once instead of after the
+    // provers have given up.
+    case Expect::Proof: return {"k-induction", "invariants+induction", "bmc"};
+    case Expect::Counterexample:
+      if (bound < 2) return {};
+      if (bound > checker::PortfolioOptions{}.bmc_depth) return {"accelerated-bmc"};
+      return {"bmc", "accelerated-bmc"};
+    case Expect::Either: return {};
+  }
+  return {};
+}
+
+// One probe: first with the engines for the expected answer; any other
+// answer (or none) is asked again of the whole portfolio, so the answer
+// reported is always the one the whole portfolio gives.
+Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles, const SearchOptions& o,
+             Expect e) {
+  const std::vector<std::string> engines = engines_for(e, cycles);
+  if (engines.empty()) return decide(m, p, mode, cycles, o, engines);
+  Probe r = decide(m, p, mode, cycles, o, engines);
+  const auto want = e == Expect::Proof ? checker::PropertyVerdict::Proved : checker::PropertyVerdict::Falsified;
+  if (r.verdict == want || r.verdict == checker::PropertyVerdict::Vacuous) return r;
+  return decide(m, p, mode, cycles, o, std::vector<std::string>{});
 }
 
 }  // namespace
@@ -64,8 +112,8 @@ Figure least_response(const model::Matrix& m, const Path& p, Mode mode, const Se
   long long hi = -1;  // smallest bound proved (-1: none yet)
   std::string lo_scenario;
   const long long cap = search_cap(p);
-  auto probe = [&](long long t) -> bool {  // false: stop (unknown)
-    Probe r = decide(m, p, mode, t, o);
+  auto probe = [&](long long t, Expect e) -> bool {  // false: stop (unknown)
+    Probe r = decide(m, p, mode, t, o, e);
     ++f.probes;
     switch (r.verdict) {
       case checker::PropertyVerdict::Proved:
@@ -85,12 +133,12 @@ Figure least_response(const model::Matrix& m, const Path& p, Mode mode, const Se
     }
   };
   const long long first = std::min(p.estimate, cap);
-  if (!probe(first)) return f;
+  if (!probe(first, Expect::Proof)) return f;
   if (hi == first) {
-    if (first > 0 && !probe(first - 1)) return f;
+    if (first > 0 && !probe(first - 1, Expect::Counterexample)) return f;
   } else {
-    if (!probe(first + 1)) return f;
-    if (hi < 0 && first + 1 < cap && !probe(cap)) return f;
+    if (!probe(first + 1, Expect::Either)) return f;
+    if (hi < 0 && first + 1 < cap && !probe(cap, Expect::Either)) return f;
     if (hi < 0) {
       f.kind = Figure::Kind::Unbounded;
       f.cycles = lo;
@@ -100,7 +148,7 @@ Figure least_response(const model::Matrix& m, const Path& p, Mode mode, const Se
   }
   while (hi - lo > 1) {
     long long mid = lo + (hi - lo) / 2;
-    if (!probe(mid)) return f;
+    if (!probe(mid, Expect::Either)) return f;
   }
   f.kind = Figure::Kind::Exact;
   f.cycles = hi;
