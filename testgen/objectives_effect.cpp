@@ -374,7 +374,10 @@ void matrix_objectives(ObjectiveBuilder& b) {
               ", which it reaches only through internal references, stays inactive when the reference is forced"
               " (output simulation)",
           {model::Node::Kind::Cause, c->id}, first_sif(c->sif),
-          ck(*c, "active") + " and not " + ek(*e, "active") + " and not " + ek(*e, "bypassed"), 1,
+          ck(*c, "active") + " and not " + ek(*e, "active") + " and not " + ek(*e, "bypassed"),
+          // The cause's own time function first (an on-delay of 2 s is 40
+          // cycles): the horizon lets accelerated BMC hold the inputs.
+          b.cycles(c->time.ms) + 2,
           {ck(*c, "active"), ek(*e, "active")}, true);
 }
 
