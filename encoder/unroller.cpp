@@ -6,6 +6,7 @@ Unroller::Unroller(const TransitionSystem& ts) : ts_(ts), from_(ts.ctx()) {
   for (const auto& s : ts.statevars()) from_.push_back(s.var);
   for (const auto& i : ts.inputvars()) from_.push_back(i.var);
   for (const auto& s : ts.statevars()) from_.push_back(s.next_var);
+  for (unsigned i = 0; i < from_.size(); ++i) position_.emplace(from_[i].id(), i);
 }
 
 const std::vector<z3::expr>& Unroller::vars_at(int k) {
@@ -38,7 +39,15 @@ z3::expr Unroller::at(const z3::expr& e, int k) {
   return copy.substitute(from_, to);
 }
 
-z3::expr Unroller::var_at(const z3::expr& var, int k) { return at(var, k); }
+z3::expr Unroller::var_at(const z3::expr& var, int k) {
+  auto it = var.is_const() ? position_.find(var.id()) : position_.end();
+  if (it == position_.end()) return at(var, k);
+  // from_ holds the state vars, the input vars, then the next vars: a next
+  // var at k is its state var at k + 1.
+  const std::size_t current = ts_.statevars().size() + ts_.inputvars().size();
+  if (it->second < current) return vars_at(k)[it->second];
+  return vars_at(k + 1)[it->second - current];
+}
 
 z3::expr Unroller::path(int depth) {
   z3::expr_vector parts(ts_.ctx());
