@@ -1,5 +1,6 @@
 #include "mutate/mutation_report.hpp"
 
+#include <set>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -25,6 +26,37 @@ int MutationReport::exit_code() const {
   if (undecided > 0) return 3;
   return 0;
 }
+
+namespace {
+
+// A mutant that differs only by interface (docs/mutation.md, "Interface-only
+// mutants"): status fields that only one version has, e.g. a comment cause
+// made `normal` whose cells are all `*`. No test of the original can expect
+// a field the original does not have, so a suite cannot detect it by
+// replay; what the original's tests can observe is the observables both
+// versions have. When those are proved equal in every reachable state, the
+// mutant is equivalent on the common observables: its only difference is
+// its interface, which the structural comparison (`cemv diff`, the
+// signature on the checklist) shows. A difference on them is a survivor as
+// usual.
+checker::GroupEquivalence common_observables(const model::Matrix& a, const model::Matrix& b,
+                                             const checker::GroupEquivalence& by_interface,
+                                             const checker::EquivalenceOptions& eo) {
+  const checker::ObservableGroup ga = checker::whole_matrix(a, a), gb = checker::whole_matrix(b, b);
+  const std::set<std::string> in_b(gb.keys.begin(), gb.keys.end());
+  checker::ObservableGroup common;
+  common.name = "common observables";
+  for (const auto& k : ga.keys)
+    if (in_b.count(k)) common.keys.push_back(k);
+  checker::GroupEquivalence r = checker::decide_equivalence(a, b, common, eo);
+  if (r.verdict != EquivalenceVerdict::Equivalent) return r;
+  r.reason = "equivalent on every observable both versions have (" + r.method +
+             "); the interface differs: " + by_interface.reason;
+  r.method = "interface-only";
+  return r;
+}
+
+}  // namespace
 
 MutationReport mutation_report(const model::Matrix& m, const testgen::TestSuite& suite,
                                const MutationOptions& options) {
@@ -57,13 +89,18 @@ MutationReport mutation_report(const model::Matrix& m, const testgen::TestSuite&
       // lost a tag the test sets): the product decides.
       o.equivalence = checker::decide_equivalence(m, mu.matrix, checker::whole_matrix(m, mu.matrix), eo);
       const bool detected = !o.failing_tests.empty();
+      if (!detected && o.equivalence.verdict == EquivalenceVerdict::Differs && o.equivalence.method == "interface")
+        o.equivalence = common_observables(m, mu.matrix, o.equivalence, eo);
       o.status = o.equivalence.verdict == EquivalenceVerdict::Equivalent ? MutantStatus::Equivalent
                  : o.equivalence.verdict == EquivalenceVerdict::Unknown  ? MutantStatus::Undecided
                  : detected                                               ? MutantStatus::Detected
                                                                           : MutantStatus::Survived;
     }
     switch (o.status) {
-      case MutantStatus::Equivalent: ++r.equivalent; break;
+      case MutantStatus::Equivalent:
+        ++r.equivalent;
+        r.interface_only += o.equivalence.method == "interface-only";
+        break;
       case MutantStatus::Detected: ++r.detected; break;
       case MutantStatus::Survived: ++r.survived; break;
       case MutantStatus::Undecided: ++r.undecided; break;
@@ -80,7 +117,8 @@ std::string report_json(const MutationReport& r) {
   j["matrix"] = r.matrix_name;
   j["signature"] = r.signature;
   j["summary"] = json{{"mutants", r.mutants.size()}, {"equivalent", r.equivalent}, {"detected", r.detected},
-                      {"survived", r.survived}, {"undecided", r.undecided}, {"refused", r.refused}};
+                      {"survived", r.survived}, {"undecided", r.undecided}, {"refused", r.refused},
+                      {"interface_only", r.interface_only}};
   json list = json::array();
   for (const auto& o : r.mutants) {
     json x{{"id", o.id}, {"operator", o.op}, {"element", o.element}, {"description", o.description},
@@ -103,6 +141,9 @@ std::string report_markdown(const MutationReport& r) {
   o << "| mutants | equivalent | detected | survived | undecided |\n| --- | --- | --- | --- | --- |\n";
   o << "| " << r.mutants.size() << " | " << r.equivalent << " | " << r.detected << " | " << r.survived << " | "
     << r.undecided << " |\n\n";
+  if (r.interface_only)
+    o << r.interface_only << " of the equivalent mutants differ only by interface: equal on every observable both "
+                             "versions have, with status fields only one has (docs/mutation.md).\n\n";
   o << "| mutant | element | change | status | evidence |\n| --- | --- | --- | --- | --- |\n";
   for (const auto& m : r.mutants) {
     std::string ev;

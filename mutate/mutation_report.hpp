@@ -33,6 +33,9 @@ struct MutationReport {
   std::vector<MutantOutcome> mutants;
   std::size_t refused = 0;  // single-point edits that do not validate
   std::size_t equivalent = 0, detected = 0, survived = 0, undecided = 0;
+  // Of the equivalent: those equal on every common observable whose
+  // interface differs (method "interface-only", docs/mutation.md).
+  std::size_t interface_only = 0;
   // 1 some mutant survived, 3 some equivalence undecided (and none survived), 0 otherwise.
   int exit_code() const;
 };

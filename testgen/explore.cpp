@@ -81,10 +81,16 @@ SearchResult explore(const model::Matrix& m, const Goal& g, const std::vector<mo
   // (accelerated BMC's macro steps reach those).
   const std::size_t max_cycles = std::max<std::size_t>(400, 4 * static_cast<std::size_t>(std::max(0, g.horizon)));
   // Each run replays the prefix first: a long test gets fewer runs, so that
-  // one objective costs at most ~1,000,000 simulated cycles.
+  // one objective costs at most ~1,000,000 simulated cycles, and fewer on a
+  // large matrix, whose cycle costs more: 16,000,000 element-cycles (the
+  // examples, up to 16 causes and effects, keep their 1,000,000; the
+  // 128 x 128 benchmark matrix gets 62,500, where a million took minutes).
+  // A budget in work, not in seconds, keeps the runs independent of load.
+  const std::size_t elements = std::max<std::size_t>(16, m.causes.size() + m.effects.size());
+  const std::size_t budget = std::min<std::size_t>(1000000, 16000000 / elements);
   const std::size_t per_run = prefix.size() + max_cycles;
   runs = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(std::max(0, runs)),
-                                                std::max<std::size_t>(20, 1000000 / per_run)));
+                                                std::max<std::size_t>(20, budget / per_run)));
   for (int r = 0; r < runs; ++r) {
     checker::Run run = gen.next(segments, max_cycles);
     if (judge.witness(run) < 0) continue;

@@ -40,7 +40,15 @@ struct Draft {
   std::vector<model::Node> roots;
   checker::ConcreteTrace trace;
   std::vector<std::pair<std::size_t, std::size_t>> witnesses;  // (cycle, objective index)
+  bool simulates = false;  // some cycle forces a tag (simulate_tag): only `simulates` objectives follow
 };
+
+bool forces(const std::vector<model::CycleInput>& inputs) {
+  for (const auto& in : inputs)
+    for (const auto& c : in.commands)
+      if (c.op == model::CommandOp::SimulateTag) return true;
+  return false;
+}
 
 std::vector<model::Node> merge(std::vector<model::Node> a, const std::vector<model::Node>& b) {
   a.insert(a.end(), b.begin(), b.end());
@@ -61,7 +69,10 @@ class GroupRun {
       const properties::Property& p = file_.properties[i];
       t0_ = std::chrono::steady_clock::now();
       Goal g{&file_, &p, properties::property_roots(p, file_.assumptions, m_), results_[i].objective.horizon};
-      if (room() && extend(i, g)) continue;
+      // A `reference` objective is infeasible wherever no forcing interrupts
+      // the reference: proved first, so that no search budget is spent on it.
+      if (results_[i].objective.simulates && proved(i, g)) continue;
+      if (room(i) && extend(i, g)) continue;
       SearchResult r = search_.find(g, {}, options_.objective_budget_s);
       if (r.kind == SearchResult::Kind::Found && !fits(r.cycles.size())) {
         ObjectiveResult& res = results_[i];
@@ -83,7 +94,7 @@ class GroupRun {
                                      results_[i].objective.id);
       }
       if (simulate(i, g)) continue;
-      SearchResult proof = search_.prove_unreachable(g);
+      SearchResult proof = results_[i].objective.simulates ? SearchResult{} : search_.prove_unreachable(g);
       ObjectiveResult& res = results_[i];
       if (proof.kind == SearchResult::Kind::Infeasible) {
         res.status = ObjectiveStatus::Infeasible;
@@ -91,11 +102,22 @@ class GroupRun {
         res.reason = proof.reason;
       } else {
         res.status = ObjectiveStatus::Undecided;
-        res.reason = "search: " + r.reason + "; proof: " + proof.reason;
+        res.reason = "search: " + r.reason + "; proof: " + (proof.reason.empty() ? "not found first" : proof.reason);
       }
       announce(res);
     }
     return std::move(drafts_);
+  }
+
+  bool proved(std::size_t i, const Goal& g) {
+    SearchResult proof = search_.prove_unreachable(g);
+    if (proof.kind != SearchResult::Kind::Infeasible) return false;
+    ObjectiveResult& res = results_[i];
+    res.status = ObjectiveStatus::Infeasible;
+    res.method = proof.method;
+    res.reason = proof.reason;
+    announce(res);
+    return true;
   }
 
  private:
@@ -104,9 +126,12 @@ class GroupRun {
   // engineer performs, so a hold of 8 hours counts as one step, not as 288,000
   // cycles, and the soft-bypass checkpoints of a cause follow each other in
   // one test. The cycle limit only bounds the memory of a replay.
-  bool room() const {
+  bool room(std::size_t i) const {
     if (!open_) return false;
     const Draft& d = drafts_.back();
+    // After a forced output only objectives that may force follow: the others
+    // assume no simulation, and their witnesses must not lean on one.
+    if (d.simulates && !results_[i].objective.simulates) return false;
     if (!fits(d.inputs.size() + 1)) return false;
     std::vector<std::size_t> checkpoints;
     for (const auto& w : d.witnesses) checkpoints.push_back(w.first);
@@ -163,6 +188,7 @@ class GroupRun {
     };
     auto w = witness(target);
     if (!w) return false;
+    d.simulates = forces(inputs);
     d.inputs = std::move(inputs);
     d.trace = std::move(t);
     for (std::size_t i : members_) {
@@ -201,7 +227,7 @@ class GroupRun {
   bool simulate(std::size_t i, const Goal& g) {
     std::uint64_t seed = 1469598103934665603ULL;  // FNV-1a of the objective id: fixed runs
     for (char c : results_[i].objective.id) seed = (seed ^ static_cast<unsigned char>(c)) * 1099511628211ULL;
-    if (room()) {
+    if (room(i)) {
       Draft& d = drafts_.back();
       SearchResult r = detail::explore(m_, g, d.inputs, seed);
       if (r.kind == SearchResult::Kind::Found) {

@@ -22,7 +22,7 @@ class ObjectiveBuilder {
   const model::Matrix& matrix() const { return m_; }
 
   void add(const std::string& id, const std::string& kind, const std::string& text, model::Node element,
-           int sif, const std::string& expr, int horizon, std::vector<std::string> observe) {
+           int sif, const std::string& expr, int horizon, std::vector<std::string> observe, bool simulates = false) {
     Objective o;
     o.id = id;
     o.kind = kind;
@@ -34,7 +34,13 @@ class ObjectiveBuilder {
     std::string name = "obj_" + id;
     for (auto& ch : name)
       if (ch == '.') ch = '_';
-    o.property = "property " + name + " {\n  reachable " + expr + "\n}\n";
+    // Tests act like a field engineer: no simulation of tags (a simulated
+    // value would reach almost any objective without exercising the logic,
+    // docs/semantics.md O.8), except where forcing an output is the point.
+    o.property = "property " + name + " {\n" +
+                 (simulates ? std::string() : "  assume not issued(simulate_tag)\n  assume not issued(stop_simulation)\n") +
+                 "  reachable " + expr + "\n}\n";
+    o.simulates = simulates;
     o.horizon = horizon;
     o.observe = std::move(observe);
     out_.push_back(std::move(o));

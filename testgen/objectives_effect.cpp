@@ -48,6 +48,12 @@ bool any_type(IntersectionType) { return true; }
 bool latching(IntersectionType t) { return t == IntersectionType::S || t == IntersectionType::R; }
 bool overridable(IntersectionType t) { return t == IntersectionType::V || t == IntersectionType::R; }
 
+bool linked(const model::Matrix& m, int cause, const Effect& e) {
+  for (const auto* x : links(m, e))
+    if (x->cause == cause) return true;
+  return false;
+}
+
 int sif_of(const model::Matrix& m, const model::Intersection& x, const Effect& e) {
   const model::Cause* c = m.find_cause(x.cause);
   return c && !c->sif.empty() ? c->sif.front() : first_sif(e.sif);
@@ -276,6 +282,7 @@ void matrix_objectives(ObjectiveBuilder& b) {
   // Per cause: active, and no effect it cannot reach (no intersection, no
   // reference) active, so that an intersection added in an empty cell shows.
   const model::DependencyGraph graph(m);
+  std::vector<std::pair<const model::Cause*, const Effect*>> apart;  // reached through references only
   for (const auto& c : m.causes) {
     if (c.function == model::CauseFunction::Comment) continue;
     // Effects that what the cause reads (its internal references, I.3) also
@@ -293,7 +300,10 @@ void matrix_objectives(ObjectiveBuilder& b) {
     std::vector<std::string> seen{ck(c, "active")};
     for (const auto& e : m.effects) {
       if (e.function == model::EffectFunction::Comment) continue;
-      if (std::binary_search(reach.begin(), reach.end(), model::Node{model::Node::Kind::Effect, e.id})) continue;
+      if (std::binary_search(reach.begin(), reach.end(), model::Node{model::Node::Kind::Effect, e.id})) {
+        if (!linked(m, c.id, e)) apart.push_back({&c, &e});
+        continue;
+      }
       quiet.push_back("not " + ek(e, "active"));
       seen.push_back(ek(e, "active"));
     }
@@ -348,6 +358,27 @@ void matrix_objectives(ObjectiveBuilder& b) {
                 ek(*soft_effect, "soft_bypassed"),
             1, {ek(*soft_effect, "soft_bypassed")});
   }
+  // An effect that a cause reaches only through internal references (I.3:
+  // cause 6 reads `Effect[1][2]` and drives effect 2, so every cause of
+  // effect 1 trips effect 2 as well) is covered by no `none` objective, and
+  // an intersection added in that empty cell changes nothing a run without
+  // maintenance shows. Forcing the referenced output (simulate_tag, E.10)
+  // interrupts the reference: the cause active, the effect not bypassed and
+  // inactive. Where no forcing interrupts it (`Effect[x]` reads the active
+  // state itself), the objective is proved infeasible: the effect follows the
+  // cause whatever the operator does, which the report lists. Last in the
+  // catalogue, so tests that force outputs come after the others.
+  for (const auto& [c, e] : apart)
+    b.add("reference.c" + std::to_string(c->id) + ".e" + std::to_string(e->id) + ".apart", "reference",
+          label(*c) + " active while " + label(*e) +
+              ", which it reaches only through internal references, stays inactive when the reference is forced"
+              " (output simulation)",
+          {model::Node::Kind::Cause, c->id}, first_sif(c->sif),
+          ck(*c, "active") + " and not " + ek(*e, "active") + " and not " + ek(*e, "bypassed"),
+          // The cause's own time function first (an on-delay of 2 s is 40
+          // cycles): the horizon lets accelerated BMC hold the inputs.
+          b.cycles(c->time.ms) + 2,
+          {ck(*c, "active"), ek(*e, "active")}, true);
 }
 
 }  // namespace cemv::testgen::detail

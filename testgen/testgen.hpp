@@ -35,6 +35,10 @@ struct Objective {
   std::string property;  // the objective as a property: "property ID { reachable EXPR }"
   int horizon = 0;       // cycles a witness needs at least (timers): a search hint
   std::vector<std::string> observe;  // observable keys its checkpoint shows first (checklist)
+  // The witness may force tags (simulate_tag / stop_simulation, O.8, E.10):
+  // only the `reference` objectives, whose effect follows the cause through
+  // an internal reference that only an output simulation interrupts.
+  bool simulates = false;
 };
 // Every objective of the matrix, in a fixed order (element, then kind).
 std::vector<Objective> derive_objectives(const model::Matrix& m);

@@ -5,3 +5,10 @@ if(TARGET cemv_mutate)
   target_compile_definitions(test_mutants PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   gtest_discover_tests(test_mutants)
 endif()
+
+# The mutation report: reference objectives and interface-only mutants.
+if(TARGET cemv_mutation_report)
+  add_executable(test_mutation_report ${CMAKE_CURRENT_LIST_DIR}/test_mutation_report.cpp)
+  target_link_libraries(test_mutation_report PRIVATE cemv_mutation_report cemv_formats GTest::gtest_main)
+  gtest_discover_tests(test_mutation_report DISCOVERY_TIMEOUT 60)
+endif()

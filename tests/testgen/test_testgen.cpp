@@ -71,6 +71,27 @@ TEST(Objectives, NoneLeavesOutEffectsTheReferencesDrive) {
   EXPECT_NE(none["intersection.c2.none"].find("not effect[5].active"), std::string::npos);
 }
 
+// Effects reached only through internal references get a `reference`
+// objective that may force outputs; every other objective excludes forcing.
+TEST(Objectives, ReferenceObjectivesForEffectsReachedThroughReferences) {
+  std::map<std::string, testgen::Objective> ref;
+  for (const auto& o : testgen::derive_objectives(example("compressor"))) {
+    if (o.kind == "reference") ref[o.id] = o;
+    else EXPECT_NE(o.property.find("assume not issued(simulate_tag)"), std::string::npos) << o.id;
+  }
+  for (const char* id : {"reference.c1.e2.apart", "reference.c3.e2.apart", "reference.c8.e2.apart",
+                         "reference.c6.e3.apart", "reference.c6.e4.apart", "reference.c5.e2.apart"}) {
+    ASSERT_TRUE(ref.count(id)) << id;
+    EXPECT_TRUE(ref[id].simulates);
+    EXPECT_EQ(ref[id].property.find("assume"), std::string::npos) << id;
+  }
+  // Linked pairs and effects the cause cannot reach have none.
+  EXPECT_FALSE(ref.count("reference.c1.e1.apart"));
+  EXPECT_FALSE(ref.count("reference.c2.e5.apart"));
+  for (const char* name : {"burner-management", "pipeline-hipps", "tank-overfill"})
+    for (const auto& o : testgen::derive_objectives(example(name))) EXPECT_NE(o.kind, "reference") << name;
+}
+
 TEST(Objectives, CatalogueNamesTheIssueKinds) {
   model::Matrix m = example("tank-overfill");
   std::set<std::string> kinds;
