@@ -1,11 +1,17 @@
-// Z3 contexts, reused. Creating and destroying a z3::context costs
-// milliseconds (every theory plugin is set up and torn down), which was a third
-// of the time of a standard property set, whose properties each build several
-// small problems. A PooledContext borrows a context that an earlier problem
-// has finished with (its terms, solvers and models all released, so it holds
-// nothing of that problem) or makes one.
-// A re-check (checker/check/) borrows one too: the problem is built again
-// and checked by a new solver, so nothing of the engine's reaches it.
+// The Z3 context of one problem. Every borrower gets a fresh context, and
+// the context is destroyed when the problem is done.
+//
+// Contexts used to be handed on between problems: creating and destroying one
+// costs milliseconds (every theory plugin is set up and torn down), a third of
+// a standard property set's time. But a Z3 model depends on the context's
+// history (term ids are recycled, so the same problem is numbered differently
+// in a context that has held another), and which context a portfolio lane
+// was handed depended on thread timing. The same check then reported
+// different counterexamples and witnesses on two runs (pipeline-hipps'
+// req3 cover: a simulated PT_301B in one run, a soft-bypassed tag in the
+// next; `cemv response` scenarios alike). Output must be byte-identical for
+// the same inputs, so the reuse is gone: tests/checker/test_pools.cpp
+// `ContextPool.SameCheckTwiceInOneProcessGivesTheSameTraces` keeps it so.
 #pragma once
 
 #include <memory>
@@ -14,16 +20,14 @@
 
 namespace cemv::checker {
 
-// A context that Z3_interrupt has reached is not handed on: Z3 4.8.12 keeps
-// it cancelled until a later check, and a borrower must not meet that.
-// Called by the Watchdog (checker/engines/solving.hpp) when it interrupts.
+// Called by the Watchdog (checker/engines/solving.hpp) when it interrupts a
+// context. With fresh contexts nothing is handed on, so there is nothing to
+// withhold; kept so that the watchdog states what it did.
 void discard_when_released(const z3::context& ctx);
 
 class PooledContext {
  public:
   PooledContext();
-  // Back to the pool, unless an exception is unwinding through the owner: a
-  // context left in the middle of an operation is not handed on.
   ~PooledContext();
   PooledContext(const PooledContext&) = delete;
   PooledContext& operator=(const PooledContext&) = delete;
@@ -33,7 +37,6 @@ class PooledContext {
 
  private:
   std::unique_ptr<z3::context> ctx_;
-  int exceptions_;
 };
 
 }  // namespace cemv::checker
