@@ -139,37 +139,6 @@ ProblemFactory product_factory(const EquivalenceQuestion& q) {
 
 namespace {
 
-// Inputs nothing requires otherwise keep the plant at rest of matrix a (the
-// scenario defaults), good quality, no command: a readable run.
-PreferredValue plant_at_rest(const encoder::Product& p, const model::Matrix& a, const model::Matrix& b) {
-  auto preferred = std::make_shared<std::unordered_map<std::string, Value>>();
-  auto name = [](const z3::expr& v) { return v.decl().name().str(); };
-  auto add = [&](const encoder::Encoding& enc, const model::Matrix& m) {
-    const model::CycleInput defaults = model::default_cycle_input(m);
-    for (std::size_t i = 0; i < enc.tag_value.size() && i < defaults.tags.size(); ++i) {
-      if (enc.tag_value[i] && !preferred->count(name(*enc.tag_value[i]))) {
-        Value v;
-        if (enc.tag_value[i]->is_fpa()) {
-          v.is_float = true;
-          v.f = defaults.tags[i].value;
-        } else {
-          v.i = defaults.tags[i].value != 0.0f ? 1 : 0;
-        }
-        (*preferred)[name(*enc.tag_value[i])] = v;
-      }
-      if (enc.tag_bad[i]) (*preferred)[name(*enc.tag_bad[i])] = Value{};
-    }
-    for (const auto& c : enc.commands) (*preferred)[name(c.var)] = Value{};
-  };
-  add(*p.a, a);
-  add(*p.b, b);
-  return [preferred](const std::string& input) -> std::optional<Value> {
-    auto it = preferred->find(input);
-    if (it == preferred->end()) return std::nullopt;
-    return it->second;
-  };
-}
-
 // The cycle inputs of a product run for one of the two matrices: every tag
 // the matrix reads takes the run's value wherever either copy encodes it
 // (a tag in one cone only must not fall back to a default on the other
@@ -242,7 +211,7 @@ bool replay_product_run(const EquivalenceQuestion& q, const OwnedProblem& op, co
   const auto& p = *std::static_pointer_cast<encoder::Product>(op.owner);
   Limits limits;
   limits.deadline = std::min(q.deadline, std::chrono::steady_clock::now() + std::chrono::seconds(10));
-  const Trace readable = shrink_trace(op.problem, cex, plant_at_rest(p, q.a, q.b), limits);
+  const Trace readable = shrink_trace(op.problem, cex, plant_at_rest({{p.a.get(), &q.a}, {p.b.get(), &q.b}}), limits);
   std::vector<model::CycleInput> in_a = product_inputs(readable, *p.a, *p.b, q.a);
   std::vector<model::CycleInput> in_b = product_inputs(readable, *p.b, *p.a, q.b);
   ConcreteTrace ta = run_on_runtime(q.a, in_a), tb = run_on_runtime(q.b, in_b);

@@ -114,34 +114,6 @@ std::string timing_table(const model::Matrix& m, const ConcreteTrace& t,
   return out.str();
 }
 
-// What each input of an encoding should read when the violation does not
-// need otherwise: the scenario defaults (the plant at rest), good quality, no
-// operator command (docs/checker.md, "Readable counterexamples").
-PreferredValue plant_at_rest(const encoder::Encoding& enc, const model::Matrix& m) {
-  auto preferred = std::make_shared<std::unordered_map<std::string, Value>>();
-  const model::CycleInput defaults = model::default_cycle_input(m);
-  auto name = [](const z3::expr& v) { return v.decl().name().str(); };
-  for (std::size_t i = 0; i < enc.tag_value.size() && i < defaults.tags.size(); ++i) {
-    if (enc.tag_value[i]) {
-      Value v;
-      if (enc.tag_value[i]->is_fpa()) {
-        v.is_float = true;
-        v.f = defaults.tags[i].value;
-      } else {
-        v.i = defaults.tags[i].value != 0.0f ? 1 : 0;
-      }
-      (*preferred)[name(*enc.tag_value[i])] = v;
-    }
-    if (enc.tag_bad[i]) (*preferred)[name(*enc.tag_bad[i])] = Value{};
-  }
-  for (const auto& c : enc.commands) (*preferred)[name(c.var)] = Value{};
-  return [preferred](const std::string& input) -> std::optional<Value> {
-    auto it = preferred->find(input);
-    if (it == preferred->end()) return std::nullopt;
-    return it->second;
-  };
-}
-
 // The concrete evaluator's judgement of a replayed run (properties/evaluator.hpp).
 struct Judgement {
   bool violated = false;   // Invariant/Never/Response: violated; Reachable: witnessed
@@ -205,7 +177,7 @@ PropertyChecker::PropertyChecker(const model::Matrix& m, const properties::Prope
   // Input names are the same in every encoding of this matrix: the cone's
   // (with the inputs the monitor added) names every input a sliced problem
   // has; the unsliced retry leaves the others free.
-  preferred_ = plant_at_rest(*enc, m_);
+  preferred_ = plant_at_rest({{enc.get(), &m_}});
   std::vector<std::string> tags;
   for (std::size_t i = 0; i < enc->tag_value.size(); ++i)
     if (enc->tag_value[i] || enc->tag_bad[i]) tags.push_back(enc->inputs.tags()[i].name);

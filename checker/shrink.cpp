@@ -1,6 +1,8 @@
 #include "checker/shrink.hpp"
 
+#include <memory>
 #include <optional>
+#include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
@@ -21,6 +23,33 @@ z3::expr constant_of(const encoder::TransitionSystem& ts, const z3::expr& var, c
 }
 
 }  // namespace
+
+PreferredValue plant_at_rest(const std::vector<std::pair<const encoder::Encoding*, const model::Matrix*>>& parts) {
+  auto preferred = std::make_shared<std::unordered_map<std::string, Value>>();
+  auto name = [](const z3::expr& v) { return v.decl().name().str(); };
+  for (const auto& [enc, m] : parts) {
+    const model::CycleInput defaults = model::default_cycle_input(*m);
+    for (std::size_t i = 0; i < enc->tag_value.size() && i < defaults.tags.size(); ++i) {
+      if (enc->tag_value[i] && !preferred->count(name(*enc->tag_value[i]))) {
+        Value v;
+        if (enc->tag_value[i]->is_fpa()) {
+          v.is_float = true;
+          v.f = defaults.tags[i].value;
+        } else {
+          v.i = defaults.tags[i].value != 0.0f ? 1 : 0;
+        }
+        (*preferred)[name(*enc->tag_value[i])] = v;
+      }
+      if (enc->tag_bad[i]) (*preferred)[name(*enc->tag_bad[i])] = Value{};
+    }
+    for (const auto& c : enc->commands) (*preferred)[name(c.var)] = Value{};
+  }
+  return [preferred](const std::string& input) -> std::optional<Value> {
+    auto it = preferred->find(input);
+    if (it == preferred->end()) return std::nullopt;
+    return it->second;
+  };
+}
 
 // Solver calls of the grow pass (step 2 below) at most.
 constexpr std::size_t kMaxGrowTries = 150;

@@ -12,14 +12,23 @@
 #include <functional>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "checker/prover.hpp"
+#include "encoder/encode.hpp"
+#include "model/matrix.hpp"
 
 namespace cemv::checker {
 
 // The value an input should keep when nothing requires otherwise; nullopt
 // leaves the input free.
 using PreferredValue = std::function<std::optional<Value>(const std::string& input_name)>;
+
+// The plant at rest (scenario defaults, good quality, no command) for the
+// inputs of one or more encodings (the two copies of a product): the first
+// encoding that names an input gives its value.
+PreferredValue plant_at_rest(const std::vector<std::pair<const encoder::Encoding*, const model::Matrix*>>& parts);
 
 // A trace of cex.length() cycles violating `good` in its last cycle, as close
 // to the preferred values as the core-guided search gets; `cex` itself when
