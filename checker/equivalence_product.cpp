@@ -168,14 +168,7 @@ std::vector<model::CycleInput> product_inputs(const Trace& t, const encoder::Enc
       if (c == column.end() || t.cycles[k].inputs[c->second].i == 0) continue;
       if ((ci.cause && !m.find_cause(ci.cause)) || (ci.effect && !m.find_effect(ci.effect))) continue;
       if (!ci.tag_name.empty() && !table.find(ci.tag_name)) continue;
-      model::Command cmd;
-      cmd.op = ci.op;
-      cmd.cause = ci.cause;
-      cmd.effect = ci.effect;
-      cmd.tag = ci.tag;
-      cmd.group = ci.group;
-      cmd.on = ci.on;
-      cmd.tag_name = ci.tag_name;
+      model::Command cmd = ci.command();
       if (ci.value) {
         auto v = column.find(ci.value->decl().name().str());
         if (v != column.end()) cmd.value = number(t.cycles[k].inputs[v->second]);

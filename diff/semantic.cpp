@@ -117,6 +117,23 @@ void confirm_on_new(const checker::Distinction& d, const model::Matrix& rel, con
   }
 }
 
+std::optional<std::size_t> key_index(const std::vector<model::Observable>& obs, const std::string& key) {
+  for (std::size_t i = 0; i < obs.size(); ++i)
+    if (obs[i].key == key) return i;
+  return std::nullopt;
+}
+
+// An output tag's verdict "differs", with the run that shows it.
+checker::GroupEquivalence tag_differs(const checker::ObservableGroup& tag, const std::string& method,
+                                      checker::Distinction shown) {
+  checker::GroupEquivalence out;
+  out.group = tag.name;
+  out.verdict = EquivalenceVerdict::Differs;
+  out.method = method;
+  out.distinction = std::move(shown);
+  return out;
+}
+
 // An output tag's verdict from its effect's distinguishing run, when the tag
 // itself differs in that run's last cycle: the run was replayed on both
 // runtimes, and no shorter run can separate the tag, since it would separate
@@ -127,31 +144,17 @@ std::optional<checker::GroupEquivalence> from_effect_run(const checker::GroupEqu
                                                          const model::Matrix& a, const model::Matrix& b) {
   if (!effect.distinction || tag.keys.size() != 1) return std::nullopt;
   const checker::Distinction& d = *effect.distinction;
-  model::FieldType type = model::FieldType::Bool;
-  auto index = [&](const model::Matrix& m) -> std::optional<std::size_t> {
-    const auto obs = model::observables(m);
-    for (std::size_t i = 0; i < obs.size(); ++i)
-      if (obs[i].key == tag.keys.front()) {
-        type = obs[i].type;
-        return i;
-      }
-    return std::nullopt;
-  };
-  const auto ia = index(a), ib = index(b);
+  const auto oa = model::observables(a), ob = model::observables(b);
+  const auto ia = key_index(oa, tag.keys.front()), ib = key_index(ob, tag.keys.front());
   if (!ia || !ib || d.run_a.observables.empty() || d.run_b.observables.empty()) return std::nullopt;
   const int va = d.run_a.observables.back()[*ia], vb = d.run_b.observables.back()[*ib];
   if (va == vb) return std::nullopt;
-  checker::GroupEquivalence out;
-  out.group = tag.name;
-  out.verdict = EquivalenceVerdict::Differs;
-  out.method = effect.method + ", the effect's run";
   checker::Distinction t = d;
   t.key = tag.keys.front();
-  t.type = type;
+  t.type = oa[*ia].type;
   t.value_a = va;
   t.value_b = vb;
-  out.distinction = std::move(t);
-  return out;
+  return tag_differs(tag, effect.method + ", the effect's run", std::move(t));
 }
 
 // An output tag that does not differ in its effect's distinguishing run
@@ -171,12 +174,7 @@ std::optional<checker::GroupEquivalence> from_continued_effect_run(const checker
   const checker::Distinction& d = *effect.distinction;
   if (d.run_a.inputs.empty() || d.run_b.inputs.empty()) return std::nullopt;
   const auto oa = model::observables(a), ob = model::observables(b);
-  auto index = [&](const std::vector<model::Observable>& obs) -> std::optional<std::size_t> {
-    for (std::size_t i = 0; i < obs.size(); ++i)
-      if (obs[i].key == tag.keys.front()) return i;
-    return std::nullopt;
-  };
-  const auto ia = index(oa), ib = index(ob);
+  const auto ia = key_index(oa, tag.keys.front()), ib = key_index(ob, tag.keys.front());
   if (!ia || !ib) return std::nullopt;
   const model::Effect* ea = a.find_effect(tag.roots.front().id);
   const model::Effect* eb = b.find_effect(tag.roots.front().id);
@@ -218,10 +216,6 @@ std::optional<checker::GroupEquivalence> from_continued_effect_run(const checker
     for (std::size_t k = 0; k < n; ++k) {
       const int va = ta.observables[k][*ia], vb = tb.observables[k][*ib];
       if (va == vb) continue;
-      checker::GroupEquivalence out;
-      out.group = tag.name;
-      out.verdict = EquivalenceVerdict::Differs;
-      out.method = effect.method + ", the effect's run continued";
       checker::Distinction t;
       t.key = tag.keys.front();
       t.type = oa[*ia].type;
@@ -232,8 +226,7 @@ std::optional<checker::GroupEquivalence> from_continued_effect_run(const checker
       t.run_a.observables.assign(ta.observables.begin(), ta.observables.begin() + static_cast<std::ptrdiff_t>(k + 1));
       t.run_b.inputs.assign(tb.inputs.begin(), tb.inputs.begin() + static_cast<std::ptrdiff_t>(k + 1));
       t.run_b.observables.assign(tb.observables.begin(), tb.observables.begin() + static_cast<std::ptrdiff_t>(k + 1));
-      out.distinction = std::move(t);
-      return out;
+      return tag_differs(tag, effect.method + ", the effect's run continued", std::move(t));
     }
   }
   return std::nullopt;
