@@ -39,12 +39,26 @@ struct CheckOptions {
   // with these engines", and the caller asks again with the default set.
   // Vacuity and support questions always use the default set.
   std::vector<std::string> engines;
+  // With `engines` given: ask them one after another in that order, in the
+  // property's thread, the first answer final (PortfolioOptions::in_order),
+  // instead of racing them under the portfolio's preference rules.
+  bool engines_in_order = false;
   // Counterexamples longer than this are reported as the engine found them,
   // not made readable (PortfolioOptions::shrink_max_cycles; -1 = the
   // portfolio's default). cemv response passes 0 for its T - 1 question when
   // only the accelerated unrolling can answer it: that trace holds its inputs
   // over at most 8 macro steps already.
   int shrink_max_cycles = -1;
+  // Runs to try before any engine, each as cycle inputs of the whole matrix
+  // with no operator command (cemv response's demand runs: the plant at
+  // rest, then the trigger's inputs beyond their limits and held). A run is
+  // executed by the reference runtime and judged by the concrete evaluator;
+  // one that violates the property is then replayed on the property's
+  // encoding, where the monitor must be violated in the same cycle
+  // (check::replay_counterexample), and is the counterexample, with method
+  // "directed run". Every run is also kept as a witness for the vacuity
+  // question. Not tried for reachability (cover) properties.
+  std::vector<std::vector<model::CycleInput>> directed_runs;
   // Called once per finished property (any thread, serialised by the checker).
   std::function<void(const PropertyResult&)> on_result;
   // Called when a property's decision starts, with its name (any thread,

@@ -7,6 +7,7 @@
 #include <sstream>
 #include <unordered_map>
 
+#include "checker/check/recheck.hpp"
 #include "checker/context_pool.hpp"
 #include "checker/counterexample.hpp"
 #include "checker/engines/bmc.hpp"
@@ -209,7 +210,10 @@ ProverResult PropertyChecker::decide(const model::Matrix& m, Goal goal, bool sli
   }
   PortfolioOptions o;
   o.preferred = preferred_;
-  if (goal == Goal::Property && !options_.engines.empty()) o.engines = options_.engines;
+  if (goal == Goal::Property && !options_.engines.empty()) {
+    o.engines = options_.engines;
+    o.in_order = options_.engines_in_order;
+  }
   if (goal == Goal::Property && options_.shrink_max_cycles >= 0)
     o.shrink_max_cycles = static_cast<std::size_t>(options_.shrink_max_cycles);
   // Only the property's own counterexample is shown; the witness that an
@@ -237,12 +241,46 @@ bool PropertyChecker::confirm_trace(const ProverResult& r, bool sliced, Property
     out.reason = describe_disagreement(m_, runtime_trace, run_on_encoding(enc, m_, inputs));
     return false;
   }
+  report_trace(std::move(runtime_trace), j.cycle, out);
+  return true;
+}
+
+bool PropertyChecker::directed_counterexample(PropertyResult& out) const {
+  if (p_.kind == PropertyKind::Reachable) return false;
+  for (const auto& inputs : options_.directed_runs) {
+    ConcreteTrace runtime_trace = run_on_runtime(m_, inputs);
+    if (witnesses_) witnesses_->add(as_property_trace(runtime_trace));
+    Judgement j = judge(m_, file_, p_, runtime_trace);
+    if (!j.violated) continue;
+    // The runtime and the concrete evaluator found it; the encoding and the
+    // monitor must agree, as for an engine's trace the other way round.
+    std::vector<model::CycleInput> prefix(inputs.begin(), inputs.begin() + j.cycle + 1);
+    PooledContext ctx;
+    OwnedProblem op = factory(m_, Goal::Property, true)(ctx);
+    const auto& enc = *std::static_pointer_cast<encoder::Encoding>(op.owner);
+    std::optional<Trace> t = encoded_trace(prefix, enc, *op.problem.ts);
+    if (!t) continue;  // inputs the encoding does not map: leave it to the engines
+    try {
+      check::replay_counterexample(op.problem, *t);
+    } catch (const InternalError& e) {
+      throw InternalError("the runtime violates property " + p_.name + " (" + file_.file_name + ") in cycle " +
+                          std::to_string(j.cycle + 1) + " of a directed run, the encoding does not: " + e.what() +
+                          "\n" + describe_disagreement(m_, runtime_trace, run_on_encoding(enc, m_, prefix)));
+    }
+    report_trace(std::move(runtime_trace), j.cycle, out);
+    out.method = "directed run";
+    return true;
+  }
+  return false;
+}
+
+void PropertyChecker::report_trace(ConcreteTrace runtime_trace, int violation_cycle, PropertyResult& out) const {
   // The evaluator's first violation ends the run: cut what follows it.
-  std::size_t length = static_cast<std::size_t>(j.cycle) + 1;
+  std::size_t length = static_cast<std::size_t>(violation_cycle) + 1;
   runtime_trace.inputs.resize(length);
   runtime_trace.observables.resize(length);
-  inputs.resize(length);
-  out.violation_cycle = j.cycle;
+  const std::vector<model::CycleInput>& inputs = runtime_trace.inputs;
+  out.violation_cycle = violation_cycle;
   out.depth = static_cast<int>(length);
   const auto shown = observables_read(file_, p_);
   for (const auto& o : shown) out.matters.push_back(o.key);
@@ -260,7 +298,6 @@ bool PropertyChecker::confirm_trace(const ProverResult& r, bool sliced, Property
     out.scenario_file = path.string();
   }
   out.trace = std::move(runtime_trace);
-  return true;
 }
 
 void PropertyChecker::keep_witness(const ProverResult& r) const {
@@ -363,6 +400,11 @@ PropertyResult PropertyChecker::run() {
   out.file = file_.file_name;
   out.notes = p_.notes;
 
+  if (directed_counterexample(out)) {
+    out.verdict = PropertyVerdict::Falsified;
+    out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    return out;
+  }
   ProverResult r = decide(m_, Goal::Property, true, deadline_);
   bool sliced = true;
   // The portfolio has re-checked its answer in a fresh context (a proof's

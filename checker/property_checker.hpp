@@ -1,5 +1,7 @@
 // Decides one property and checks the answer before it is reported
 // (docs/checker.md). The steps, in the order run() takes them:
+//   directed runs the caller's candidate runs (CheckOptions::directed_runs),
+//                 on the runtime and then on the encoding;
 //   decide        the engine portfolio on the property's cone of influence;
 //   confirm_trace a counterexample or witness replayed on the reference
 //                 runtime and judged by the concrete evaluator (on failure the
@@ -43,6 +45,12 @@ class PropertyChecker {
   // Replays `r.cex`; fills the trace fields of `out`. False when the runtime
   // does not reproduce it.
   bool confirm_trace(const ProverResult& r, bool sliced, PropertyResult& out) const;
+  // CheckOptions::directed_runs: the first that the runtime and the encoding
+  // both show violating the property, reported; false when none does.
+  bool directed_counterexample(PropertyResult& out) const;
+  // A confirmed violation of the runtime, cut after its first violating
+  // cycle, as `out`'s trace, timing table and scenario file.
+  void report_trace(ConcreteTrace runtime_trace, int violation_cycle, PropertyResult& out) const;
   // Vacuous with the reason, or not vacuous; `undecided` when a limit left
   // the question open (the proof stands, with a note saying so).
   struct Vacuity {

@@ -48,6 +48,57 @@ std::vector<model::CycleInput> cycle_inputs(const Trace& trace, const encoder::E
   return out;
 }
 
+std::optional<Trace> encoded_trace(const std::vector<model::CycleInput>& inputs, const encoder::Encoding& enc,
+                                   const encoder::TransitionSystem& ts) {
+  // What each input variable of the system reads from a cycle's inputs.
+  enum class Source { Value, Bad, Command };
+  struct Column {
+    Source source;
+    std::size_t tag = 0;
+    bool is_float = false;
+  };
+  std::unordered_map<std::string, Column> meaning;
+  for (std::size_t i = 0; i < enc.tag_value.size(); ++i) {
+    if (enc.tag_value[i]) meaning[name_of(*enc.tag_value[i])] = {Source::Value, i, enc.tag_value[i]->is_fpa()};
+    if (enc.tag_bad[i]) meaning[name_of(*enc.tag_bad[i])] = {Source::Bad, i, false};
+  }
+  for (const auto& c : enc.commands) {
+    meaning[name_of(c.var)] = {Source::Command, 0, false};
+    if (c.value) meaning[name_of(*c.value)] = {Source::Command, 0, c.value->is_fpa()};
+  }
+  Trace t;
+  std::vector<Column> columns;
+  for (const auto& in : ts.inputvars()) {
+    auto it = meaning.find(in.name);
+    if (it == meaning.end()) return std::nullopt;
+    t.input_names.push_back(in.name);
+    columns.push_back(it->second);
+  }
+  for (const auto& cycle : inputs) {
+    if (!cycle.commands.empty()) return std::nullopt;
+    Trace::Cycle c;
+    for (const auto& col : columns) {
+      Value v;
+      if (col.source == Source::Value) {
+        const float x = cycle.tags.at(col.tag).value;
+        if (col.is_float) {
+          v.is_float = true;
+          v.f = x;
+        } else {
+          v.i = x != 0.0f ? 1 : 0;
+        }
+      } else if (col.source == Source::Bad) {
+        v.i = cycle.tags.at(col.tag).bad_quality ? 1 : 0;
+      } else {
+        v.is_float = col.is_float;  // no command issued: flag and value 0
+      }
+      c.inputs.push_back(v);
+    }
+    t.cycles.push_back(std::move(c));
+  }
+  return t;
+}
+
 ConcreteTrace run_on_runtime(const model::Matrix& m, const std::vector<model::CycleInput>& inputs) {
   runtime::Runtime rt(m);
   ConcreteTrace t;

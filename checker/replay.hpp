@@ -5,6 +5,7 @@
 // a run that the runtime reproduces is ever reported.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,14 @@ namespace cemv::checker {
 // (model::CommandOrder).
 std::vector<model::CycleInput> cycle_inputs(const Trace& trace, const encoder::Encoding& enc,
                                             const model::Matrix& m);
+
+// The inverse of cycle_inputs: runtime cycle inputs as a trace of the
+// encoding's transition system `ts` (the encoding's system, possibly with a
+// monitor compiled into it). Every input of `ts` must be an encoded tag's
+// value or quality or a command; nullopt when one is not, or when a cycle
+// issues a command (not needed by any caller yet).
+std::optional<Trace> encoded_trace(const std::vector<model::CycleInput>& inputs, const encoder::Encoding& enc,
+                                   const encoder::TransitionSystem& ts);
 
 // Runs the inputs on a fresh reference runtime.
 ConcreteTrace run_on_runtime(const model::Matrix& m, const std::vector<model::CycleInput>& inputs);

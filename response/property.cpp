@@ -152,4 +152,28 @@ std::string response_property_text(const model::Matrix& m, const Path& p, Mode m
   return s;
 }
 
+std::vector<model::CycleInput> demand_run(const model::Matrix& m, const Path& p, Mode mode, long long cycles) {
+  const model::InputTable table(m);
+  const model::CycleInput rest = model::default_cycle_input(m);
+  model::CycleInput demand = rest;
+  for (int id : p.causes) {
+    const Cause& c = *m.find_cause(id);
+    const auto tags = external_tags(c);
+    for (std::size_t k = 0; k < tags.size(); ++k) {
+      auto index = table.find(tags[k]->name);
+      if (!index) continue;
+      model::TagValue& v = demand.tags[*index];
+      v.bad_quality = mode == Mode::Degraded && !p.voted.empty() && id == p.voted.front() && k == 0;
+      if (v.bad_quality) continue;
+      if (c.input == model::InputKind::Analog && c.analog)
+        v.value = c.analog->limit;
+      else
+        v.value = tags[k]->ett ? 1.0f : 0.0f;
+    }
+  }
+  std::vector<model::CycleInput> run{rest};
+  run.resize(static_cast<std::size_t>(std::max(0LL, cycles)) + 2, demand);
+  return run;
+}
+
 }  // namespace cemv::response

@@ -4,8 +4,10 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "model/matrix.hpp"
+#include "model/vocabulary.hpp"
 #include "response/paths.hpp"
 
 namespace cemv::response {
@@ -19,5 +21,16 @@ enum class Mode { Normal, Degraded };
 // quality throughout, the others as the degraded voting needs them.
 std::string response_property_text(const model::Matrix& m, const Path& p, Mode mode, long long cycles,
                                    const std::string& name);
+
+// The demand the trigger describes, as a run for the checker to try before
+// its engines (checker::CheckOptions::directed_runs): the plant at rest in
+// the first cycle; from the second on, every external input of the trigger
+// causes beyond its limit with good quality, held for `cycles` + 1 cycles, so
+// that "within `cycles`" is violated in the last cycle if the outputs have
+// not responded by then. Degraded: the first external input of the first
+// voted trigger cause in bad quality instead. Only a candidate: what it shows
+// is replayed and checked like any counterexample, and when it does not
+// violate, the engines decide.
+std::vector<model::CycleInput> demand_run(const model::Matrix& m, const Path& p, Mode mode, long long cycles);
 
 }  // namespace cemv::response

@@ -38,6 +38,11 @@ Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles,
   options.out_dir = o.out_dir;
   options.support = false;
   options.engines = engines;
+  options.engines_in_order = !engines.empty();
+  // The demand itself first: where it shows the bound too short, no engine
+  // is needed; where it does not, it still witnesses that the trigger can
+  // rise (the proof's vacuity question).
+  options.directed_runs = {demand_run(m, p, mode, cycles)};
   // The accelerated unrolling's trace holds its inputs over at most 8 macro
   // steps: readable as it is, and the core-guided search over 33 to 64
   // cycles was most of the CPU of such a probe (compressor: 2 s of 2.2 s).
@@ -57,22 +62,21 @@ Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles,
 // one to be falsified; a bisection step may go either way.
 enum class Expect { Proof, Counterexample, Either };
 
-// The engines that can give the expected answer, and give it as the whole
-// portfolio would (checker/engines/portfolio.hpp): a proof is k-induction's
-// or else invariants+induction's (PDR and the accelerated unrolling only cost
-// CPU beside them); a counterexample is BMC's when it is at most
-// bmc_depth + 1 cycles long, else the accelerated unrolling's. A violation of
-// "within b cycles" takes at least b + 1 cycles, so for b > bmc_depth BMC
-// cannot find one. Below b = 2 the portfolio's quick k-induction could find
-// it first: the whole portfolio then. Empty = the portfolio's default set.
+// The engines that can give the expected answer, asked one after another in
+// the probe's thread (checker::CheckOptions::engines_in_order): probes run in
+// parallel over paths, so a probe needs no threads of its own, and one
+// encoding serves all its engines. A proof of T: the quick k-induction (k <= 1,
+// the portfolio's quick attempt), then invariants+induction, which proves a
+// timer's bound in one strengthened step whatever its length, then
+// k-induction to k = 10. A counterexample to T - 1 (when the demand run did
+// not show one): BMC, whose trace is a shortest one, and the accelerated
+// unrolling; above BMC's depth the accelerated unrolling alone (a violation
+// of "within b cycles" takes at least b + 1 cycles). Empty = the whole
+// portfolio, raced.
 std::vector<std::string> engines_for(Expect e, long long bound) {
   switch (e) {
-    // BMC stays: when the estimate is wrong (a masked path) its shortest
-    // counterexample is the answer, found at once instead of after the
-    // provers have given up.
-    case Expect::Proof: return {"k-induction", "invariants+induction", "bmc"};
+    case Expect::Proof: return {"invariants+induction", "k-induction"};
     case Expect::Counterexample:
-      if (bound < 2) return {};
       if (bound > checker::PortfolioOptions{}.bmc_depth) return {"accelerated-bmc"};
       return {"bmc", "accelerated-bmc"};
     case Expect::Either: return {};
@@ -80,16 +84,14 @@ std::vector<std::string> engines_for(Expect e, long long bound) {
   return {};
 }
 
-// One probe: first with the engines for the expected answer; any other
-// answer (or none) is asked again of the whole portfolio, so the answer
-// reported is always the one the whole portfolio gives.
+// One probe: first with the engines for the expected answer; when they give
+// none, the whole portfolio is asked.
 Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles, const SearchOptions& o,
              Expect e) {
   const std::vector<std::string> engines = engines_for(e, cycles);
   if (engines.empty()) return decide(m, p, mode, cycles, o, engines);
   Probe r = decide(m, p, mode, cycles, o, engines);
-  const auto want = e == Expect::Proof ? checker::PropertyVerdict::Proved : checker::PropertyVerdict::Falsified;
-  if (r.verdict == want || r.verdict == checker::PropertyVerdict::Vacuous) return r;
+  if (r.verdict != checker::PropertyVerdict::Unknown) return r;
   return decide(m, p, mode, cycles, o, std::vector<std::string>{});
 }
 

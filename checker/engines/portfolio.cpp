@@ -83,7 +83,22 @@ Portfolio::Portfolio(ProblemFactory make, PortfolioOptions options)
 ProverResult Portfolio::run(const Limits& limits) {
   const auto start = std::chrono::steady_clock::now();
   const ProblemFactory make = options_.reduce ? reducing(make_) : make_;
-  std::optional<ProverResult> answer = quick_attempt(make, limits);
+  std::optional<ProverResult> answer;
+  const bool quick = options_.quick_k >= 0 &&
+                     std::find(options_.engines.begin(), options_.engines.end(), "k-induction") != options_.engines.end();
+  if (quick || options_.in_order) {
+    PooledContext ctx;
+    OwnedProblem owned = make(ctx);
+    answer = quick_attempt(owned.problem, limits);
+    if (!answer && options_.in_order) {
+      ProverResult r = one_after_another(owned.problem, limits);
+      if (r.verdict == Verdict::Unknown) {
+        r.seconds = seconds_since(start);
+        return r;
+      }
+      answer = std::move(r);
+    }
+  }
   if (!answer) {
     ProverResult raced = race(make, limits);
     if (raced.verdict == Verdict::Unknown) {
@@ -101,24 +116,40 @@ ProverResult Portfolio::run(const Limits& limits) {
 // engine races (PortfolioOptions::quick_k). Its answer is what the race would
 // give: the same k-induction proof, or the shortest counterexample, since its
 // base case tries every depth in order.
-std::optional<ProverResult> Portfolio::quick_attempt(const ProblemFactory& make, const Limits& limits) const {
+std::optional<ProverResult> Portfolio::quick_attempt(const SafetyProblem& problem, const Limits& limits) const {
   if (options_.quick_k < 0 ||
       std::find(options_.engines.begin(), options_.engines.end(), "k-induction") == options_.engines.end())
     return std::nullopt;
-  PooledContext ctx;
-  OwnedProblem owned = make(ctx);
   Limits quick = limits;
   quick.deadline = std::min(limits.deadline, std::chrono::steady_clock::now() + options_.quick_budget);
-  ProverResult r = quick_k_induction(owned.problem, quick);
+  ProverResult r = quick_k_induction(problem, quick);
   if (r.verdict == Verdict::Unknown && options_.quick_bmc_depth > options_.quick_k && !quick.over()) {
     Limits bmc = quick;
     bmc.max_depth = std::min(limits.max_depth, options_.quick_bmc_depth);
-    r = Bmc{}.prove(owned.problem, bmc);
+    r = Bmc{}.prove(problem, bmc);
   }
   if (r.verdict == Verdict::Unknown) return std::nullopt;
   // Its base case is bounded model checking, depth by depth: a
   // counterexample found there is BMC's, a shortest one.
   if (r.verdict == Verdict::Falsified) r.method = "bmc";
+  return r;
+}
+
+ProverResult Portfolio::one_after_another(const SafetyProblem& problem, const Limits& limits) const {
+  ProverResult last;
+  std::string engines;
+  for (const auto& name : options_.engines) {
+    if (limits.over()) break;
+    Limits mine = limits;
+    if (name == "bmc") mine.max_depth = std::min(mine.max_depth, options_.bmc_depth);
+    last = make_prover(name, options_.max_k)->prove(problem, mine);
+    if (last.verdict != Verdict::Unknown) return last;
+    engines += (engines.empty() ? "" : "; ") + name + ": " + last.reason + " at k = " + std::to_string(last.k);
+  }
+  ProverResult r;
+  r.method = "portfolio";
+  r.reason = limits.over() ? "time limit" : last.reason.empty() ? "bound reached" : last.reason;
+  r.engines = engines;
   return r;
 }
 

@@ -67,6 +67,14 @@ struct PortfolioOptions {
   // antecedent hold?), BMC to this depth (0: none).
   int quick_bmc_depth = 0;
   std::chrono::milliseconds quick_budget{2000};
+  // Instead of the race: after the quick attempt, `engines` one after
+  // another in the order given, in the calling thread, on the quick attempt's
+  // problem (one encoding and one reduction for all of them); the first
+  // definitive answer is the answer. For a caller that decides many
+  // properties in parallel and knows which engine is likely to answer
+  // (cemv response: docs/response-time.md, "Method"): no thread, context or
+  // reduction per engine, and no engine running beside the one that answers.
+  bool in_order = false;
 };
 
 // A prover by name, for the portfolio and the command line; throws
@@ -81,9 +89,10 @@ class Portfolio {
   ProverResult run(const Limits& limits);
 
  private:
-  std::optional<ProverResult> quick_attempt(const ProblemFactory& make, const Limits& limits) const;
+  std::optional<ProverResult> quick_attempt(const SafetyProblem& problem, const Limits& limits) const;
   ProverResult quick_k_induction(const SafetyProblem& problem, const Limits& limits) const;
   ProverResult race(const ProblemFactory& make, const Limits& limits) const;
+  ProverResult one_after_another(const SafetyProblem& problem, const Limits& limits) const;
   ProverResult confirmed(const ProblemFactory& make, ProverResult answer, const Limits& limits,
                          std::chrono::steady_clock::time_point start) const;
   ProblemFactory make_;

@@ -10,6 +10,7 @@
 #include "checker/check.hpp"
 #include "checker/prover.hpp"
 #include "formats/matrix_json.hpp"
+#include "model/vocabulary.hpp"
 #include "properties/parser.hpp"
 
 namespace {
@@ -59,6 +60,70 @@ TEST(CheckReplay, PlantedWrongRuleIsCaughtByTheRuntimeReplay) {
     std::string what = e.what();
     EXPECT_NE(what.find("does not reproduce"), std::string::npos) << what;
     EXPECT_NE(what.find("cause[1].bypassed"), std::string::npos) << what;
+  }
+}
+
+// Directed runs (CheckOptions::directed_runs): a candidate counterexample
+// from the caller, found on the runtime, must also violate the property on
+// the encoding before it is reported.
+constexpr const char* kCause2NeverActive = R"(
+property cause2.never_active "cause 2 never trips" {
+  never cause[2].active
+}
+)";
+
+// The plant at rest, then LSHH_100 tripped for `tripped` cycles.
+std::vector<model::CycleInput> high_level_switch_run(const model::Matrix& m, int tripped) {
+  const model::CycleInput rest = model::default_cycle_input(m);
+  model::CycleInput trip = rest;
+  trip.tags[*model::InputTable(m).find("LSHH_100")].value = m.find_cause(2)->tags[0].ett ? 1.0f : 0.0f;
+  std::vector<model::CycleInput> run{rest};
+  run.resize(1 + static_cast<std::size_t>(tripped), trip);
+  return run;
+}
+
+TEST(CheckReplay, DirectedRunThatViolatesIsTheCounterexample) {
+  model::Matrix m = tank();
+  auto file = properties::parse_properties(kCause2NeverActive, m, "cause2.props");
+  checker::CheckOptions o = quick();
+  o.directed_runs = {std::vector<model::CycleInput>(3, model::default_cycle_input(m)),
+                     high_level_switch_run(m, 3)};
+  auto r = checker::check_properties(m, {file}, o);
+  const auto& p = r.properties.at(0);
+  ASSERT_EQ(p.verdict, checker::PropertyVerdict::Falsified) << p.reason;
+  EXPECT_EQ(p.method, "directed run");
+  // Cause 2 trips in the cycle its switch does: the run is cut there.
+  EXPECT_EQ(p.violation_cycle, 1);
+  ASSERT_TRUE(p.trace.has_value());
+  EXPECT_EQ(p.trace->inputs.size(), 2u);
+}
+
+TEST(CheckReplay, DirectedRunsThatDoNotViolateLeaveTheEngines) {
+  model::Matrix m = tank();
+  auto file = properties::parse_properties(kCause2NeverActive, m, "cause2.props");
+  checker::CheckOptions o = quick();
+  o.directed_runs = {std::vector<model::CycleInput>(3, model::default_cycle_input(m))};
+  auto r = checker::check_properties(m, {file}, o);
+  const auto& p = r.properties.at(0);
+  ASSERT_EQ(p.verdict, checker::PropertyVerdict::Falsified) << p.reason;
+  EXPECT_EQ(p.method, "bmc");
+}
+
+TEST(CheckReplay, DirectedRunTheEncodingDoesNotReproduceIsAnInternalError) {
+  model::Matrix m = tank();
+  auto file = properties::parse_properties(kCause2NeverActive, m, "cause2.props");
+  checker::CheckOptions o = quick();
+  o.directed_runs = {high_level_switch_run(m, 3)};
+  // The planted rule: cause 2 never reads as active in the encoding.
+  o.modify_encoding = [](encoder::Encoding& enc) {
+    enc.ts.name_term("cause[2].active", enc.ts.ctx().bool_val(false));
+  };
+  try {
+    checker::check_properties(m, {file}, o);
+    FAIL() << "a directed run the encoding does not reproduce was reported";
+  } catch (const checker::InternalError& e) {
+    std::string what = e.what();
+    EXPECT_NE(what.find("directed run, the encoding does not"), std::string::npos) << what;
   }
 }
 
