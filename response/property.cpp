@@ -152,10 +152,44 @@ std::string response_property_text(const model::Matrix& m, const Path& p, Mode m
   return s;
 }
 
+namespace {
+
+// A cause's input inside its limit: a discrete input at its healthy value, an
+// analog one at `value` unless that is beyond the limit, else clear of the
+// hysteresis band.
+float healthy_value(const Cause& c, const model::CauseTag& t, float value) {
+  if (c.input == model::InputKind::Analog && c.analog) {
+    const bool high = c.analog->limit_type == model::LimitType::High;
+    const float clear = std::max(1.0f, 2.0f * c.analog->hysteresis);
+    if (high ? value >= c.analog->limit : value <= c.analog->limit)
+      return high ? c.analog->limit - clear : c.analog->limit + clear;
+    return value;
+  }
+  return t.ett ? 0.0f : 1.0f;
+}
+
+}  // namespace
+
 std::vector<model::CycleInput> demand_run(const model::Matrix& m, const Path& p, Mode mode, long long cycles) {
   const model::InputTable table(m);
-  const model::CycleInput rest = model::default_cycle_input(m);
-  model::CycleInput demand = rest;
+  // The plant quiet: every cause's inputs inside their limits (scenario
+  // defaults need not be: a de-energise-to-trip input defaults to 0), so that
+  // nothing but the demand acts on the path's effect.
+  model::CycleInput quiet = model::default_cycle_input(m);
+  for (const auto& c : m.causes)
+    for (const auto* t : external_tags(c))
+      if (auto index = table.find(t->name)) quiet.tags[*index].value = healthy_value(c, *t, quiet.tags[*index].value);
+  // An effect on the path that passes process data through shows the BPCS
+  // value while it is not active (E.8): that value away from the active
+  // state, so that the outputs respond only when the effect does.
+  for (const auto& n : p.elements) {
+    if (n.kind != model::Node::Kind::Effect) continue;
+    const model::Effect& e = *m.find_effect(n.id);
+    if (!e.process_data || !e.process_data->pass_through || !e.process_data->tag || e.tags.empty()) continue;
+    if (auto index = table.find(*e.process_data->tag)) quiet.tags[*index].value = e.tags.front().ett ? 0.0f : 1.0f;
+  }
+  // The demand: the trigger causes' inputs beyond their limits.
+  model::CycleInput demand = quiet;
   for (int id : p.causes) {
     const Cause& c = *m.find_cause(id);
     const auto tags = external_tags(c);
@@ -163,15 +197,14 @@ std::vector<model::CycleInput> demand_run(const model::Matrix& m, const Path& p,
       auto index = table.find(tags[k]->name);
       if (!index) continue;
       model::TagValue& v = demand.tags[*index];
-      v.bad_quality = mode == Mode::Degraded && !p.voted.empty() && id == p.voted.front() && k == 0;
-      if (v.bad_quality) continue;
       if (c.input == model::InputKind::Analog && c.analog)
         v.value = c.analog->limit;
       else
         v.value = tags[k]->ett ? 1.0f : 0.0f;
+      v.bad_quality = mode == Mode::Degraded && !p.voted.empty() && id == p.voted.front() && k == 0;
     }
   }
-  std::vector<model::CycleInput> run{rest};
+  std::vector<model::CycleInput> run{quiet};
   run.resize(static_cast<std::size_t>(std::max(0LL, cycles)) + 2, demand);
   return run;
 }

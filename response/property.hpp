@@ -23,8 +23,9 @@ std::string response_property_text(const model::Matrix& m, const Path& p, Mode m
                                    const std::string& name);
 
 // The demand the trigger describes, as a run for the checker to try before
-// its engines (checker::CheckOptions::directed_runs): the plant at rest in
-// the first cycle; from the second on, every external input of the trigger
+// its engines (checker::CheckOptions::directed_runs): the plant quiet in the
+// first cycle (every cause's inputs inside their limits, pass-through process
+// values of the path's effects away from the active state); from the second on, every external input of the trigger
 // causes beyond its limit with good quality, held for `cycles` + 1 cycles, so
 // that "within `cycles`" is violated in the last cycle if the outputs have
 // not responded by then. Degraded: the first external input of the first

@@ -68,14 +68,16 @@ enum class Expect { Proof, Counterexample, Either };
 // encoding serves all its engines. A proof of T: the quick k-induction (k <= 1,
 // the portfolio's quick attempt), then invariants+induction, which proves a
 // timer's bound in one strengthened step whatever its length, then
-// k-induction to k = 10. A counterexample to T - 1 (when the demand run did
+// k-induction to k = 10, then BMC (a guess too low that the demand run did
+// not show; on a wide cone these three are raced instead, see
+// PortfolioOptions::in_order_max_states). A counterexample to T - 1 (when the demand run did
 // not show one): BMC, whose trace is a shortest one, and the accelerated
 // unrolling; above BMC's depth the accelerated unrolling alone (a violation
 // of "within b cycles" takes at least b + 1 cycles). Empty = the whole
 // portfolio, raced.
 std::vector<std::string> engines_for(Expect e, long long bound) {
   switch (e) {
-    case Expect::Proof: return {"invariants+induction", "k-induction"};
+    case Expect::Proof: return {"invariants+induction", "k-induction", "bmc"};
     case Expect::Counterexample:
       if (bound > checker::PortfolioOptions{}.bmc_depth) return {"accelerated-bmc"};
       return {"bmc", "accelerated-bmc"};

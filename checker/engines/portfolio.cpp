@@ -90,7 +90,7 @@ ProverResult Portfolio::run(const Limits& limits) {
     PooledContext ctx;
     OwnedProblem owned = make(ctx);
     answer = quick_attempt(owned.problem, limits);
-    if (!answer && options_.in_order) {
+    if (!answer && options_.in_order && owned.problem.ts->statevars().size() <= options_.in_order_max_states) {
       ProverResult r = one_after_another(owned.problem, limits);
       if (r.verdict == Verdict::Unknown) {
         r.seconds = seconds_since(start);

@@ -75,6 +75,13 @@ struct PortfolioOptions {
   // (cemv response: docs/response-time.md, "Method"): no thread, context or
   // reduction per engine, and no engine running beside the one that answers.
   bool in_order = false;
+  // ... but only for a problem of at most this many state variables after
+  // the reduction; a wider one is raced. On a wide cone the provers can use
+  // the whole time limit without an answer where BMC, racing beside them,
+  // finds the counterexample of a wrong guess in seconds (big_matrix's
+  // reference chains: 138 state variables). A count, so the choice never
+  // depends on the machine.
+  std::size_t in_order_max_states = 64;
 };
 
 // A prover by name, for the portfolio and the command line; throws

@@ -9,6 +9,7 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "checker/engines/portfolio.hpp"
 #include "checker/property_problem.hpp"
@@ -94,6 +95,20 @@ void expect_not_yet_active(const std::filesystem::path& dir, const std::string& 
   EXPECT_NE(text.find(key), std::string::npos) << text;
 }
 
+// The T - 1 counterexample is the demand itself (docs/response-time.md,
+// "Method"): one quiet cycle, then only the trigger's tag changed and held
+// for T cycles, at whose end the outputs have not yet responded.
+void expect_demand_run(const std::filesystem::path& dir, const std::string& scenario, const std::string& tag,
+                       int held) {
+  const auto j = nlohmann::json::parse(read(dir / scenario));
+  const auto& steps = j.at("steps");
+  ASSERT_EQ(steps.size(), 2u) << j.dump(1);
+  EXPECT_EQ(steps[0].at("cycles"), 1);
+  EXPECT_EQ(steps[1].at("cycles"), held);
+  ASSERT_EQ(steps[1].at("inputs").size(), 1u) << j.dump(1);
+  EXPECT_TRUE(steps[1].at("inputs").contains(tag)) << j.dump(1);
+}
+
 TEST(Response, DirectPathWithoutDelayIsTwoCycles) {
   auto m = matrix(cause(1, "S1"), effect(1, "Y1"), link(1, 1), R"("watchdog_ms": 250,)");
   auto dir = scratch("direct");
@@ -123,6 +138,7 @@ TEST(Response, OnDelayOfTwoSecondsTakesTwentyCycles) {
   EXPECT_EQ(p.logic.counterexample, "response.c1.e1.scenario.json");
   expect_replays(m, dir, p.logic.counterexample);
   expect_not_yet_active(dir, p.logic.counterexample, 1);
+  expect_demand_run(dir, p.logic.counterexample, "S1", 20);
 }
 
 TEST(Response, OutputDelayAddsItsCycles) {
