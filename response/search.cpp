@@ -19,8 +19,16 @@ struct Probe {
   std::string scenario;
 };
 
+// The engines a probe asks, in order: `narrow` on a problem of at most 64
+// state variables after the checker's reductions, `wide` on a wider one
+// (checker::CheckOptions::engines_when_wide; empty: `narrow` raced there).
+// Both empty: the whole portfolio, raced.
+struct Engines {
+  std::vector<std::string> narrow, wide;
+};
+
 Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles, const SearchOptions& o,
-             const std::vector<std::string>& engines) {
+             const Engines& engines) {
   const std::string name = property_name(p, mode);
   const std::string text = response_property_text(m, p, mode, cycles, name);
   properties::PropertyFile file;
@@ -37,8 +45,9 @@ Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles,
   options.jobs = 1;
   options.out_dir = o.out_dir;
   options.support = false;
-  options.engines = engines;
-  options.engines_in_order = !engines.empty();
+  options.engines = engines.narrow;
+  options.engines_when_wide = engines.wide;
+  options.engines_in_order = !engines.narrow.empty();
   // The demand itself first: where it shows the bound too short, no engine
   // is needed; where it does not, it still witnesses that the trigger can
   // rise (the proof's vacuity question).
@@ -46,7 +55,7 @@ Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles,
   // The accelerated unrolling's trace holds its inputs over at most 8 macro
   // steps: readable as it is, and the core-guided search over 33 to 64
   // cycles was most of the CPU of such a probe (compressor: 2 s of 2.2 s).
-  if (engines == std::vector<std::string>{"accelerated-bmc"}) options.shrink_max_cycles = 0;
+  if (engines.narrow == std::vector<std::string>{"accelerated-bmc"}) options.shrink_max_cycles = 0;
   checker::CheckResult r = checker::check_properties(m, {file}, options);
   Probe out;
   const checker::PropertyResult& pr = r.properties.at(0);
@@ -69,18 +78,18 @@ enum class Expect { Proof, Counterexample, Either };
 // the portfolio's quick attempt), then invariants+induction, which proves a
 // timer's bound in one strengthened step whatever its length, then
 // k-induction to k = 10, then BMC (a guess too low that the demand run did
-// not show; on a wide cone these three are raced instead, see
-// PortfolioOptions::in_order_max_states). A counterexample to T - 1 (when the demand run did
-// not show one): BMC, whose trace is a shortest one, and the accelerated
+// not show). On a wide cone PDR alone: there the relational miner takes the
+// whole time limit at k = 0, and PDR proves a short bound, or falsifies a
+// guess too low, in seconds. A counterexample to T - 1 (when the demand run
+// did not show one): BMC, whose trace is a shortest one, and the accelerated
 // unrolling; above BMC's depth the accelerated unrolling alone (a violation
-// of "within b cycles" takes at least b + 1 cycles). Empty = the whole
-// portfolio, raced.
-std::vector<std::string> engines_for(Expect e, long long bound) {
+// of "within b cycles" takes at least b + 1 cycles); raced on a wide cone.
+Engines engines_for(Expect e, long long bound) {
   switch (e) {
-    case Expect::Proof: return {"invariants+induction", "k-induction", "bmc"};
+    case Expect::Proof: return {{"invariants+induction", "k-induction", "bmc"}, {"pdr"}};
     case Expect::Counterexample:
-      if (bound > checker::PortfolioOptions{}.bmc_depth) return {"accelerated-bmc"};
-      return {"bmc", "accelerated-bmc"};
+      if (bound > checker::PortfolioOptions{}.bmc_depth) return {{"accelerated-bmc"}, {}};
+      return {{"bmc", "accelerated-bmc"}, {}};
     case Expect::Either: return {};
   }
   return {};
@@ -90,11 +99,11 @@ std::vector<std::string> engines_for(Expect e, long long bound) {
 // none, the whole portfolio is asked.
 Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles, const SearchOptions& o,
              Expect e) {
-  const std::vector<std::string> engines = engines_for(e, cycles);
-  if (engines.empty()) return decide(m, p, mode, cycles, o, engines);
+  const Engines engines = engines_for(e, cycles);
+  if (engines.narrow.empty()) return decide(m, p, mode, cycles, o, engines);
   Probe r = decide(m, p, mode, cycles, o, engines);
   if (r.verdict != checker::PropertyVerdict::Unknown) return r;
-  return decide(m, p, mode, cycles, o, std::vector<std::string>{});
+  return decide(m, p, mode, cycles, o, Engines{});
 }
 
 }  // namespace

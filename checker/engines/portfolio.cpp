@@ -90,8 +90,10 @@ ProverResult Portfolio::run(const Limits& limits) {
     PooledContext ctx;
     OwnedProblem owned = make(ctx);
     answer = quick_attempt(owned.problem, limits);
-    if (!answer && options_.in_order && owned.problem.ts->statevars().size() <= options_.in_order_max_states) {
-      ProverResult r = one_after_another(owned.problem, limits);
+    const bool wide = owned.problem.ts->statevars().size() > options_.in_order_max_states;
+    const std::vector<std::string>& order = wide ? options_.wide_engines : options_.engines;
+    if (!answer && options_.in_order && !order.empty()) {
+      ProverResult r = one_after_another(order, owned.problem, limits);
       if (r.verdict == Verdict::Unknown) {
         r.seconds = seconds_since(start);
         return r;
@@ -135,10 +137,11 @@ std::optional<ProverResult> Portfolio::quick_attempt(const SafetyProblem& proble
   return r;
 }
 
-ProverResult Portfolio::one_after_another(const SafetyProblem& problem, const Limits& limits) const {
+ProverResult Portfolio::one_after_another(const std::vector<std::string>& order, const SafetyProblem& problem,
+                                          const Limits& limits) const {
   ProverResult last;
   std::string engines;
-  for (const auto& name : options_.engines) {
+  for (const auto& name : order) {
     if (limits.over()) break;
     Limits mine = limits;
     if (name == "bmc") mine.max_depth = std::min(mine.max_depth, options_.bmc_depth);

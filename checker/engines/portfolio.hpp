@@ -76,12 +76,13 @@ struct PortfolioOptions {
   // reduction per engine, and no engine running beside the one that answers.
   bool in_order = false;
   // ... but only for a problem of at most this many state variables after
-  // the reduction; a wider one is raced. On a wide cone the provers can use
-  // the whole time limit without an answer where BMC, racing beside them,
-  // finds the counterexample of a wrong guess in seconds (big_matrix's
-  // reference chains: 138 state variables). A count, so the choice never
-  // depends on the machine.
+  // the reduction. A wider one is asked `wide_engines` in order instead, or,
+  // when that is empty, races `engines`. On a wide cone the relational miner
+  // of invariants+induction can use the whole time limit at k = 0 where PDR
+  // proves a short bound in a second (big_matrix's reference chains: 122-138
+  // state variables). A count, so the choice never depends on the machine.
   std::size_t in_order_max_states = 64;
+  std::vector<std::string> wide_engines;
 };
 
 // A prover by name, for the portfolio and the command line; throws
@@ -99,7 +100,8 @@ class Portfolio {
   std::optional<ProverResult> quick_attempt(const SafetyProblem& problem, const Limits& limits) const;
   ProverResult quick_k_induction(const SafetyProblem& problem, const Limits& limits) const;
   ProverResult race(const ProblemFactory& make, const Limits& limits) const;
-  ProverResult one_after_another(const SafetyProblem& problem, const Limits& limits) const;
+  ProverResult one_after_another(const std::vector<std::string>& engines, const SafetyProblem& problem,
+                                 const Limits& limits) const;
   ProverResult confirmed(const ProblemFactory& make, ProverResult answer, const Limits& limits,
                          std::chrono::steady_clock::time_point start) const;
   ProblemFactory make_;

@@ -19,6 +19,7 @@
 #include "response/analysis.hpp"
 #include "response/property.hpp"
 #include "response/report.hpp"
+#include "tests/support/random_matrix.hpp"
 
 namespace {
 
@@ -315,6 +316,25 @@ TEST(Response, InvariantEngineProvesTheBoundInOneStep) {
       EXPECT_NE(r.verdict, checker::Verdict::Proved);
     }
   }
+}
+
+// A wide cone (big_matrix's effect 8, reached from cause 19 through internal
+// references: 471 state variables, 122 after the reductions) is not asked in
+// order of invariants+induction, whose relational miner would spend the whole
+// limit at k = 0 there, but of PDR, which proves the bound at once
+// (checker::CheckOptions::engines_when_wide); its T - 1 is the demand run.
+TEST(Response, WideConeIsProvedByPdr) {
+  const model::Matrix m = testsupport::big_matrix(1);
+  response::Path path;
+  for (const auto& p : response::response_paths(m, {}))
+    if (p.effect == 8 && p.causes == std::vector<int>{19}) path = p;
+  ASSERT_EQ(path.effect, 8);
+  auto dir = scratch("wide_cone");
+  const Figure f = response::least_response(m, path, response::Mode::Normal, {60, dir.string()});
+  ASSERT_EQ(f.kind, Figure::Kind::Exact) << f.reason;
+  EXPECT_EQ(f.cycles, 2);
+  EXPECT_EQ(f.method, "pdr");
+  expect_replays(m, dir, f.counterexample);
 }
 
 }  // namespace
