@@ -17,7 +17,13 @@ struct Probe {
   std::string reason;
   std::string method;
   std::string scenario;
+  std::vector<model::CycleInput> run;  // Falsified: the counterexample's inputs, as replayed
 };
+
+// Runs the checker tries before its engines (checker::CheckOptions::
+// directed_runs): the demand run, and the counterexample of a smaller bound
+// continued with its last inputs held.
+using Runs = std::vector<std::vector<model::CycleInput>>;
 
 // The engines a probe asks, in order: `narrow` on a problem of at most 64
 // state variables after the checker's reductions, `wide` on a wider one
@@ -28,7 +34,7 @@ struct Engines {
 };
 
 Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles, const SearchOptions& o,
-             const Engines& engines) {
+             const Engines& engines, const Runs& runs) {
   const std::string name = property_name(p, mode);
   const std::string text = response_property_text(m, p, mode, cycles, name);
   properties::PropertyFile file;
@@ -51,7 +57,7 @@ Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles,
   // The demand itself first: where it shows the bound too short, no engine
   // is needed; where it does not, it still witnesses that the trigger can
   // rise (the proof's vacuity question).
-  options.directed_runs = {demand_run(m, p, mode, cycles)};
+  options.directed_runs = runs;
   // The accelerated unrolling's trace holds its inputs over at most 8 macro
   // steps: readable as it is, and the core-guided search over 33 to 64
   // cycles was most of the CPU of such a probe (compressor: 2 s of 2.2 s).
@@ -63,6 +69,7 @@ Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles,
   out.reason = pr.reason;
   out.method = pr.method;
   if (!pr.scenario_file.empty()) out.scenario = std::filesystem::path(pr.scenario_file).filename().string();
+  if (pr.verdict == checker::PropertyVerdict::Falsified && pr.trace) out.run = pr.trace->inputs;
   return out;
 }
 
@@ -98,12 +105,12 @@ Engines engines_for(Expect e, long long bound) {
 // One probe: first with the engines for the expected answer; when they give
 // none, the whole portfolio is asked.
 Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles, const SearchOptions& o,
-             Expect e) {
+             Expect e, const Runs& runs) {
   const Engines engines = engines_for(e, cycles);
-  if (engines.narrow.empty()) return decide(m, p, mode, cycles, o, engines);
-  Probe r = decide(m, p, mode, cycles, o, engines);
+  if (engines.narrow.empty()) return decide(m, p, mode, cycles, o, engines, runs);
+  Probe r = decide(m, p, mode, cycles, o, engines, runs);
   if (r.verdict != checker::PropertyVerdict::Unknown) return r;
-  return decide(m, p, mode, cycles, o, Engines{});
+  return decide(m, p, mode, cycles, o, Engines{}, runs);
 }
 
 }  // namespace
@@ -124,9 +131,20 @@ Figure least_response(const model::Matrix& m, const Path& p, Mode mode, const Se
   long long lo = -1;  // largest bound falsified (-1: none needed below 0)
   long long hi = -1;  // smallest bound proved (-1: none yet)
   std::string lo_scenario;
+  std::vector<model::CycleInput> lo_run;  // the counterexample to `lo`
   const long long cap = search_cap(p);
   auto probe = [&](long long t, Expect e) -> bool {  // false: stop (unknown)
-    Probe r = decide(m, p, mode, t, o, e);
+    Runs runs{demand_run(m, p, mode, t)};
+    // A path held off beyond `lo` by what its counterexample did (a state
+    // the demand alone does not reach) is often held off longer still: that
+    // run with its last inputs held for the t - lo cycles more that a
+    // violation of "within t" needs. Unbounded paths are then shown at the
+    // cap by one run of the runtime.
+    if (!lo_run.empty() && t > lo) {
+      runs.push_back(lo_run);
+      runs.back().resize(lo_run.size() + static_cast<std::size_t>(t - lo), lo_run.back());
+    }
+    Probe r = decide(m, p, mode, t, o, e, runs);
     ++f.probes;
     switch (r.verdict) {
       case checker::PropertyVerdict::Proved:
@@ -136,6 +154,7 @@ Figure least_response(const model::Matrix& m, const Path& p, Mode mode, const Se
       case checker::PropertyVerdict::Falsified:
         lo = t;
         lo_scenario = r.scenario;
+        lo_run = std::move(r.run);
         return true;
       case checker::PropertyVerdict::Vacuous:
         f.reason = "vacuous: " + r.reason;
