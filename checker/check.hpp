@@ -54,8 +54,8 @@ struct CheckOptions {
   // over at most 8 macro steps already.
   int shrink_max_cycles = -1;
   // Runs to try before any engine, each as cycle inputs of the whole matrix
-  // with no operator command (cemv response's demand runs: the plant at
-  // rest, then the trigger's inputs beyond their limits and held). A run is
+  // with no operator command (cemv response's demand runs: the plant quiet,
+  // then the trigger's inputs beyond their limits and held). A run is
   // executed by the reference runtime and judged by the concrete evaluator;
   // one that violates the property is then replayed on the property's
   // encoding, where the monitor must be violated in the same cycle

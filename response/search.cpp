@@ -54,9 +54,9 @@ Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles,
   options.engines = engines.narrow;
   options.engines_when_wide = engines.wide;
   options.engines_in_order = !engines.narrow.empty();
-  // The demand itself first: where it shows the bound too short, no engine
-  // is needed; where it does not, it still witnesses that the trigger can
-  // rise (the proof's vacuity question).
+  // The runs first: where one shows the bound too short, no engine is
+  // needed; where none does, they still witness that the trigger can rise
+  // (the proof's vacuity question).
   options.directed_runs = runs;
   // The accelerated unrolling's trace holds its inputs over at most 8 macro
   // steps: readable as it is, and the core-guided search over 33 to 64
