@@ -102,6 +102,10 @@ Engines engines_for(Expect e, long long bound) {
   return {};
 }
 
+// The longest run tried before the engines: 100,000 cycles (a 30 min timer
+// at 100 ms is 18,000).
+constexpr long long kMaxDirectedRunCycles = 100000;
+
 // One probe: first with the engines for the expected answer; when they give
 // none, the whole portfolio is asked.
 Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles, const SearchOptions& o,
@@ -134,13 +138,16 @@ Figure least_response(const model::Matrix& m, const Path& p, Mode mode, const Se
   std::vector<model::CycleInput> lo_run;  // the counterexample to `lo`
   const long long cap = search_cap(p);
   auto probe = [&](long long t, Expect e) -> bool {  // false: stop (unknown)
-    Runs runs{demand_run(m, p, mode, t)};
+    Runs runs;
+    // Every cycle of a run is held in memory (its inputs and, once run, every
+    // observable): beyond kMaxDirectedRunCycles the engines decide alone.
+    if (t < kMaxDirectedRunCycles) runs.push_back(demand_run(m, p, mode, t));
     // A path held off beyond `lo` by what its counterexample did (a state
     // the demand alone does not reach) is often held off longer still: that
     // run with its last inputs held for the t - lo cycles more that a
     // violation of "within t" needs. Unbounded paths are then shown at the
     // cap by one run of the runtime.
-    if (!lo_run.empty() && t > lo) {
+    if (!lo_run.empty() && t > lo && t < kMaxDirectedRunCycles) {
       runs.push_back(lo_run);
       runs.back().resize(lo_run.size() + static_cast<std::size_t>(t - lo), lo_run.back());
     }
