@@ -9,6 +9,8 @@
 
 #include "checker/check.hpp"
 #include "checker/prover.hpp"
+#include "checker/replay.hpp"
+#include "encoder/encode.hpp"
 #include "formats/matrix_json.hpp"
 #include "model/vocabulary.hpp"
 #include "properties/parser.hpp"
@@ -125,6 +127,32 @@ TEST(CheckReplay, DirectedRunTheEncodingDoesNotReproduceIsAnInternalError) {
     std::string what = e.what();
     EXPECT_NE(what.find("directed run, the encoding does not"), std::string::npos) << what;
   }
+}
+
+// encoded_trace is the inverse of cycle_inputs on what the encoding reads:
+// values (Bool and Float32) and qualities of the encoded tags; a cycle with a
+// command is refused.
+TEST(CheckReplay, EncodedTraceIsTheInverseOfCycleInputs) {
+  model::Matrix m = tank();
+  z3::context ctx;
+  auto enc = encoder::encode(ctx, m);
+  std::vector<model::CycleInput> run(3, model::default_cycle_input(m));
+  const model::InputTable table(m);
+  run[1].tags[*table.find("LT_100A")].value = 91.5f;
+  run[1].tags[*table.find("LT_100B")].bad_quality = true;
+  run[2].tags[*table.find("LSHH_100")].value = 1.0f - run[0].tags[*table.find("LSHH_100")].value;
+  std::optional<checker::Trace> t = checker::encoded_trace(run, *enc, enc->ts);
+  ASSERT_TRUE(t.has_value());
+  ASSERT_EQ(t->length(), 3u);
+  const auto back = checker::cycle_inputs(*t, *enc, m);
+  for (std::size_t k = 0; k < run.size(); ++k)
+    for (std::size_t i = 0; i < run[k].tags.size(); ++i) {
+      if (!enc->tag_value[i]) continue;
+      EXPECT_EQ(back[k].tags[i].value, run[k].tags[i].value) << "cycle " << k << " tag " << i;
+      EXPECT_EQ(back[k].tags[i].bad_quality, run[k].tags[i].bad_quality) << "cycle " << k << " tag " << i;
+    }
+  run[2].commands.push_back(model::Command{});
+  EXPECT_FALSE(checker::encoded_trace(run, *enc, enc->ts).has_value());
 }
 
 }  // namespace
