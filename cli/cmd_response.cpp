@@ -12,6 +12,7 @@
 #include "cli/commands.hpp"
 #include "cli/matrix_input.hpp"
 #include "cli/output.hpp"
+#include "cli/progress.hpp"
 #include "response/analysis.hpp"
 #include "response/report.hpp"
 
@@ -53,12 +54,20 @@ int run_response(const ResponseArgs& a) {
   o.timeout_s = a.timeout_s;
   o.jobs = a.jobs;
   o.out_dir = a.out_dir;
+  // On a terminal: paths done / total, elapsed, the running ones (cli/progress.hpp).
+  Progress progress("cemv response", 0, "paths", Progress::terminal(), std::cerr);
+  o.on_plan = [&](std::size_t paths) { progress.phase("cemv response", paths, "paths"); };
+  o.on_start = [&](const std::string& key) { progress.started(key); };
+  o.on_done = [&](const std::string& key) { progress.finished(key); };
   response::ResponseResult r;
   try {
     r = response::analyse(m, o);
+    progress.stop();
   } catch (const std::invalid_argument& e) {
+    progress.stop();
     throw BadArguments(e.what());
   } catch (const std::exception& e) {
+    progress.stop();
     bool refuted = dynamic_cast<const checker::InternalError*>(&e) != nullptr;
     std::cerr << "internal error: " << (refuted ? "" : "the checker failed: ") << e.what()
               << "\n(a bug in cemv: please report it with the matrix)\n";

@@ -1,5 +1,5 @@
-// The progress line of long commands (`check`, `testgen`, `evidence`) on a
-// terminal: items done / total, elapsed time, the current item, redrawn in
+// The progress line of long commands (`check`, `testgen`, `evidence`,
+// `response`) on a terminal: items done / total, elapsed time, the current item, redrawn in
 // place on standard error about twice a second. Only when standard error is a
 // terminal and the command is not --quiet: in a pipe, a CI log or a file
 // nothing is written, so machine-readable output and the files cemv writes

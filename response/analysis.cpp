@@ -88,13 +88,21 @@ ResponseResult analyse(const model::Matrix& m, const ResponseOptions& o) {
   SearchOptions so{o.timeout_s, o.out_dir};
 
   std::atomic<std::size_t> next{0};
-  std::mutex failure_mutex;
+  std::mutex failure_mutex;  // also serialises the progress callbacks
   std::exception_ptr failure;
+  if (o.on_plan) o.on_plan(unique.size());
+  auto report = [&](const std::function<void(const std::string&)>& f, std::size_t i) {
+    if (!f) return;
+    std::lock_guard<std::mutex> lock(failure_mutex);
+    f(unique[i]->key());
+  };
   auto worker = [&] {
     for (std::size_t i; (i = next++) < unique.size();) {
       try {
+        report(o.on_start, i);
         figures[i].logic = least_response(m, *unique[i], Mode::Normal, so);
         if (!unique[i]->voted.empty()) figures[i].degraded = least_response(m, *unique[i], Mode::Degraded, so);
+        report(o.on_done, i);
       } catch (...) {
         std::lock_guard<std::mutex> lock(failure_mutex);
         if (!failure) failure = std::current_exception();

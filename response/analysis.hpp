@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,6 +21,13 @@ struct ResponseOptions {
   double timeout_s = 0.0;     // per decided property
   int jobs = 1;               // paths decided in parallel
   std::string out_dir;        // counterexample scenarios ("" = none written)
+  // The command line's progress line (serialised, from any worker thread):
+  // once with the number of paths to decide (a path in several groups is
+  // decided once), then when each path's figures start and are done, with
+  // the path's key ("c1.e2").
+  std::function<void(std::size_t paths)> on_plan;
+  std::function<void(const std::string& key)> on_start;
+  std::function<void(const std::string& key)> on_done;
 };
 
 enum class Verdict { Ok, Over, NoPst, Unbounded, Unknown };

@@ -3,7 +3,8 @@
 if(TARGET cemv_response)
   add_executable(test_response ${CMAKE_CURRENT_LIST_DIR}/test_response.cpp)
   target_link_libraries(test_response PRIVATE cemv_response cemv_testsupport GTest::gtest_main)
-  target_compile_definitions(test_response PRIVATE CEMV_BINARY="$<TARGET_FILE:cemv>")
+  target_compile_definitions(test_response PRIVATE CEMV_BINARY="$<TARGET_FILE:cemv>"
+                             CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   add_dependencies(test_response cemv)
   gtest_discover_tests(test_response DISCOVERY_MODE PRE_TEST PROPERTIES TIMEOUT 600)
 

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
 
@@ -335,6 +336,29 @@ TEST(Response, WideConeIsProvedByPdr) {
   EXPECT_EQ(f.cycles, 2);
   EXPECT_EQ(f.method, "pdr");
   expect_replays(m, dir, f.counterexample);
+}
+
+// The command line's progress line is fed by the analysis: the number of
+// paths once, then each path's start and end, each path once (a path in two
+// groups is decided once), two jobs at a time.
+TEST(Response, ProgressSeesEveryPathOnce) {
+  auto m = formats::load_matrix(std::filesystem::path(CEMV_SOURCE_DIR) / "examples/tank-overfill/matrix.json");
+  response::ResponseOptions o;
+  o.timeout_s = 120;
+  o.jobs = 2;
+  std::size_t planned = 0;
+  std::vector<std::string> started, done;
+  o.on_plan = [&](std::size_t n) { planned = n; };
+  o.on_start = [&](const std::string& key) { started.push_back(key); };
+  o.on_done = [&](const std::string& key) { done.push_back(key); };
+  const auto r = response::analyse(m, o);
+  std::set<std::string> keys;
+  for (const auto& p : r.paths) keys.insert(p.path.key());
+  EXPECT_EQ(planned, keys.size());
+  EXPECT_EQ(std::set<std::string>(started.begin(), started.end()), keys);
+  EXPECT_EQ(std::set<std::string>(done.begin(), done.end()), keys);
+  EXPECT_EQ(started.size(), keys.size());
+  EXPECT_EQ(done.size(), keys.size());
 }
 
 }  // namespace
