@@ -43,9 +43,9 @@ struct CheckOptions {
   // property's thread, the first answer final (PortfolioOptions::in_order),
   // instead of racing them under the portfolio's preference rules.
   bool engines_in_order = false;
-  // With engines_in_order: the engines asked in order, instead, on a problem
-  // wider than 64 state variables after the reduction (empty: `engines`
-  // raced there; PortfolioOptions::wide_engines).
+  // The engines asked in order, instead, on a problem wider than 64 state
+  // variables after the reduction, whatever `engines` and engines_in_order
+  // say (empty: those apply there too; PortfolioOptions::wide_engines).
   std::vector<std::string> engines_when_wide;
   // Counterexamples longer than this are reported as the engine found them,
   // not made readable (PortfolioOptions::shrink_max_cycles; -1 = the

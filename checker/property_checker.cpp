@@ -213,8 +213,8 @@ ProverResult PropertyChecker::decide(const model::Matrix& m, Goal goal, bool sli
   if (goal == Goal::Property && !options_.engines.empty()) {
     o.engines = options_.engines;
     o.in_order = options_.engines_in_order;
-    o.wide_engines = options_.engines_when_wide;
   }
+  if (goal == Goal::Property) o.wide_engines = options_.engines_when_wide;
   if (goal == Goal::Property && options_.shrink_max_cycles >= 0)
     o.shrink_max_cycles = static_cast<std::size_t>(options_.shrink_max_cycles);
   // Only the property's own counterexample is shown; the witness that an

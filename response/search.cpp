@@ -1,5 +1,6 @@
 #include "response/search.hpp"
 
+#include <chrono>
 #include <filesystem>
 #include <stdexcept>
 
@@ -97,7 +98,10 @@ Engines engines_for(Expect e, long long bound) {
     case Expect::Counterexample:
       if (bound > checker::PortfolioOptions{}.bmc_depth) return {{"accelerated-bmc"}, {}};
       return {{"bmc", "accelerated-bmc"}, {}};
-    case Expect::Either: return {};
+    // Either answer: the whole portfolio, raced; on a wide cone PDR, which
+    // gives either (the race would hold a PDR proof until invariants+
+    // induction, earlier in its order, has used the whole time limit).
+    case Expect::Either: return {{}, {"pdr"}};
   }
   return {};
 }
@@ -107,14 +111,21 @@ Engines engines_for(Expect e, long long bound) {
 constexpr long long kMaxDirectedRunCycles = 100000;
 
 // One probe: first with the engines for the expected answer; when they give
-// none, the whole portfolio is asked.
+// none, the whole portfolio is asked, within what is left of the probe's
+// time limit (--timeout is a hard limit per probe: none left, the probe is
+// unknown).
 Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles, const SearchOptions& o,
              Expect e, const Runs& runs) {
   const Engines engines = engines_for(e, cycles);
-  if (engines.narrow.empty()) return decide(m, p, mode, cycles, o, engines, runs);
+  const auto start = std::chrono::steady_clock::now();
   Probe r = decide(m, p, mode, cycles, o, engines, runs);
-  if (r.verdict != checker::PropertyVerdict::Unknown) return r;
-  return decide(m, p, mode, cycles, o, Engines{}, runs);
+  if (r.verdict != checker::PropertyVerdict::Unknown || (engines.narrow.empty() && engines.wide.empty())) return r;
+  SearchOptions rest = o;
+  if (o.timeout_s > 0) {
+    rest.timeout_s = o.timeout_s - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (rest.timeout_s < 0.001) return r;
+  }
+  return decide(m, p, mode, cycles, rest, Engines{}, runs);
 }
 
 }  // namespace

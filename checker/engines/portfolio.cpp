@@ -86,14 +86,16 @@ ProverResult Portfolio::run(const Limits& limits) {
   std::optional<ProverResult> answer;
   const bool quick = options_.quick_k >= 0 &&
                      std::find(options_.engines.begin(), options_.engines.end(), "k-induction") != options_.engines.end();
-  if (quick || options_.in_order) {
+  if (quick || options_.in_order || !options_.wide_engines.empty()) {
     PooledContext ctx;
     OwnedProblem owned = make(ctx);
     answer = quick_attempt(owned.problem, limits);
     const bool wide = owned.problem.ts->statevars().size() > options_.in_order_max_states;
-    const std::vector<std::string>& order = wide ? options_.wide_engines : options_.engines;
-    if (!answer && options_.in_order && !order.empty()) {
-      ProverResult r = one_after_another(order, owned.problem, limits);
+    const std::vector<std::string>* order = nullptr;
+    if (wide && !options_.wide_engines.empty()) order = &options_.wide_engines;
+    else if (!wide && options_.in_order) order = &options_.engines;
+    if (!answer && order) {
+      ProverResult r = one_after_another(*order, owned.problem, limits);
       if (r.verdict == Verdict::Unknown) {
         r.seconds = seconds_since(start);
         return r;

@@ -76,8 +76,9 @@ struct PortfolioOptions {
   // reduction per engine, and no engine running beside the one that answers.
   bool in_order = false;
   // ... but only for a problem of at most this many state variables after
-  // the reduction. A wider one is asked `wide_engines` in order instead, or,
-  // when that is empty, races `engines`. On a wide cone the relational miner
+  // the reduction. A wider one is asked `wide_engines` in order instead
+  // (whether or not `in_order` is set), or, when that is empty, races
+  // `engines`. On a wide cone the relational miner
   // of invariants+induction can use the whole time limit at k = 0 where PDR
   // proves a short bound in a second (big_matrix's reference chains: 122-138
   // state variables). A count, so the choice never depends on the machine.

@@ -4,6 +4,7 @@
 // counterexample replayed on the runtime on the way (check_properties throws
 // InternalError otherwise).
 #include <filesystem>
+#include <set>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -94,9 +95,23 @@ TEST(Determinism, SameCheckTwiceInOneProcessGivesTheSameTraces) {
   options.property_timeout_s = 60;
   options.support = false;
   options.jobs = 2;
-  auto describe = [](const checker::CheckResult& r) {
+  // A time limit is the one thing allowed to change an answer between runs
+  // (req4 takes 1.7 s on a quiet machine, but has run past 60 s on a loaded
+  // one): a property left unknown by either run is not compared. At least
+  // the cover properties, witnessed in well under a second, always are.
+  const auto first_result = checker::check_properties(m, {file}, options);
+  const auto second_result = checker::check_properties(m, {file}, options);
+  ASSERT_EQ(first_result.properties.size(), second_result.properties.size());
+  std::set<std::string> compared;
+  for (std::size_t i = 0; i < first_result.properties.size(); ++i)
+    if (first_result.properties[i].verdict != checker::PropertyVerdict::Unknown &&
+        second_result.properties[i].verdict != checker::PropertyVerdict::Unknown)
+      compared.insert(first_result.properties[i].name);
+  EXPECT_GE(compared.size(), 5u);
+  auto describe = [&](const checker::CheckResult& r) {
     std::string s;
     for (const auto& p : r.properties) {
+      if (!compared.count(p.name)) continue;
       s += p.name + " " + std::to_string(static_cast<int>(p.verdict)) + " " + p.method + " " +
            std::to_string(p.depth) + "\n";
       if (!p.trace) continue;
@@ -111,9 +126,7 @@ TEST(Determinism, SameCheckTwiceInOneProcessGivesTheSameTraces) {
     }
     return s;
   };
-  const std::string first = describe(checker::check_properties(m, {file}, options));
-  const std::string second = describe(checker::check_properties(m, {file}, options));
-  EXPECT_EQ(first, second);
+  EXPECT_EQ(describe(first_result), describe(second_result));
 }
 
 }  // namespace
