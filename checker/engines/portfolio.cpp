@@ -84,9 +84,7 @@ ProverResult Portfolio::run(const Limits& limits) {
   const auto start = std::chrono::steady_clock::now();
   const ProblemFactory make = options_.reduce ? reducing(make_) : make_;
   std::optional<ProverResult> answer;
-  const bool quick = options_.quick_k >= 0 &&
-                     std::find(options_.engines.begin(), options_.engines.end(), "k-induction") != options_.engines.end();
-  if (quick || options_.in_order || !options_.wide_engines.empty()) {
+  if (wants_quick_attempt() || options_.in_order || !options_.wide_engines.empty()) {
     PooledContext ctx;
     OwnedProblem owned = make(ctx);
     answer = quick_attempt(owned.problem, limits);
@@ -120,10 +118,13 @@ ProverResult Portfolio::run(const Limits& limits) {
 // engine races (PortfolioOptions::quick_k). Its answer is what the race would
 // give: the same k-induction proof, or the shortest counterexample, since its
 // base case tries every depth in order.
+bool Portfolio::wants_quick_attempt() const {
+  return options_.quick_k >= 0 &&
+         std::find(options_.engines.begin(), options_.engines.end(), "k-induction") != options_.engines.end();
+}
+
 std::optional<ProverResult> Portfolio::quick_attempt(const SafetyProblem& problem, const Limits& limits) const {
-  if (options_.quick_k < 0 ||
-      std::find(options_.engines.begin(), options_.engines.end(), "k-induction") == options_.engines.end())
-    return std::nullopt;
+  if (!wants_quick_attempt()) return std::nullopt;
   Limits quick = limits;
   quick.deadline = std::min(limits.deadline, std::chrono::steady_clock::now() + options_.quick_budget);
   ProverResult r = quick_k_induction(problem, quick);

@@ -98,6 +98,7 @@ class Portfolio {
   ProverResult run(const Limits& limits);
 
  private:
+  bool wants_quick_attempt() const;  // quick_k set and k-induction among the engines
   std::optional<ProverResult> quick_attempt(const SafetyProblem& problem, const Limits& limits) const;
   ProverResult quick_k_induction(const SafetyProblem& problem, const Limits& limits) const;
   ProverResult race(const ProblemFactory& make, const Limits& limits) const;
