@@ -87,6 +87,19 @@ class Walker {
   static bool is_start(const Cause& c) {
     return c.function != model::CauseFunction::Comment && external_tags(c) >= votes_needed(c);
   }
+  // Whether the reference tag trips its cause when the referenced element is
+  // active, so that a demand upstream travels on (I.3, C.3). `Cause[x]` and
+  // `Effect[x]` read 1 when active: only an energize-to-trip tag trips on
+  // that. `Effect[x][y]` reads output tag y, which is at its safe value when
+  // the effect responds (E.9): the tag trips on it when both have the same
+  // `ett`. Otherwise the upstream demand *releases* the cause (a permissive
+  // read the other way round): no route of a demand.
+  bool trips_when_active(const model::CauseTag& t, const model::InternalRef& ref) const {
+    if (ref.kind != model::InternalRef::Kind::EffectTag) return t.ett;
+    const Effect* e = m_.find_effect(ref.id);
+    if (!e || ref.tag < 1 || static_cast<std::size_t>(ref.tag) > e->tags.size()) return false;
+    return e->tags[static_cast<std::size_t>(ref.tag) - 1].ett == t.ett;
+  }
   long long own_delay(const Cause& c) const {
     return c.time.mode == model::TimeMode::OnDelay ? cycles_of(c.time.ms, m_.cycle_ms) : 0;
   }
@@ -129,7 +142,7 @@ class Walker {
     stack_.push_back(self);
     for (const auto& t : c->tags) {
       auto ref = model::parse_internal_ref(t.name);
-      if (!ref) continue;
+      if (!ref || !trips_when_active(t, *ref)) continue;
       std::vector<Route> upstream;
       Node source{ref->kind == model::InternalRef::Kind::Cause ? Node::Kind::Cause : Node::Kind::Effect, ref->id};
       long long extra = graph_.reads_previous(source, self) ? 1 : 0;
