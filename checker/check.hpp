@@ -19,6 +19,7 @@
 #include "checker/result.hpp"
 #include "encoder/encode.hpp"
 #include "model/matrix.hpp"
+#include "model/node.hpp"
 #include "properties/ast.hpp"
 
 namespace cemv::checker {
@@ -47,6 +48,11 @@ struct CheckOptions {
   // variables after the reduction, whatever `engines` and engines_in_order
   // say (empty: those apply there too; PortfolioOptions::wide_engines).
   std::vector<std::string> engines_when_wide;
+  // Matrix elements whose state a localization keeps on a wide problem
+  // before its engines: the state of every other element is made free
+  // (PortfolioOptions::localize_keep, checker/localize.hpp). Empty: none.
+  // cemv response passes the elements of the path it measures.
+  std::vector<model::Node> localize_to;
   // Counterexamples longer than this are reported as the engine found them,
   // not made readable (PortfolioOptions::shrink_max_cycles; -1 = the
   // portfolio's default). cemv response passes 0 for its T - 1 question when

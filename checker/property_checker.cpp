@@ -215,6 +215,7 @@ ProverResult PropertyChecker::decide(const model::Matrix& m, Goal goal, bool sli
     o.in_order = options_.engines_in_order;
   }
   if (goal == Goal::Property) o.wide_engines = options_.engines_when_wide;
+  if (goal == Goal::Property && !options_.localize_to.empty()) o.localize_keep = keep_elements(options_.localize_to);
   if (goal == Goal::Property && options_.shrink_max_cycles >= 0)
     o.shrink_max_cycles = static_cast<std::size_t>(options_.shrink_max_cycles);
   // Only the property's own counterexample is shown; the witness that an

@@ -84,7 +84,7 @@ ProverResult Portfolio::run(const Limits& limits) {
   const auto start = std::chrono::steady_clock::now();
   const ProblemFactory make = options_.reduce ? reducing(make_) : make_;
   std::optional<ProverResult> answer;
-  if (wants_quick_attempt() || options_.in_order || !options_.wide_engines.empty()) {
+  if (wants_quick_attempt() || options_.in_order || !options_.wide_engines.empty() || options_.localize_keep) {
     PooledContext ctx;
     OwnedProblem owned = make(ctx);
     answer = quick_attempt(owned.problem, limits);
@@ -92,6 +92,7 @@ ProverResult Portfolio::run(const Limits& limits) {
     const std::vector<std::string>* order = nullptr;
     if (wide && !options_.wide_engines.empty()) order = &options_.wide_engines;
     else if (!wide && options_.in_order) order = &options_.engines;
+    if (!answer && wide && options_.localize_keep) answer = localized_attempt(owned, limits);
     if (!answer && order) {
       ProverResult r = one_after_another(*order, owned.problem, limits);
       if (r.verdict == Verdict::Unknown) {
@@ -138,6 +139,27 @@ std::optional<ProverResult> Portfolio::quick_attempt(const SafetyProblem& proble
   // counterexample found there is BMC's, a shortest one.
   if (r.verdict == Verdict::Falsified) r.method = "bmc";
   return r;
+}
+
+std::optional<ProverResult> Portfolio::localized_attempt(const OwnedProblem& whole, const Limits& limits) const {
+  std::optional<OwnedProblem> local = localize(whole, options_.localize_keep);
+  if (!local) return std::nullopt;
+  Limits mine = limits;
+  const auto now = std::chrono::steady_clock::now();
+  if (limits.deadline != std::chrono::steady_clock::time_point::max()) mine.deadline = now + (limits.deadline - now) / 2;
+  ProverResult r = one_after_another(options_.localized_engines, local->problem, mine);
+  if (r.verdict == Verdict::Proved && r.k <= 1 && !r.simple_path) {
+    r.method += ", localized";
+    return r;  // re-checked on the whole problem by confirmed()
+  }
+  if (r.verdict == Verdict::Falsified) {
+    if (std::optional<Trace> t = concretize(whole.problem, r.cex)) {
+      r.cex = std::move(*t);
+      r.method += ", localized";
+      return r;
+    }
+  }
+  return std::nullopt;
 }
 
 ProverResult Portfolio::one_after_another(const std::vector<std::string>& order, const SafetyProblem& problem,

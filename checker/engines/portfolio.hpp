@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "checker/localize.hpp"
 #include "checker/prover.hpp"
 #include "checker/shrink.hpp"
 
@@ -84,6 +85,19 @@ struct PortfolioOptions {
   // state variables). A count, so the choice never depends on the machine.
   std::size_t in_order_max_states = 64;
   std::vector<std::string> wide_engines;
+  // Localization (checker/localize.hpp): on a wide problem, before its
+  // engines, `localized_engines` in order on the problem with only the state
+  // that `localize_keep` keeps, within half of the time left. A proof counts
+  // when its evidence re-checks on the whole (reduced) problem in a fresh
+  // context, as every proof does (it holds there when the localization is an
+  // over-approximation, which that check does not take on trust); only an
+  // invariant with k <= 1 and no simple-path condition is taken, because its
+  // re-check on the whole problem is one step, and a simple path of the
+  // kept variables is not one of the whole state. A counterexample counts
+  // when its inputs violate the whole problem. Anything else: the engines
+  // go on as without. Empty: no localization.
+  KeepState localize_keep;
+  std::vector<std::string> localized_engines{"pdr", "invariants+induction"};
 };
 
 // A prover by name, for the portfolio and the command line; throws
@@ -100,6 +114,7 @@ class Portfolio {
  private:
   bool wants_quick_attempt() const;  // quick_k set and k-induction among the engines
   std::optional<ProverResult> quick_attempt(const SafetyProblem& problem, const Limits& limits) const;
+  std::optional<ProverResult> localized_attempt(const OwnedProblem& whole, const Limits& limits) const;
   ProverResult quick_k_induction(const SafetyProblem& problem, const Limits& limits) const;
   ProverResult race(const ProblemFactory& make, const Limits& limits) const;
   ProverResult one_after_another(const std::vector<std::string>& engines, const SafetyProblem& problem,
