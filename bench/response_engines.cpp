@@ -5,18 +5,29 @@
 // checker/reduce.hpp), to see which engine carries cemv response's probes.
 // Usage:
 //   response_engines MATRIX CAUSE EFFECT T [SECONDS] [ENGINE...]
+// Environment: LOCALIZE=1 the engines on the path's localization
+// (checker/localize.hpp; a proof re-checked on the whole problem, a trace
+// concretized), SHOW_LOCAL=1 what it keeps and frees; SHOW_DEMAND=1 the
+// demand run of T cycles on the runtime (the path's elements and the
+// effect's signals, one digit a cycle); SHOW_PATHS=1 the number of paths
+// (=2: every path with its estimate); SHOW_STATE, SHOW_HOUDINI,
+// SHOW_INVARIANT as before.
 #include <chrono>
 #include <cstdlib>
 #include <iostream>
 
 #include "checker/engines/invariants.hpp"
 #include "checker/engines/portfolio.hpp"
+#include "checker/localize.hpp"
+#include "checker/check/recheck.hpp"
 #include "checker/property_problem.hpp"
 #include "checker/reduce.hpp"
 #include "formats/matrix_json.hpp"
 #include "properties/parser.hpp"
 #include "response/paths.hpp"
 #include "response/property.hpp"
+#include "checker/replay.hpp"
+#include "model/vocabulary.hpp"
 
 using namespace cemv;
 
@@ -30,9 +41,38 @@ int main(int argc, char** argv) {
   for (int i = 6; i < argc; ++i) engines.emplace_back(argv[i]);
   if (engines.empty())
     engines = {"invariants+induction", "k-induction", "pdr", "accelerated-bmc", "bmc"};
+  if (std::getenv("SHOW_PATHS")) {
+    auto paths = response::response_paths(m, {});
+    std::size_t chains = 0;
+    for (const auto& p : paths) {
+      bool chain = p.elements.size() > p.causes.size() + 1;
+      chains += chain;
+      if (std::getenv("SHOW_PATHS")[0] == '2') std::cout << p.sif << " " << p.key() << " E=" << p.estimate << (chain ? " chain" : "") << std::endl;
+    }
+    std::cout << paths.size() << " paths, " << chains << " through references" << std::endl;
+    return 0;
+  }
   response::Path path;
   for (const auto& p : response::response_paths(m, {}))
     if (p.effect == effect && p.causes == std::vector<int>{cause}) path = p;
+  if (std::getenv("SHOW_DEMAND")) {
+    auto run = response::demand_run(m, path, response::Mode::Normal, t);
+    auto trace = checker::run_on_runtime(m, run);
+    const auto all = model::observables(m);
+    for (std::size_t i = 0; i < all.size(); ++i) {
+      const std::string& key = all[i].key;
+      bool show = false;
+      for (const auto& e : path.elements)
+        show = show || key.rfind((e.kind == model::Node::Kind::Cause ? "cause[" : "effect[") + std::to_string(e.id) + "].active", 0) == 0;
+      show = show || key.rfind("effect[2].", 0) == 0;
+      if (!show && key.find("output") == std::string::npos) continue;
+      if (!show && key.rfind("effect[" + std::to_string(effect) + "]", 0) != 0) continue;
+      std::string line;
+      for (const auto& o : trace.observables) line += std::to_string(o[i]);
+      std::cout << key << " " << line << std::endl;
+    }
+    return 0;
+  }
   for (long long bound : {t, t - 1}) {
     auto file = properties::parse_properties(
         response::response_property_text(m, path, response::Mode::Normal, bound, "probe"), m, "probe");
@@ -42,6 +82,32 @@ int main(int argc, char** argv) {
       z3::context ctx;
       checker::Reduction red;
       auto problem = checker::reduce(make(ctx), &red);
+      auto concrete = problem;
+      if (std::getenv("LOCALIZE")) {
+        auto keep = [&](const std::string& name) {
+          std::string n = name.rfind("prev.", 0) == 0 ? name.substr(5) : name;
+          for (const char* kind : {"cause[", "effect["}) {
+            if (n.rfind(kind, 0) != 0) continue;
+            int id = std::atoi(n.c_str() + std::string(kind).size());
+            for (const auto& e : path.elements)
+              if (e.id == id && (e.kind == model::Node::Kind::Cause) == (kind[0] == 'c')) return true;
+            return false;
+          }
+          return true;
+        };
+        checker::Localization loc;
+        auto l = checker::localize(problem, keep, &loc);
+        std::cout << "localized: " << loc.state_vars_before << " -> " << loc.state_vars_after << " (freed "
+                  << loc.freed << ")" << std::endl;
+        if (l) problem = *l;
+        if (std::getenv("SHOW_LOCAL")) {
+          for (const auto& e : path.elements) std::cout << (e.kind == model::Node::Kind::Cause ? " c" : " e") << e.id;
+          std::cout << std::endl;
+          for (const auto& v : problem.problem.ts->statevars()) std::cout << "  kept " << v.name << std::endl;
+          for (const auto& v : problem.problem.ts->inputvars())
+            if (!concrete.problem.ts->inputvar(v.name)) std::cout << "  freed " << v.name << std::endl;
+        }
+      }
       if (std::getenv("SHOW_STATE") && engine == engines.front()) {
         for (const auto& v : problem.problem.ts->statevars()) std::cout << "  state " << v.name << std::endl;
         for (const auto& l : problem.problem.ts->lemmas()) std::cout << "  lemma " << l.term << std::endl;
@@ -66,6 +132,16 @@ int main(int argc, char** argv) {
                 << " k=" << r.k << " " << s << " s (state variables " << red.state_vars_before << " -> "
                 << red.state_vars_after << ", inputs " << red.inputs_before << " -> " << red.inputs_after
                 << (red.floats_as_integers ? ", floats as integers" : "") << ")" << std::endl;
+      if (std::getenv("LOCALIZE") && r.verdict == checker::Verdict::Proved) {
+        auto t0 = std::chrono::steady_clock::now();
+        checker::check::recheck_proof(concrete.problem, r);
+        std::cout << "  re-checked on the original in "
+                  << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s" << std::endl;
+      }
+      if (std::getenv("LOCALIZE") && r.verdict == checker::Verdict::Falsified) {
+        auto c = checker::concretize(concrete.problem, r.cex);
+        std::cout << "  concretized: " << (c ? "real" : "spurious") << std::endl;
+      }
       if (r.verdict == checker::Verdict::Proved && !r.invariant.clauses.empty() && std::getenv("SHOW_INVARIANT"))
         std::cout << r.invariant.text() << std::endl;
     }

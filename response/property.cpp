@@ -1,6 +1,7 @@
 #include "response/property.hpp"
 
 #include <algorithm>
+#include <set>
 
 #include "model/text.hpp"
 #include "model/vocabulary.hpp"
@@ -176,9 +177,22 @@ std::vector<model::CycleInput> demand_run(const model::Matrix& m, const Path& p,
   // defaults need not be: a de-energise-to-trip input defaults to 0), so that
   // nothing but the demand acts on the path's effect.
   model::CycleInput quiet = model::default_cycle_input(m);
-  for (const auto& c : m.causes)
+  auto make_healthy = [&](const Cause& c) {
     for (const auto* t : external_tags(c))
       if (auto index = table.find(t->name)) quiet.tags[*index].value = healthy_value(c, *t, quiet.tags[*index].value);
+  };
+  for (const auto& c : m.causes) make_healthy(c);
+  // Two causes may read one tag with limits no single value keeps both
+  // inside (a high limit of -9 and a low limit of 132.5): then the causes
+  // linked to the path's effects decide, so that those effects are quiet.
+  auto on_path = [&](int effect) {
+    return std::any_of(p.elements.begin(), p.elements.end(), [&](const model::Node& n) {
+      return n.kind == model::Node::Kind::Effect && n.id == effect;
+    });
+  };
+  for (const auto& x : m.intersections)
+    if (on_path(x.effect))
+      if (const Cause* c = m.find_cause(x.cause)) make_healthy(*c);
   // An effect on the path that passes process data through shows the BPCS
   // value while it is not active (E.8): that value away from the active
   // state, so that the outputs respond only when the effect does.
@@ -206,6 +220,46 @@ std::vector<model::CycleInput> demand_run(const model::Matrix& m, const Path& p,
   }
   std::vector<model::CycleInput> run{quiet};
   run.resize(static_cast<std::size_t>(std::max(0LL, cycles)) + 2, demand);
+  return run;
+}
+
+std::optional<std::vector<model::CycleInput>> demand_run_alone(const model::Matrix& m, const Path& p, Mode mode,
+                                                               long long cycles) {
+  // Every tag a path element reads stays as demand_run sets it.
+  std::set<std::string> own;
+  std::set<int> effects, causes;
+  for (const auto& n : p.elements) {
+    if (n.kind == model::Node::Kind::Cause) {
+      const Cause& c = *m.find_cause(n.id);
+      causes.insert(c.id);
+      for (const auto& t : c.tags) own.insert(t.name);
+      for (const auto* t : {&c.bypass_tag, &c.inhibit_tag})
+        if (*t) own.insert(**t);
+    } else {
+      const model::Effect& e = *m.find_effect(n.id);
+      effects.insert(e.id);
+      for (const auto* t : {&e.bypass_tag, &e.reset_tag})
+        if (*t) own.insert(**t);
+      if (e.process_data) {
+        if (e.process_data->tag) own.insert(*e.process_data->tag);
+        if (e.process_data->mask_tag) own.insert(*e.process_data->mask_tag);
+      }
+    }
+  }
+  const model::InputTable table(m);
+  std::set<std::size_t> hold_off;
+  for (const auto& x : m.intersections) {
+    if (!effects.count(x.effect) || causes.count(x.cause)) continue;
+    const Cause* c = m.find_cause(x.cause);
+    if (!c) continue;
+    for (const auto* t : {&c->bypass_tag, &c->inhibit_tag})
+      if (*t && !own.count(**t) && !model::parse_internal_ref(**t))
+        if (auto index = table.find(**t)) hold_off.insert(*index);
+  }
+  if (hold_off.empty()) return std::nullopt;
+  std::vector<model::CycleInput> run = demand_run(m, p, mode, cycles);
+  for (auto& cycle : run)
+    for (std::size_t i : hold_off) cycle.tags[i].value = 1.0f;
   return run;
 }
 

@@ -3,6 +3,7 @@
 // decide. docs/response-time.md explains each part.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -33,5 +34,16 @@ std::string response_property_text(const model::Matrix& m, const Path& p, Mode m
 // is replayed and checked like any counterexample, and when it does not
 // violate, the engines decide.
 std::vector<model::CycleInput> demand_run(const model::Matrix& m, const Path& p, Mode mode, long long cycles);
+
+// The same demand with the path's effects left to it alone: every other
+// cause linked to an effect of the path held off by its bypass and inhibit
+// tags (C.8) from the first cycle on, where it has them and they are no tags
+// of the path's own elements. Other causes are free in the property (only
+// the path's are assumed not bypassed), and a cause tripped at rest (a
+// permissive that reads an inactive element, a tag two causes read with
+// limits no value meets) would answer the demand for the trigger. Nullopt
+// when no such tag exists (the run would be demand_run's).
+std::optional<std::vector<model::CycleInput>> demand_run_alone(const model::Matrix& m, const Path& p, Mode mode,
+                                                               long long cycles);
 
 }  // namespace cemv::response

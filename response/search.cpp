@@ -35,7 +35,7 @@ struct Engines {
 };
 
 Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles, const SearchOptions& o,
-             const Engines& engines, const Runs& runs) {
+             const Engines& engines, const Runs& runs, bool localize) {
   const std::string name = property_name(p, mode);
   const std::string text = response_property_text(m, p, mode, cycles, name);
   properties::PropertyFile file;
@@ -59,6 +59,11 @@ Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles,
   // needed; where none does, they still witness that the trigger can rise
   // (the proof's vacuity question).
   options.directed_runs = runs;
+  // A wide cone is mostly other elements that can only make the effect
+  // respond sooner (other causes, the effects their references read): a
+  // proof on the path's own elements, the rest left free, is re-checked on
+  // the whole cone (checker::CheckOptions::localize_to).
+  if (localize) options.localize_to = p.elements;
   // The accelerated unrolling's trace holds its inputs over at most 8 macro
   // steps: readable as it is, and the core-guided search over 33 to 64
   // cycles was most of the CPU of such a probe (compressor: 2 s of 2.2 s).
@@ -118,14 +123,14 @@ Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles,
              Expect e, const Runs& runs) {
   const Engines engines = engines_for(e, cycles);
   const auto start = std::chrono::steady_clock::now();
-  Probe r = decide(m, p, mode, cycles, o, engines, runs);
+  Probe r = decide(m, p, mode, cycles, o, engines, runs, e != Expect::Counterexample);
   if (r.verdict != checker::PropertyVerdict::Unknown || (engines.narrow.empty() && engines.wide.empty())) return r;
   SearchOptions rest = o;
   if (o.timeout_s > 0) {
     rest.timeout_s = o.timeout_s - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (rest.timeout_s < 0.001) return r;
   }
-  return decide(m, p, mode, cycles, rest, Engines{}, runs);
+  return decide(m, p, mode, cycles, rest, Engines{}, runs, false);
 }
 
 }  // namespace
@@ -152,7 +157,10 @@ Figure least_response(const model::Matrix& m, const Path& p, Mode mode, const Se
     Runs runs;
     // Every cycle of a run is held in memory (its inputs and, once run, every
     // observable): beyond kMaxDirectedRunCycles the engines decide alone.
-    if (t < kMaxDirectedRunCycles) runs.push_back(demand_run(m, p, mode, t));
+    if (t < kMaxDirectedRunCycles) {
+      runs.push_back(demand_run(m, p, mode, t));
+      if (auto alone = demand_run_alone(m, p, mode, t)) runs.push_back(std::move(*alone));
+    }
     // A path held off beyond `lo` by what its counterexample did (a state
     // the demand alone does not reach) is often held off longer still: that
     // run with its last inputs held for the t - lo cycles more that a

@@ -15,6 +15,9 @@
 #include "checker/engines/portfolio.hpp"
 #include "checker/property_problem.hpp"
 #include "checker/reduce.hpp"
+#include "checker/replay.hpp"
+#include "model/vocabulary.hpp"
+#include "response/paths.hpp"
 #include "formats/matrix_json.hpp"
 #include "properties/parser.hpp"
 #include "response/analysis.hpp"
@@ -199,6 +202,52 @@ TEST(Response, ChainThroughAReferenceAddsItsCycleOnlyWhenItReadsThePreviousValue
   EXPECT_TRUE(found);
 }
 
+// A relay continues a route only when the upstream element being active
+// trips it (docs/response-time.md, "Paths"). `Effect[1]` reads 1 when effect 1
+// is active: a de-energize-to-trip tag trips on 0, so effect 1 responding to
+// S1 *releases* cause 2 (a permissive), and S1 -> effect 2 is no route.
+// `Effect[1][1]` reads effect 1's output tag, at its safe value 0 (DTT) when
+// effect 1 responds: a DTT reference trips on exactly that.
+TEST(Response, ReferenceThatTheDemandReleasesIsNoRoute) {
+  auto keys = [](const model::Matrix& m) {
+    std::set<std::string> out;
+    for (const auto& p : response::response_paths(m, {})) out.insert(p.key());
+    return out;
+  };
+  auto relay = [](const std::string& tag, bool ett) {
+    return R"({"id": 2, "name": "C2", "sif": [1], "tags": [{"name": ")" + tag + R"(", "ett": )" +
+           (ett ? "true" : "false") + "}]}";
+  };
+  auto with_relay = [&](const std::string& tag, bool ett) {
+    return matrix(cause(1, "S1") + "," + relay(tag, ett), effect(1, "Y1") + "," + effect(2, "Y2"),
+                  link(1, 1) + "," + link(2, 2));
+  };
+  EXPECT_EQ(keys(with_relay("Effect[1]", true)), (std::set<std::string>{"c1.e1", "c1.e2"}));
+  EXPECT_EQ(keys(with_relay("Effect[1]", false)), (std::set<std::string>{"c1.e1"}));
+  EXPECT_EQ(keys(with_relay("Effect[1][1]", false)), (std::set<std::string>{"c1.e1", "c1.e2"}));
+  EXPECT_EQ(keys(with_relay("Effect[1][1]", true)), (std::set<std::string>{"c1.e1"}));
+  // The runtime agrees: with S1 tripped and held, cause 2 reading Effect[1]
+  // DTT goes inactive once effect 1 responds, and effect 2 never does.
+  const auto m = with_relay("Effect[1]", false);
+  auto dir = scratch("released");
+  response::Path p;
+  p.causes = {1};
+  p.effect = 2;
+  p.elements = {{model::Node::Kind::Cause, 1}, {model::Node::Kind::Effect, 2}};
+  const auto trace = checker::run_on_runtime(m, response::demand_run(m, p, response::Mode::Normal, 20));
+  const auto all = model::observables(m);
+  std::size_t c2 = all.size(), e2 = all.size();
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    if (all[i].key == "cause[2].active") c2 = i;
+    if (all[i].key == "effect[2].active") e2 = i;
+  }
+  ASSERT_LT(c2, all.size());
+  ASSERT_LT(e2, all.size());
+  EXPECT_EQ(trace.observables.front()[c2], 1);  // the plant quiet: effect 1 inactive, the permissive trips
+  EXPECT_EQ(trace.observables.back()[c2], 0);
+  EXPECT_EQ(trace.observables.back()[e2], 0);
+}
+
 TEST(Response, TwoOutOfThreeWithOneBadInputReportsItsDegradedFigure) {
   // Discrete switches (de-energize-to-trip): 2oo3 with "degrade" becomes 1oo2
   // when one of them goes bad (C.4).
@@ -324,18 +373,36 @@ TEST(Response, InvariantEngineProvesTheBoundInOneStep) {
 // order of invariants+induction, whose relational miner would spend the whole
 // limit at k = 0 there, but of PDR, which proves the bound at once
 // (checker::CheckOptions::engines_when_wide); its T - 1 is the demand run.
-TEST(Response, WideConeIsProvedByPdr) {
+// big_matrix's cause 124 -> effect 23 is a direct path in a cone of 318
+// state variables (after the exact reductions), most of them other causes of
+// effect 23 and the effects their references read. No engine proves T = 13
+// there within a minute; on the path's own elements, the rest free
+// (checker/localize.hpp), PDR does in a second, and the proof re-checks on
+// the whole cone. T - 1 is the demand with effect 23's other causes held
+// off by their bypass and inhibit tags: several of them are tripped at rest.
+TEST(Response, WideConeIsProvedOnItsLocalization) {
   const model::Matrix m = testsupport::big_matrix(1);
   response::Path path;
   for (const auto& p : response::response_paths(m, {}))
-    if (p.effect == 8 && p.causes == std::vector<int>{19}) path = p;
-  ASSERT_EQ(path.effect, 8);
+    if (p.effect == 23 && p.causes == std::vector<int>{124}) path = p;
+  ASSERT_EQ(path.effect, 23);
   auto dir = scratch("wide_cone");
   const Figure f = response::least_response(m, path, response::Mode::Normal, {60, dir.string()});
   ASSERT_EQ(f.kind, Figure::Kind::Exact) << f.reason;
-  EXPECT_EQ(f.cycles, 2);
-  EXPECT_EQ(f.method, "pdr");
+  EXPECT_EQ(f.cycles, 13);
+  EXPECT_EQ(f.method, "pdr, localized");
   expect_replays(m, dir, f.counterexample);
+  // The scenario is that demand: one quiet cycle (others held off), then the
+  // trigger held, and no engine's trace.
+  const auto j = nlohmann::json::parse(read(dir / f.counterexample));
+  EXPECT_EQ(j.at("steps").size(), 2u) << j.dump(1);
+  const auto plain = response::demand_run(m, path, response::Mode::Normal, 12);
+  const auto alone = response::demand_run_alone(m, path, response::Mode::Normal, 12);
+  ASSERT_TRUE(alone.has_value());
+  std::size_t held_off = 0;
+  for (std::size_t i = 0; i < plain.front().tags.size(); ++i)
+    held_off += plain.front().tags[i].value != alone->front().tags[i].value;
+  EXPECT_GT(held_off, 0u);
 }
 
 // The command line's progress line is fed by the analysis: the number of
