@@ -16,6 +16,7 @@
 #include <cstdlib>
 #include <iostream>
 
+#include "checker/check.hpp"
 #include "checker/engines/invariants.hpp"
 #include "checker/engines/portfolio.hpp"
 #include "checker/localize.hpp"
@@ -57,6 +58,8 @@ int main(int argc, char** argv) {
     if (p.effect == effect && p.causes == std::vector<int>{cause}) path = p;
   if (std::getenv("SHOW_DEMAND")) {
     auto run = response::demand_run(m, path, response::Mode::Normal, t);
+    if (std::getenv("SHOW_DEMAND")[0] == '2')
+      if (auto alone = response::demand_run_alone(m, path, response::Mode::Normal, t)) run = *alone;
     auto trace = checker::run_on_runtime(m, run);
     const auto all = model::observables(m);
     for (std::size_t i = 0; i < all.size(); ++i) {
@@ -65,12 +68,30 @@ int main(int argc, char** argv) {
       for (const auto& e : path.elements)
         show = show || key.rfind((e.kind == model::Node::Kind::Cause ? "cause[" : "effect[") + std::to_string(e.id) + "].active", 0) == 0;
       show = show || key.rfind("effect[2].", 0) == 0;
-      if (!show && key.find("output") == std::string::npos) continue;
+      for (const auto& x : m.intersections)
+        show = show || (x.effect == effect && key == "cause[" + std::to_string(x.cause) + "].active");
+      if (!show && key.find("output") == std::string::npos && key.find(".tag[") == std::string::npos) continue;
       if (!show && key.rfind("effect[" + std::to_string(effect) + "]", 0) != 0) continue;
       std::string line;
       for (const auto& o : trace.observables) line += std::to_string(o[i]);
       std::cout << key << " " << line << std::endl;
     }
+    return 0;
+  }
+  if (std::getenv("SHOW_CHECK")) {
+    auto file = properties::parse_properties(
+        response::response_property_text(m, path, response::Mode::Normal, t, "probe"), m, "probe");
+    checker::CheckOptions o;
+    o.property_timeout_s = seconds;
+    o.support = false;
+    o.engines = {"bmc"};
+    o.engines_in_order = true;
+    o.directed_runs = {response::demand_run(m, path, response::Mode::Normal, t)};
+    if (auto alone = response::demand_run_alone(m, path, response::Mode::Normal, t)) o.directed_runs.push_back(*alone);
+    auto r = checker::check_properties(m, {file}, o);
+    const auto& pr = r.properties.at(0);
+    std::cout << checker::to_string(pr.verdict) << " " << pr.method << " " << pr.reason << std::endl;
+    for (const auto& n : pr.notes) std::cout << "  note: " << n << std::endl;
     return 0;
   }
   for (long long bound : {t, t - 1}) {

@@ -195,12 +195,14 @@ std::vector<model::CycleInput> demand_run(const model::Matrix& m, const Path& p,
       if (const Cause* c = m.find_cause(x.cause)) make_healthy(*c);
   // An effect on the path that passes process data through shows the BPCS
   // value while it is not active (E.8): that value away from the active
-  // state, so that the outputs respond only when the effect does.
+  // state, so that the outputs respond only when the effect does. The
+  // process value is P for a DTT tag and NOT P for an ETT one (E.9), so P = 1
+  // puts every tag away from its safe value (0 DTT, 1 ETT), whatever its ett.
   for (const auto& n : p.elements) {
     if (n.kind != model::Node::Kind::Effect) continue;
     const model::Effect& e = *m.find_effect(n.id);
-    if (!e.process_data || !e.process_data->pass_through || !e.process_data->tag || e.tags.empty()) continue;
-    if (auto index = table.find(*e.process_data->tag)) quiet.tags[*index].value = e.tags.front().ett ? 0.0f : 1.0f;
+    if (!e.process_data || !e.process_data->pass_through || !e.process_data->tag) continue;
+    if (auto index = table.find(*e.process_data->tag)) quiet.tags[*index].value = 1.0f;
   }
   // The demand: the trigger causes' inputs beyond their limits.
   model::CycleInput demand = quiet;

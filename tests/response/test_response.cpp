@@ -248,6 +248,27 @@ TEST(Response, ReferenceThatTheDemandReleasesIsNoRoute) {
   EXPECT_EQ(trace.observables.back()[e2], 0);
 }
 
+// While the effect is inactive, a pass-through shows the BPCS value P: as P
+// on a DTT tag and NOT P on an ETT one (E.9), so P = 1 keeps every tag away
+// from its safe value, whatever its ett. The demand run's quiet plant sets
+// that, and its run is the T - 1 counterexample for an effect whose first
+// tag is ETT too (it used to set P = 0 there: every tag safe at rest).
+TEST(Response, PassThroughIsQuietAwayFromTheSafeValuesOfEveryTag) {
+  auto m = matrix(cause(1, "S1", R"("time": {"mode": "on_delay", "ms": 2000})"),
+                  R"({"id": 1, "name": "E1", "sif": [1], "tags": [{"name": "Y1", "ett": true}, {"name": "Y2"}],
+                      "process_data": {"tag": "BPCS1", "pass_through": true}})",
+                  link(1, 1));
+  auto dir = scratch("pass_through_ett");
+  auto r = analyse(m, dir);
+  const auto& p = only_path(r, 1);
+  ASSERT_EQ(p.logic.kind, Figure::Kind::Exact) << p.logic.reason;
+  EXPECT_EQ(p.logic.cycles, 20);
+  expect_replays(m, dir, p.logic.counterexample);
+  expect_demand_run(dir, p.logic.counterexample, "S1", 20);
+  const auto j = nlohmann::json::parse(read(dir / p.logic.counterexample));
+  EXPECT_EQ(j.at("steps")[0].at("inputs").at("BPCS1"), true) << j.dump(1);
+}
+
 TEST(Response, TwoOutOfThreeWithOneBadInputReportsItsDegradedFigure) {
   // Discrete switches (de-energize-to-trip): 2oo3 with "degrade" becomes 1oo2
   // when one of them goes bad (C.4).
