@@ -84,8 +84,10 @@ int main(int argc, char** argv) {
     checker::CheckOptions o;
     o.property_timeout_s = seconds;
     o.support = false;
-    o.engines = {"bmc"};
+    o.engines = {"invariants+induction", "k-induction", "bmc"};
+    o.engines_when_wide = {"pdr"};
     o.engines_in_order = true;
+    o.localize_to = path.elements;
     o.directed_runs = {response::demand_run(m, path, response::Mode::Normal, t)};
     if (auto alone = response::demand_run_alone(m, path, response::Mode::Normal, t)) o.directed_runs.push_back(*alone);
     auto r = checker::check_properties(m, {file}, o);

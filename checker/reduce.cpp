@@ -74,15 +74,22 @@ Work parts_of(const SafetyProblem& p) {
 
 void substitute(Work& w, const z3::expr_vector& from, const z3::expr_vector& to) {
   if (from.empty()) return;
+  std::vector<expr*> terms;
+  for (auto& s : w.states) terms.push_back(&s.init), terms.push_back(&s.next);
+  for (auto& f : w.facts) terms.push_back(&f.term);
+  for (auto& l : w.lemmas) terms.push_back(&l.second);
+  terms.push_back(&w.good);
+  // One substitution over all terms at once, as the arguments of one
+  // application: Z3 caches a substitution per call, and the terms share
+  // most of their DAG, so a call per term was quadratic in the cone.
+  z3::context& c = w.good.ctx();
+  z3::sort_vector domain(c);
+  z3::expr_vector args(c);
+  for (expr* t : terms) domain.push_back(t->get_sort()), args.push_back(*t);
+  const z3::func_decl all_terms = c.function("cemv.reduce.terms", domain, c.bool_sort());
+  const expr replaced = all_terms(args).substitute(from, to);
   FoldBooleans fold;
-  auto sub = [&](expr& e) {
-    expr copy = e;
-    e = fold(copy.substitute(from, to));
-  };
-  for (auto& s : w.states) sub(s.init), sub(s.next);
-  for (auto& f : w.facts) sub(f.term);
-  for (auto& l : w.lemmas) sub(l.second);
-  sub(w.good);
+  for (std::size_t i = 0; i < terms.size(); ++i) *terms[i] = fold(replaced.arg(static_cast<unsigned>(i)));
 }
 
 // The literals of Boolean inputs that the assumption fixes in every cycle
@@ -141,9 +148,19 @@ void propagate_constants(Work& w, const SafetyProblem& p) {
     z3::expr_vector sf(c), st(c);
     for (std::size_t i = 0; i < w.states.size(); ++i)
       if (constant[i]) sf.push_back(w.states[i].var), st.push_back(w.states[i].init);
-    for (std::size_t i = 0; i < w.states.size(); ++i) {
-      if (!constant[i]) continue;
-      expr n = sf.empty() ? w.states[i].next : w.states[i].next.substitute(sf, st).simplify();
+    // The candidates' next-state functions, substituted in one call (a call
+    // per variable repeats the work on the terms they share).
+    std::vector<std::size_t> candidates;
+    z3::sort_vector domain(c);
+    z3::expr_vector nexts(c);
+    for (std::size_t i = 0; i < w.states.size(); ++i)
+      if (constant[i]) candidates.push_back(i), domain.push_back(w.states[i].next.get_sort()), nexts.push_back(w.states[i].next);
+    if (candidates.empty()) break;
+    expr all = c.function("cemv.reduce.next", domain, c.bool_sort())(nexts);
+    if (!sf.empty()) all = all.substitute(sf, st).simplify();
+    for (std::size_t k = 0; k < candidates.size(); ++k) {
+      const std::size_t i = candidates[k];
+      expr n = sf.empty() ? w.states[i].next : all.arg(static_cast<unsigned>(k));
       if (!z3::eq(n, w.states[i].init.simplify())) {
         constant[i] = false;
         changed = true;
@@ -197,14 +214,24 @@ void cone_of_influence(Work& w, z3::context& c) {
     auto i = input_of.find(v);
     return i != input_of.end() && input[i->second];
   };
-  for (unsigned v : variables_of(w.good)) add(v);
+  // One walk over the term DAG for the whole cone: next-state functions share
+  // most of their terms (an effect reads every cause linked to it), and a walk
+  // per state variable was quadratic in the cone (a third of a cemv response
+  // probe's CPU on big_matrix).
+  std::unordered_set<unsigned> seen_terms;
+  auto reach = [&](const expr& t) {
+    std::unordered_set<unsigned> vars;
+    collect_variables(t, vars, seen_terms);
+    for (unsigned v : vars) add(v);
+  };
+  reach(w.good);
   for (bool more = true; more;) {
     while (!work.empty()) {
       unsigned v = work.back();
       work.pop_back();
       const auto& sv = w.states[state_of[v]];
-      for (unsigned u : variables_of(sv.next)) add(u);
-      for (unsigned u : variables_of(sv.init)) add(u);
+      reach(sv.next);
+      reach(sv.init);
     }
     more = false;
     for (std::size_t f = 0; f < w.facts.size(); ++f) {
