@@ -85,9 +85,11 @@ struct PortfolioOptions {
   // state variables). A count, so the choice never depends on the machine.
   std::size_t in_order_max_states = 64;
   std::vector<std::string> wide_engines;
-  // Localization (checker/localize.hpp): on a wide problem, before its
-  // engines, `localized_engines` in order on the problem with only the state
-  // that `localize_keep` keeps, within half of the time left. A proof counts
+  // Localization (checker/localize.hpp): before the engines (after the quick
+  // attempt), `localized_engines` in order on the problem with only the
+  // state that `localize_keep` keeps, within half of the time left; on a
+  // problem of at most `in_order_max_states` only when that keeps at most
+  // half of its state variables (a count: the choice never depends on time). A proof counts
   // when its evidence re-checks on the whole (reduced) problem in a fresh
   // context, as every proof does (it holds there when the localization is an
   // over-approximation, which that check does not take on trust); only an
@@ -114,7 +116,7 @@ class Portfolio {
  private:
   bool wants_quick_attempt() const;  // quick_k set and k-induction among the engines
   std::optional<ProverResult> quick_attempt(const SafetyProblem& problem, const Limits& limits) const;
-  std::optional<ProverResult> localized_attempt(const OwnedProblem& whole, const Limits& limits) const;
+  std::optional<ProverResult> localized_attempt(const OwnedProblem& whole, bool wide, const Limits& limits) const;
   ProverResult quick_k_induction(const SafetyProblem& problem, const Limits& limits) const;
   ProverResult race(const ProblemFactory& make, const Limits& limits) const;
   ProverResult one_after_another(const std::vector<std::string>& engines, const SafetyProblem& problem,
