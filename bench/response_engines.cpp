@@ -9,7 +9,8 @@
 // (checker/localize.hpp; a proof re-checked on the whole problem, a trace
 // concretized), SHOW_LOCAL=1 what it keeps and frees; SHOW_DEMAND=1 the
 // demand run of T cycles on the runtime (the path's elements and the
-// effect's signals, one digit a cycle); SHOW_PATHS=1 the number of paths
+// effect's signals, one digit a cycle; =2 the demand with the path alone,
+// =3 the demand after a reset); SHOW_PATHS=1 the number of paths
 // (=2: every path with its estimate); SHOW_STATE, SHOW_HOUDINI,
 // SHOW_INVARIANT as before.
 #include <chrono>
@@ -60,6 +61,8 @@ int main(int argc, char** argv) {
     auto run = response::demand_run(m, path, response::Mode::Normal, t);
     if (std::getenv("SHOW_DEMAND")[0] == '2')
       if (auto alone = response::demand_run_alone(m, path, response::Mode::Normal, t)) run = *alone;
+    if (std::getenv("SHOW_DEMAND")[0] == '3')
+      if (auto reset = response::demand_run_after_reset(m, path, response::Mode::Normal, t)) run = *reset;
     auto trace = checker::run_on_runtime(m, run);
     const auto all = model::observables(m);
     for (std::size_t i = 0; i < all.size(); ++i) {
@@ -90,6 +93,7 @@ int main(int argc, char** argv) {
     o.localize_to = path.elements;
     o.directed_runs = {response::demand_run(m, path, response::Mode::Normal, t)};
     if (auto alone = response::demand_run_alone(m, path, response::Mode::Normal, t)) o.directed_runs.push_back(*alone);
+    if (auto reset = response::demand_run_after_reset(m, path, response::Mode::Normal, t)) o.directed_runs.push_back(*reset);
     auto r = checker::check_properties(m, {file}, o);
     const auto& pr = r.properties.at(0);
     std::cout << checker::to_string(pr.verdict) << " " << pr.method << " " << pr.reason << std::endl;

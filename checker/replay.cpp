@@ -51,10 +51,10 @@ std::vector<model::CycleInput> cycle_inputs(const Trace& trace, const encoder::E
 std::optional<Trace> encoded_trace(const std::vector<model::CycleInput>& inputs, const encoder::Encoding& enc,
                                    const encoder::TransitionSystem& ts) {
   // What each input variable of the system reads from a cycle's inputs.
-  enum class Source { Value, Bad, Command };
+  enum class Source { Value, Bad, Command, CommandValue };
   struct Column {
     Source source;
-    std::size_t tag = 0;
+    std::size_t tag = 0;  // Value, Bad: the tag; Command, CommandValue: the command input
     bool is_float = false;
   };
   std::unordered_map<std::string, Column> meaning;
@@ -62,10 +62,16 @@ std::optional<Trace> encoded_trace(const std::vector<model::CycleInput>& inputs,
     if (enc.tag_value[i]) meaning[name_of(*enc.tag_value[i])] = {Source::Value, i, enc.tag_value[i]->is_fpa()};
     if (enc.tag_bad[i]) meaning[name_of(*enc.tag_bad[i])] = {Source::Bad, i, false};
   }
-  for (const auto& c : enc.commands) {
-    meaning[name_of(c.var)] = {Source::Command, 0, false};
-    if (c.value) meaning[name_of(*c.value)] = {Source::Command, 0, c.value->is_fpa()};
+  for (std::size_t k = 0; k < enc.commands.size(); ++k) {
+    const auto& c = enc.commands[k];
+    meaning[name_of(c.var)] = {Source::Command, k, false};
+    if (c.value) meaning[name_of(*c.value)] = {Source::CommandValue, k, c.value->is_fpa()};
   }
+  // The command input that stands for an issued command, by its targets.
+  auto same = [](const encoder::CommandInput& in, const model::Command& c) {
+    return in.op == c.op && in.cause == c.cause && in.effect == c.effect && in.tag == c.tag && in.group == c.group &&
+           in.on == c.on && in.tag_name == c.tag_name;
+  };
   Trace t;
   std::vector<Column> columns;
   for (const auto& in : ts.inputvars()) {
@@ -75,7 +81,14 @@ std::optional<Trace> encoded_trace(const std::vector<model::CycleInput>& inputs,
     columns.push_back(it->second);
   }
   for (const auto& cycle : inputs) {
-    if (!cycle.commands.empty()) return std::nullopt;
+    // Every issued command must be one of the encoding's command inputs.
+    std::vector<const model::Command*> issued(enc.commands.size(), nullptr);
+    for (const auto& command : cycle.commands) {
+      std::size_t k = 0;
+      while (k < enc.commands.size() && !same(enc.commands[k], command)) ++k;
+      if (k == enc.commands.size()) return std::nullopt;
+      issued[k] = &command;
+    }
     Trace::Cycle c;
     for (const auto& col : columns) {
       Value v;
@@ -89,8 +102,14 @@ std::optional<Trace> encoded_trace(const std::vector<model::CycleInput>& inputs,
         }
       } else if (col.source == Source::Bad) {
         v.i = cycle.tags.at(col.tag).bad_quality ? 1 : 0;
+      } else if (col.source == Source::Command) {
+        v.i = issued[col.tag] ? 1 : 0;
       } else {
-        v.is_float = col.is_float;  // no command issued: flag and value 0
+        v.is_float = col.is_float;  // not issued: value 0
+        if (const model::Command* command = issued[col.tag]) {
+          if (col.is_float) v.f = command->value;
+          else v.i = command->value != 0.0f ? 1 : 0;
+        }
       }
       c.inputs.push_back(v);
     }

@@ -27,7 +27,7 @@ std::vector<model::CycleInput> cycle_inputs(const Trace& trace, const encoder::E
 // encoding's transition system `ts` (the encoding's system, possibly with a
 // monitor compiled into it). Every input of `ts` must be an encoded tag's
 // value or quality or a command; nullopt when one is not, or when a cycle
-// issues a command (not needed by any caller yet).
+// issues a command that is none of the encoding's command inputs.
 std::optional<Trace> encoded_trace(const std::vector<model::CycleInput>& inputs, const encoder::Encoding& enc,
                                    const encoder::TransitionSystem& ts);
 

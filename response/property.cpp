@@ -265,4 +265,51 @@ std::optional<std::vector<model::CycleInput>> demand_run_alone(const model::Matr
   return run;
 }
 
+std::optional<std::vector<model::CycleInput>> demand_run_after_reset(const model::Matrix& m, const Path& p,
+                                                                     Mode mode, long long cycles) {
+  std::set<int> effects;
+  for (const auto& n : p.elements)
+    if (n.kind == model::Node::Kind::Effect) effects.insert(n.id);
+  std::set<int> linked;  // causes linked to a path effect
+  for (const auto& x : m.intersections)
+    if (effects.count(x.effect)) linked.insert(x.cause);
+  long long settle = 0;
+  for (int id : linked)
+    if (const Cause* c = m.find_cause(id); c && c->time.mode != model::TimeMode::None)
+      settle = std::max(settle, cycles_of(c->time.ms, m.cycle_ms));
+  for (int id : effects) settle = std::max(settle, cycles_of(m.find_effect(id)->output_delay_ms, m.cycle_ms));
+  settle += 1;
+  constexpr long long kMaxSettle = 10000;
+  if (settle > kMaxSettle) return std::nullopt;
+  std::vector<model::CycleInput> base = demand_run_alone(m, p, mode, cycles).value_or(demand_run(m, p, mode, cycles));
+  const model::CycleInput quiet = base.front(), demand = base.back();
+  model::CycleInput reset = quiet;
+  const model::InputTable table(m);
+  // Commands in the fixed order (model::CommandOrder): acknowledgements by
+  // cause, then resets by effect.
+  for (int id : linked)
+    if (const Cause* c = m.find_cause(id); c && !c->auto_ack) {
+      model::Command ack;
+      ack.op = model::CommandOp::AckCause;
+      ack.cause = id;
+      reset.commands.push_back(ack);
+    }
+  for (int id : effects) {
+    const model::Effect& e = *m.find_effect(id);
+    if (!e.reset_tag) {
+      model::Command c;
+      c.op = model::CommandOp::ResetEffect;
+      c.effect = id;
+      reset.commands.push_back(c);
+    } else if (!model::parse_internal_ref(*e.reset_tag)) {
+      if (auto index = table.find(*e.reset_tag)) reset.tags[*index].value = quiet.tags[*index].value != 0.0f ? 0.0f : 1.0f;
+    }
+  }
+  std::vector<model::CycleInput> run(static_cast<std::size_t>(settle), quiet);
+  run.push_back(reset);
+  run.push_back(quiet);
+  run.resize(run.size() + static_cast<std::size_t>(std::max(0LL, cycles)) + 1, demand);
+  return run;
+}
+
 }  // namespace cemv::response

@@ -46,4 +46,17 @@ std::vector<model::CycleInput> demand_run(const model::Matrix& m, const Path& p,
 std::optional<std::vector<model::CycleInput>> demand_run_alone(const model::Matrix& m, const Path& p, Mode mode,
                                                                long long cycles);
 
+// The demand after the plant has settled and the path's effects were reset:
+// the quiet plant (others held off as in demand_run_alone, where they can
+// be) for as long as the longest timer of the path's effects and of the
+// causes linked to them, then one cycle in which every such cause with
+// manual acknowledgement is acknowledged and every path effect reset (by
+// its reset tag's edge, or the reset_effect command when it has none), one
+// quiet cycle more, then the demand held for `cycles` + 1 cycles. An effect
+// latched at start-up (an S cell of a pulse cause tripped by a permissive at
+// rest) answers the plain demand at once; this run shows it released first.
+// Nullopt when the settling would exceed 10,000 cycles.
+std::optional<std::vector<model::CycleInput>> demand_run_after_reset(const model::Matrix& m, const Path& p,
+                                                                     Mode mode, long long cycles);
+
 }  // namespace cemv::response

@@ -160,6 +160,7 @@ Figure least_response(const model::Matrix& m, const Path& p, Mode mode, const Se
     if (t < kMaxDirectedRunCycles) {
       runs.push_back(demand_run(m, p, mode, t));
       if (auto alone = demand_run_alone(m, p, mode, t)) runs.push_back(std::move(*alone));
+      if (auto reset = demand_run_after_reset(m, p, mode, t)) runs.push_back(std::move(*reset));
     }
     // A path held off beyond `lo` by what its counterexample did (a state
     // the demand alone does not reach) is often held off longer still: that

@@ -4,6 +4,7 @@
 // evaluator, does not violate: check_properties must stop with InternalError
 // (exit 4 at the command line), showing where the two sides differ.
 #include <filesystem>
+#include <optional>
 
 #include <gtest/gtest.h>
 
@@ -151,7 +152,24 @@ TEST(CheckReplay, EncodedTraceIsTheInverseOfCycleInputs) {
       EXPECT_EQ(back[k].tags[i].value, run[k].tags[i].value) << "cycle " << k << " tag " << i;
       EXPECT_EQ(back[k].tags[i].bad_quality, run[k].tags[i].bad_quality) << "cycle " << k << " tag " << i;
     }
-  run[2].commands.push_back(model::Command{});
+  // Commands map to the encoding's command inputs and back.
+  // (The last of the encoding's commands: a reset, override or soft bypass.)
+  ASSERT_FALSE(enc->commands.empty());
+  std::optional<model::Command> command = enc->commands.back().command();
+  run[1].commands.push_back(*command);
+  t = checker::encoded_trace(run, *enc, enc->ts);
+  ASSERT_TRUE(t.has_value());
+  const auto with_command = checker::cycle_inputs(*t, *enc, m);
+  ASSERT_EQ(with_command[1].commands.size(), 1u);
+  EXPECT_EQ(with_command[1].commands[0].op, command->op);
+  EXPECT_EQ(with_command[1].commands[0].cause, command->cause);
+  EXPECT_EQ(with_command[1].commands[0].effect, command->effect);
+  EXPECT_TRUE(with_command[0].commands.empty());
+  // A command the encoding has no input for (no cause 999) cannot be mapped.
+  model::Command ack;
+  ack.op = model::CommandOp::AckCause;
+  ack.cause = 999;
+  run[2].commands.push_back(ack);
   EXPECT_FALSE(checker::encoded_trace(run, *enc, enc->ts).has_value());
 }
 

@@ -269,6 +269,41 @@ TEST(Response, PassThroughIsQuietAwayFromTheSafeValuesOfEveryTag) {
   EXPECT_EQ(j.at("steps")[0].at("inputs").at("BPCS1"), true) << j.dump(1);
 }
 
+// An effect latched at start-up answers the plain demand at once: cause 2
+// reads Cause[1] de-energize-to-trip (a permissive, tripped while cause 1
+// is quiet), pulses for 500 ms at start-up and sets effect 1's S latch.
+// Nothing holds cause 2 off (no bypass or inhibit tag). The T - 1 run is
+// the demand after the plant settled and effect 1 was reset
+// (response::demand_run_after_reset): the reset_effect command, then S1.
+TEST(Response, EffectLatchedAtStartUpIsResetBeforeTheDemand) {
+  auto m = matrix(cause(1, "S1") + "," +
+                      R"({"id": 2, "name": "C2", "sif": [1], "tags": [{"name": "Cause[1]", "ett": false}],
+                          "time": {"mode": "timed", "ms": 500}})",
+                  effect(1, "Y1", R"("output_delay_ms": 500)"), link(1, 1) + "," + link(2, 1, "S"));
+  auto dir = scratch("latched_at_start");
+  auto r = analyse(m, dir);
+  const auto& p = only_path(r, 1);
+  ASSERT_EQ(p.path.causes, std::vector<int>{1});
+  ASSERT_EQ(p.logic.kind, Figure::Kind::Exact) << p.logic.reason;
+  EXPECT_EQ(p.logic.cycles, 5);
+  expect_replays(m, dir, p.logic.counterexample);
+  expect_not_yet_active(dir, p.logic.counterexample, 1);
+  // That run, not an engine's trace: the plant settles for 6 cycles (the
+  // 500 ms pulse and output delay, and one more), then the reset.
+  const auto j = nlohmann::json::parse(read(dir / p.logic.counterexample));
+  ASSERT_EQ(j.at("steps").size(), 3u) << j.dump(1);
+  EXPECT_EQ(j.at("steps")[0].at("cycles"), 6) << j.dump(1);
+  EXPECT_EQ(j.at("steps")[1].at("commands")[0].at("op"), "reset_effect") << j.dump(1);
+  // The plain demand shows nothing: effect 1 is latched when S1 trips.
+  const auto plain = checker::run_on_runtime(m, response::demand_run(m, p.path, response::Mode::Normal, 4));
+  const auto all = model::observables(m);
+  std::size_t active = all.size();
+  for (std::size_t i = 0; i < all.size(); ++i)
+    if (all[i].key == "effect[1].active") active = i;
+  ASSERT_LT(active, all.size());
+  EXPECT_EQ(plain.observables[1][active], 1);
+}
+
 TEST(Response, TwoOutOfThreeWithOneBadInputReportsItsDegradedFigure) {
   // Discrete switches (de-energize-to-trip): 2oo3 with "degrade" becomes 1oo2
   // when one of them goes bad (C.4).
