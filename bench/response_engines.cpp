@@ -36,7 +36,14 @@ using namespace cemv;
 int main(int argc, char** argv) {
   if (argc < 5) return 2;
   model::Matrix m = formats::load_matrix(argv[1]);
-  const int cause = std::atoi(argv[2]), effect = std::atoi(argv[3]);
+  // CAUSE: one id, or the ids of an XooN path joined by '_' (its key).
+  std::vector<int> causes;
+  for (const char* c = argv[2]; *c;) {
+    causes.push_back(std::atoi(c));
+    while (*c && *c != '_') ++c;
+    if (*c == '_') ++c;
+  }
+  const int effect = std::atoi(argv[3]);
   const long long t = std::atoll(argv[4]);
   const int seconds = argc > 5 ? std::atoi(argv[5]) : 30;
   std::vector<std::string> engines;
@@ -56,7 +63,7 @@ int main(int argc, char** argv) {
   }
   response::Path path;
   for (const auto& p : response::response_paths(m, {}))
-    if (p.effect == effect && p.causes == std::vector<int>{cause}) path = p;
+    if (p.effect == effect && p.causes == causes) path = p;
   if (std::getenv("SHOW_DEMAND")) {
     auto run = response::demand_run(m, path, response::Mode::Normal, t);
     if (std::getenv("SHOW_DEMAND")[0] == '2')
