@@ -2,13 +2,11 @@
 
 #include <memory>
 #include <string_view>
-#include <unordered_map>
 #include <unordered_set>
 
 #include "checker/check/recheck.hpp"
 #include "checker/reduce.hpp"
-#include "encoder/encode.hpp"
-#include "encoder/evaluate.hpp"
+#include "checker/reduce_terms.hpp"
 
 namespace cemv::checker {
 
@@ -20,13 +18,6 @@ struct Localized {
   std::shared_ptr<void> original;
   encoder::TransitionSystem ts;
 };
-
-void collect_variables(const z3::expr& e, std::unordered_set<unsigned>& seen, std::unordered_set<unsigned>& vars) {
-  if (!seen.insert(e.id()).second) return;
-  if (e.is_const() && e.decl().decl_kind() == Z3_OP_UNINTERPRETED) vars.insert(e.id());
-  if (e.is_app())
-    for (unsigned i = 0; i < e.num_args(); ++i) collect_variables(e.arg(i), seen, vars);
-}
 
 }  // namespace
 
@@ -66,8 +57,7 @@ std::optional<OwnedProblem> localize(const OwnedProblem& original, const KeepSta
   for (const auto& t : ts.named_terms()) l.name_term(t.name, t.term);
   // A lemma about a freed variable no longer holds of an input.
   for (const auto& lemma : ts.lemmas()) {
-    std::unordered_set<unsigned> seen, vars;
-    collect_variables(lemma.term, seen, vars);
+    const std::unordered_set<unsigned> vars = reduce_terms::variables_of(lemma.term);
     bool inside = true;
     for (const auto* s : freed) inside = inside && !vars.count(s->var.id());
     if (inside) l.add_lemma(lemma.name, lemma.term);
@@ -85,32 +75,10 @@ std::optional<OwnedProblem> localize(const OwnedProblem& original, const KeepSta
 }
 
 std::optional<Trace> concretize(const SafetyProblem& original, const Trace& localized) {
-  const auto& ts = *original.ts;
-  std::unordered_map<std::string, std::size_t> position;
-  for (std::size_t i = 0; i < localized.input_names.size(); ++i) position[localized.input_names[i]] = i;
-  Trace out;
-  for (const auto& in : ts.inputvars()) out.input_names.push_back(in.name);
-  for (const auto& sv : ts.statevars()) out.state_names.push_back(sv.name);
-  encoder::Encoding enc(ts.ctx());
-  enc.ts = ts;
-  encoder::Evaluator ev(enc);
-  for (const auto& cycle : localized.cycles) {
-    Trace::Cycle next;
-    std::vector<encoder::Evaluator::Value> raw;
-    for (const auto& in : ts.inputvars()) {
-      // An input the localized cone dropped does not matter to its violation:
-      // it keeps its value at rest.
-      Value v;
-      v.is_float = in.var.is_fpa();
-      if (auto it = position.find(in.name); it != position.end()) v = cycle.inputs[it->second];
-      next.inputs.push_back(v);
-      raw.push_back(encoder::Evaluator::Value{v.i, v.f});
-    }
-    for (std::size_t s = 0; s < ts.statevars().size(); ++s)
-      next.state.push_back(Value{ts.statevars()[s].var.is_fpa(), ev.state()[s].i, ev.state()[s].f});
-    ev.step_raw(raw);
-    out.cycles.push_back(std::move(next));
-  }
+  // The inputs by name (one the localized cone dropped keeps its value at
+  // rest), the freed variables computed by their own next-state functions:
+  // the same lifting as a reduced trace's.
+  Trace out = lift_trace(original, localized);
   try {
     check::replay_counterexample(original, out);
   } catch (const InternalError&) {

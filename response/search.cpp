@@ -59,10 +59,11 @@ Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles,
   // needed; where none does, they still witness that the trigger can rise
   // (the proof's vacuity question).
   options.directed_runs = runs;
-  // A wide cone is mostly other elements that can only make the effect
-  // respond sooner (other causes, the effects their references read): a
-  // proof on the path's own elements, the rest left free, is re-checked on
-  // the whole cone (checker::CheckOptions::localize_to).
+  // A cone is mostly other elements that can only make the effect respond
+  // sooner (other causes, the effects their references read): a proof on
+  // the path's own elements, the rest left free, is re-checked on the whole
+  // cone (checker::CheckOptions::localize_to; tried on a wide cone, and on a
+  // narrow one when that halves it).
   if (localize) options.localize_to = p.elements;
   // The accelerated unrolling's trace holds its inputs over at most 8 macro
   // steps: readable as it is, and the core-guided search over 33 to 64

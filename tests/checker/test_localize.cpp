@@ -52,6 +52,18 @@ struct Fixture {
 
 const std::vector<model::Node> kCause1AndEffect1{{model::Node::Kind::Cause, 1}, {model::Node::Kind::Effect, 1}};
 
+// The portfolio on a fixture's property, localized to cause 1 and effect 1
+// first; every problem counts as wide, so `engines` are its wide engines.
+ProverResult localized_portfolio(const Fixture& f, std::size_t property, std::vector<std::string> engines) {
+  PortfolioOptions o;
+  o.quick_k = -1;
+  o.in_order_max_states = 0;
+  o.wide_engines = std::move(engines);
+  o.localize_keep = keep_elements(kCause1AndEffect1);
+  return Portfolio(property_problem(f.m, f.file, f.file.properties.at(property)), o)
+      .run(Limits::within(std::chrono::seconds(60)));
+}
+
 TEST(Localize, FreesTheStateOfOtherElementsOnly) {
   Fixture f;
   z3::context ctx;
@@ -76,13 +88,7 @@ TEST(Localize, ProofOnTheLocalizationReChecksOnTheWholeProblem) {
   ASSERT_EQ(r.verdict, Verdict::Proved) << r.reason;
   EXPECT_NO_THROW(check::recheck_proof(f.make(0), r));
   // Through the portfolio: the localized answer, re-checked there.
-  PortfolioOptions o;
-  o.quick_k = -1;
-  o.in_order_max_states = 0;  // every problem counts as wide
-  o.wide_engines = {"bmc"};
-  o.localize_keep = keep_elements(kCause1AndEffect1);
-  ProverResult p = Portfolio(property_problem(f.m, f.file, f.file.properties[0]), o).run(
-      Limits::within(std::chrono::seconds(60)));
+  ProverResult p = localized_portfolio(f, 0, {"bmc"});
   EXPECT_EQ(p.verdict, Verdict::Proved) << p.reason;
   EXPECT_NE(p.method.find(", localized"), std::string::npos) << p.method;
 }
@@ -98,13 +104,7 @@ TEST(Localize, SpuriousCounterexampleIsNotConcretizedAndTheWholeProblemDecides) 
   ProverResult r = Bmc{}.prove(local->problem, limits);
   ASSERT_EQ(r.verdict, Verdict::Falsified) << r.reason;
   EXPECT_FALSE(concretize(whole.problem, r.cex).has_value());
-  PortfolioOptions o;
-  o.quick_k = -1;
-  o.in_order_max_states = 0;
-  o.wide_engines = {"pdr", "k-induction"};
-  o.localize_keep = keep_elements(kCause1AndEffect1);
-  ProverResult p = Portfolio(property_problem(f.m, f.file, f.file.properties[1]), o).run(
-      Limits::within(std::chrono::seconds(60)));
+  ProverResult p = localized_portfolio(f, 1, {"pdr", "k-induction"});
   EXPECT_EQ(p.verdict, Verdict::Proved) << p.reason;
   EXPECT_EQ(p.method.find("localized"), std::string::npos) << p.method;
 }

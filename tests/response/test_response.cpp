@@ -81,6 +81,14 @@ std::string read(const std::filesystem::path& p) {
   return s.str();
 }
 
+// The position of an observable in a runtime trace's rows (model::observables).
+std::size_t observable_index(const model::Matrix& m, const std::string& key) {
+  const auto all = model::observables(m);
+  for (std::size_t i = 0; i < all.size(); ++i)
+    if (all[i].key == key) return i;
+  throw std::runtime_error("no observable " + key);
+}
+
 // The scenario replays on the runtime: `cemv simulate` checks its
 // expectations (the property's signals after the last cycle) and exits 0.
 void expect_replays(const model::Matrix& m, const std::filesystem::path& dir, const std::string& scenario) {
@@ -235,14 +243,7 @@ TEST(Response, ReferenceThatTheDemandReleasesIsNoRoute) {
   p.effect = 2;
   p.elements = {{model::Node::Kind::Cause, 1}, {model::Node::Kind::Effect, 2}};
   const auto trace = checker::run_on_runtime(m, response::demand_run(m, p, response::Mode::Normal, 20));
-  const auto all = model::observables(m);
-  std::size_t c2 = all.size(), e2 = all.size();
-  for (std::size_t i = 0; i < all.size(); ++i) {
-    if (all[i].key == "cause[2].active") c2 = i;
-    if (all[i].key == "effect[2].active") e2 = i;
-  }
-  ASSERT_LT(c2, all.size());
-  ASSERT_LT(e2, all.size());
+  const std::size_t c2 = observable_index(m, "cause[2].active"), e2 = observable_index(m, "effect[2].active");
   EXPECT_EQ(trace.observables.front()[c2], 1);  // the plant quiet: effect 1 inactive, the permissive trips
   EXPECT_EQ(trace.observables.back()[c2], 0);
   EXPECT_EQ(trace.observables.back()[e2], 0);
@@ -296,12 +297,7 @@ TEST(Response, EffectLatchedAtStartUpIsResetBeforeTheDemand) {
   EXPECT_EQ(j.at("steps")[1].at("commands")[0].at("op"), "reset_effect") << j.dump(1);
   // The plain demand shows nothing: effect 1 is latched when S1 trips.
   const auto plain = checker::run_on_runtime(m, response::demand_run(m, p.path, response::Mode::Normal, 4));
-  const auto all = model::observables(m);
-  std::size_t active = all.size();
-  for (std::size_t i = 0; i < all.size(); ++i)
-    if (all[i].key == "effect[1].active") active = i;
-  ASSERT_LT(active, all.size());
-  EXPECT_EQ(plain.observables[1][active], 1);
+  EXPECT_EQ(plain.observables[1][observable_index(m, "effect[1].active")], 1);
 }
 
 TEST(Response, TwoOutOfThreeWithOneBadInputReportsItsDegradedFigure) {
