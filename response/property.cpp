@@ -158,6 +158,14 @@ namespace {
 // A cause's input inside its limit: a discrete input at its healthy value, an
 // analog one at `value` unless that is beyond the limit, else clear of the
 // hysteresis band.
+// The ids of the effects on a path (its end and the effects its routes cross).
+std::set<int> effects_on(const Path& p) {
+  std::set<int> out;
+  for (const auto& n : p.elements)
+    if (n.kind == model::Node::Kind::Effect) out.insert(n.id);
+  return out;
+}
+
 float healthy_value(const Cause& c, const model::CauseTag& t, float value) {
   if (c.input == model::InputKind::Analog && c.analog) {
     const bool high = c.analog->limit_type == model::LimitType::High;
@@ -185,13 +193,9 @@ std::vector<model::CycleInput> demand_run(const model::Matrix& m, const Path& p,
   // Two causes may read one tag with limits no single value keeps both
   // inside (a high limit of -9 and a low limit of 132.5): then the causes
   // linked to the path's effects decide, so that those effects are quiet.
-  auto on_path = [&](int effect) {
-    return std::any_of(p.elements.begin(), p.elements.end(), [&](const model::Node& n) {
-      return n.kind == model::Node::Kind::Effect && n.id == effect;
-    });
-  };
+  const std::set<int> effects = effects_on(p);
   for (const auto& x : m.intersections)
-    if (on_path(x.effect))
+    if (effects.count(x.effect))
       if (const Cause* c = m.find_cause(x.cause)) make_healthy(*c);
   // An effect on the path that passes process data through shows the BPCS
   // value while it is not active (E.8): that value away from the active
@@ -267,9 +271,7 @@ std::optional<std::vector<model::CycleInput>> demand_run_alone(const model::Matr
 
 std::optional<std::vector<model::CycleInput>> demand_run_after_reset(const model::Matrix& m, const Path& p,
                                                                      Mode mode, long long cycles) {
-  std::set<int> effects;
-  for (const auto& n : p.elements)
-    if (n.kind == model::Node::Kind::Effect) effects.insert(n.id);
+  const std::set<int> effects = effects_on(p);
   std::set<int> linked;  // causes linked to a path effect
   for (const auto& x : m.intersections)
     if (effects.count(x.effect)) linked.insert(x.cause);
