@@ -80,6 +80,7 @@ int main(int argc, char** argv) {
       show = show || key.rfind("effect[2].", 0) == 0;
       for (const auto& x : m.intersections)
         show = show || (x.effect == effect && key == "cause[" + std::to_string(x.cause) + "].active");
+      if (std::getenv("SHOW_ALL")) show = true;
       if (!show && key.find("output") == std::string::npos && key.find(".tag[") == std::string::npos) continue;
       if (!show && key.rfind("effect[" + std::to_string(effect) + "]", 0) != 0) continue;
       std::string line;

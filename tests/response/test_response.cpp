@@ -19,6 +19,7 @@
 #include "model/vocabulary.hpp"
 #include "response/paths.hpp"
 #include "formats/matrix_json.hpp"
+#include "properties/evaluator.hpp"
 #include "properties/parser.hpp"
 #include "response/analysis.hpp"
 #include "response/property.hpp"
@@ -380,6 +381,91 @@ TEST(Response, XooNAssignmentIsOnePathTriggeredByXCauses) {
   EXPECT_EQ(p.path.key(), "c1_2_3.e1");  // a name the property language reads
   ASSERT_EQ(p.logic.kind, Figure::Kind::Exact) << p.logic.reason;
   EXPECT_EQ(p.logic.cycles, 0);
+}
+
+// The demand of an XooN path is a fixed set of X causes, each held since its
+// rise (docs/response-time.md, "XooN paths"). Three 1 s on-delays, 2oo3: pairs
+// that take turns every 4 cycles keep two conditions true in every cycle, yet
+// no cause's timer ever expires. That is no demand, so the figure is the
+// on-delay, not `unbounded`.
+TEST(Response, XooNCausesTakingTurnsAreNoDemand) {
+  const std::string delay = R"("time": {"mode": "on_delay", "ms": 1000})";
+  auto m = matrix(cause(1, "S1", delay) + "," + cause(2, "S2", delay) + "," + cause(3, "S3", delay), effect(1, "Y1"),
+                  R"({"cause": 1, "effect": 1, "type": "N", "xoon": 2}, {"cause": 2, "effect": 1, "type": "N", "xoon": 2},
+                     {"cause": 3, "effect": 1, "type": "N", "xoon": 2})");
+  auto dir = scratch("xoon_turns");
+  auto r = analyse(m, dir);
+  const auto& p = only_path(r, 1);
+  ASSERT_EQ(p.logic.kind, Figure::Kind::Exact) << p.logic.reason;
+  EXPECT_EQ(p.logic.cycles, 10);
+  expect_replays(m, dir, p.logic.counterexample);
+  expect_not_yet_active(dir, p.logic.counterexample, 1);
+  // The pairs {1,2}, {1,3}, {2,3} in turn, 4 cycles each (switches are DTT:
+  // 0 is tripped): two conditions in every cycle, the effect never active,
+  // and the bound of 10 cycles not violated.
+  const model::InputTable table(m);
+  model::CycleInput quiet = model::default_cycle_input(m);
+  for (const char* tag : {"S1", "S2", "S3"}) quiet.tags[*table.find(tag)].value = 1.0f;
+  std::vector<model::CycleInput> turns{quiet};
+  const std::vector<std::pair<const char*, const char*>> pairs{{"S1", "S2"}, {"S1", "S3"}, {"S2", "S3"}};
+  for (int round = 0; round < 4; ++round)
+    for (const auto& [a, b] : pairs) {
+      model::CycleInput c = quiet;
+      c.tags[*table.find(a)].value = 0.0f;
+      c.tags[*table.find(b)].value = 0.0f;
+      turns.insert(turns.end(), 4, c);
+    }
+  const auto run = checker::run_on_runtime(m, turns);
+  for (const auto& o : run.observables) ASSERT_EQ(o[observable_index(m, "effect[1].active")], 0);
+  const auto file = properties::parse_properties(
+      response::response_property_text(m, p.path, response::Mode::Normal, 10, "turns"), m, "turns");
+  properties::Trace trace;
+  for (std::size_t i = 0; i < run.inputs.size(); ++i) trace.push_back({run.inputs[i], run.observables[i]});
+  const auto e = properties::Evaluator(m).evaluate(file, trace).at(0);
+  EXPECT_TRUE(e.assumptions_held);
+  EXPECT_TRUE(e.holds);
+  EXPECT_FALSE(e.antecedent_met);  // no set of two held for 10 cycles
+}
+
+// Members of an XooN set may rise at different times. A timed (pulse) cause
+// that rises first has ended its pulse when the last member rises, and the
+// XooN never sees two active causes: `unbounded`, although both tripping in
+// one cycle responds at once.
+TEST(Response, XooNWhosePulseEndsBeforeTheSetCompletesIsUnbounded) {
+  auto m = matrix(cause(1, "S1", R"("time": {"mode": "timed", "ms": 500})") + "," + cause(2, "S2"), effect(1, "Y1"),
+                  R"({"cause": 1, "effect": 1, "type": "N", "xoon": 2}, {"cause": 2, "effect": 1, "type": "N", "xoon": 2})");
+  auto dir = scratch("xoon_pulse");
+  auto r = analyse(m, dir);
+  const auto& p = only_path(r, 1);
+  ASSERT_EQ(p.logic.kind, Figure::Kind::Unbounded) << p.logic.reason;
+  expect_replays(m, dir, p.logic.counterexample);
+  expect_not_yet_active(dir, p.logic.counterexample, 1);
+  const auto together = checker::run_on_runtime(m, response::demand_run(m, p.path, response::Mode::Normal, 0));
+  EXPECT_EQ(together.observables.back()[observable_index(m, "effect[1].active")], 1);
+}
+
+// A cause bypassed through a de-energize-to-trip output of another effect
+// (`Effect[2][1]` reads 1 while effect 2 is not active) is held off from
+// start-up. The demand runs trip cause 3, which activates effect 2 at once,
+// in every cycle (docs/response-time.md, "Method"), so that the demand run is
+// the T - 1 counterexample.
+TEST(Response, BypassThroughAnEffectOutputIsReleasedInTheDemandRun) {
+  auto m = matrix(cause(1, "S1", R"("bypass_tag": "Effect[2][1]", "time": {"mode": "on_delay", "ms": 500})") + "," +
+                      cause(3, "S3"),
+                  effect(1, "Y1") + "," + effect(2, "Y2"), link(1, 1) + "," + link(3, 2));
+  auto dir = scratch("bypass_released");
+  auto r = analyse(m, dir);
+  const auto& p = only_path(r, 1);
+  ASSERT_EQ(p.logic.kind, Figure::Kind::Exact) << p.logic.reason;
+  EXPECT_EQ(p.logic.cycles, 5);
+  EXPECT_EQ(p.logic.method.find("directed run"), std::string::npos);  // the bound is proved by an engine
+  expect_replays(m, dir, p.logic.counterexample);
+  expect_demand_run(dir, p.logic.counterexample, "S1", 5);
+  const auto first = nlohmann::json::parse(read(dir / p.logic.counterexample)).at("steps")[0].at("inputs");
+  EXPECT_EQ(first.at("S3"), false) << first.dump();
+  // Without cause 3 tripped, cause 1 is bypassed in the first cycle.
+  const auto plain = checker::run_on_runtime(m, {model::default_cycle_input(m)});
+  EXPECT_EQ(plain.observables[0][observable_index(m, "cause[1].bypassed")], 1);
 }
 
 // Long delays are not unrolled (docs/response-time.md, "Method"): a 30 min
