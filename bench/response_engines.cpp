@@ -12,7 +12,8 @@
 // effect's signals, one digit a cycle; =2 the demand with the path alone,
 // =3 the demand after a reset); SHOW_PATHS=1 the number of paths
 // (=2: every path with its estimate); SHOW_STATE, SHOW_HOUDINI,
-// SHOW_INVARIANT as before.
+// SHOW_INVARIANT as before; SHOW_ALL=1 with SHOW_DEMAND every observable;
+// OUT=DIR with SHOW_CHECK writes the probe's scenario there.
 #include <chrono>
 #include <cstdlib>
 #include <iostream>
@@ -99,6 +100,7 @@ int main(int argc, char** argv) {
     o.engines_when_wide = {"pdr"};
     o.engines_in_order = true;
     o.localize_to = path.elements;
+    if (const char* out = std::getenv("OUT")) o.out_dir = out;
     o.directed_runs = {response::demand_run(m, path, response::Mode::Normal, t)};
     if (auto alone = response::demand_run_alone(m, path, response::Mode::Normal, t)) o.directed_runs.push_back(*alone);
     if (auto reset = response::demand_run_after_reset(m, path, response::Mode::Normal, t)) o.directed_runs.push_back(*reset);

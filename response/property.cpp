@@ -1,6 +1,7 @@
 #include "response/property.hpp"
 
 #include <algorithm>
+#include <map>
 #include <set>
 #include <tuple>
 
@@ -321,8 +322,22 @@ std::vector<model::CycleInput> demand_run(const model::Matrix& m, const Path& p,
   }
   // A cause's inputs beyond their limits (the first of them in bad quality
   // when `bad_first`).
+  // Without a bad input, only as many inputs as the voting needs, those no
+  // other cause reads first: a tag shared with another cause trips that one
+  // too, and with it whatever it drives (big_matrix's cause 34 shares
+  // FSL_105A with cause 5, whose effect 6 inhibits cause 57 of the same
+  // XooN, and the run then judges nothing).
+  std::map<std::string, int> readers;
+  for (const auto& c : m.causes)
+    for (const auto* t : external_tags(c)) ++readers[model::tag_key(t->name)];
   auto trip = [&](model::CycleInput& cycle, const Cause& c, bool bad_first) {
-    const auto tags = external_tags(c);
+    auto tags = external_tags(c);
+    if (!bad_first) {
+      std::stable_sort(tags.begin(), tags.end(), [&](const auto* a, const auto* b) {
+        return readers[model::tag_key(a->name)] < readers[model::tag_key(b->name)];
+      });
+      tags.resize(std::min(tags.size(), static_cast<std::size_t>(std::max(1, votes_needed(c)))));
+    }
     for (std::size_t k = 0; k < tags.size(); ++k) {
       auto index = table.find(tags[k]->name);
       if (!index) continue;
