@@ -13,7 +13,8 @@
 // =3 the demand after a reset); SHOW_PATHS=1 the number of paths
 // (=2: every path with its estimate); SHOW_STATE, SHOW_HOUDINI,
 // SHOW_INVARIANT as before; SHOW_ALL=1 with SHOW_DEMAND every observable;
-// OUT=DIR with SHOW_CHECK writes the probe's scenario there.
+// OUT=DIR with SHOW_CHECK writes the probe's scenario there; DEGRADED=1 the
+// degraded figure's property and demand runs.
 #include <chrono>
 #include <cstdlib>
 #include <iostream>
@@ -62,15 +63,17 @@ int main(int argc, char** argv) {
     std::cout << paths.size() << " paths, " << chains << " through references" << std::endl;
     return 0;
   }
+  // DEGRADED=1: the degraded figure's property and runs.
+  const response::Mode mode = std::getenv("DEGRADED") ? response::Mode::Degraded : response::Mode::Normal;
   response::Path path;
   for (const auto& p : response::response_paths(m, {}))
     if (p.effect == effect && p.causes == causes) path = p;
   if (std::getenv("SHOW_DEMAND")) {
-    auto run = response::demand_run(m, path, response::Mode::Normal, t);
+    auto run = response::demand_run(m, path, mode, t);
     if (std::getenv("SHOW_DEMAND")[0] == '2')
-      if (auto alone = response::demand_run_alone(m, path, response::Mode::Normal, t)) run = *alone;
+      if (auto alone = response::demand_run_alone(m, path, mode, t)) run = *alone;
     if (std::getenv("SHOW_DEMAND")[0] == '3')
-      if (auto reset = response::demand_run_after_reset(m, path, response::Mode::Normal, t)) run = *reset;
+      if (auto reset = response::demand_run_after_reset(m, path, mode, t)) run = *reset;
     auto trace = checker::run_on_runtime(m, run);
     const auto all = model::observables(m);
     for (std::size_t i = 0; i < all.size(); ++i) {
@@ -92,7 +95,7 @@ int main(int argc, char** argv) {
   }
   if (std::getenv("SHOW_CHECK")) {
     auto file = properties::parse_properties(
-        response::response_property_text(m, path, response::Mode::Normal, t, "probe"), m, "probe");
+        response::response_property_text(m, path, mode, t, "probe"), m, "probe");
     checker::CheckOptions o;
     o.property_timeout_s = seconds;
     o.support = false;
@@ -101,9 +104,9 @@ int main(int argc, char** argv) {
     o.engines_in_order = true;
     o.localize_to = path.elements;
     if (const char* out = std::getenv("OUT")) o.out_dir = out;
-    o.directed_runs = {response::demand_run(m, path, response::Mode::Normal, t)};
-    if (auto alone = response::demand_run_alone(m, path, response::Mode::Normal, t)) o.directed_runs.push_back(*alone);
-    if (auto reset = response::demand_run_after_reset(m, path, response::Mode::Normal, t)) o.directed_runs.push_back(*reset);
+    o.directed_runs = {response::demand_run(m, path, mode, t)};
+    if (auto alone = response::demand_run_alone(m, path, mode, t)) o.directed_runs.push_back(*alone);
+    if (auto reset = response::demand_run_after_reset(m, path, mode, t)) o.directed_runs.push_back(*reset);
     auto r = checker::check_properties(m, {file}, o);
     const auto& pr = r.properties.at(0);
     std::cout << checker::to_string(pr.verdict) << " " << pr.method << " " << pr.reason << std::endl;
@@ -112,7 +115,7 @@ int main(int argc, char** argv) {
   }
   for (long long bound : {t, t - 1}) {
     auto file = properties::parse_properties(
-        response::response_property_text(m, path, response::Mode::Normal, bound, "probe"), m, "probe");
+        response::response_property_text(m, path, mode, bound, "probe"), m, "probe");
     const auto& prop = file.properties.at(0);
     auto make = checker::property_problem(m, file, prop);
     for (const auto& engine : engines) {

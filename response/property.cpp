@@ -342,11 +342,14 @@ std::vector<model::CycleInput> demand_run(const model::Matrix& m, const Path& p,
       auto index = table.find(tags[k]->name);
       if (!index) continue;
       model::TagValue& v = cycle.tags[*index];
+      v.bad_quality = bad_first && k == 0;
+      // A bad input in `ignore` mode votes with the value delivered (C.3):
+      // the worst case delivers its healthy value, which the quiet plant has.
+      if (v.bad_quality && c.bad_quality == model::BadQuality::Ignore) continue;
       if (c.input == model::InputKind::Analog && c.analog)
         v.value = c.analog->limit;
       else
         v.value = tags[k]->ett ? 1.0f : 0.0f;
-      v.bad_quality = bad_first && k == 0;
     }
   };
   for (const Cause* c : holds_released_by(m, p)) trip(quiet, *c, false);
@@ -382,16 +385,39 @@ std::optional<std::vector<model::CycleInput>> demand_run_alone(const model::Matr
       }
     }
   }
+  // The elements whose activity holds a path cause off: x of a bypass or
+  // inhibit `Effect[x]`, `Cause[x]` or `Effect[x][y]` of an energize-to-trip
+  // tag (each reads 1 while x is active). Their causes are held off too
+  // (big_matrix's cause 83 is bypassed while effect 82 is active, which
+  // cause 126 activates whenever the pulse of cause 123 ends).
+  std::set<int> holding_effects, holding_causes;
+  for (int id : causes) {
+    const Cause& c = *m.find_cause(id);
+    for (const auto* t : {&c.bypass_tag, &c.inhibit_tag}) {
+      const auto ref = *t ? model::parse_internal_ref(**t) : std::nullopt;
+      if (!ref) continue;
+      if (ref->kind == model::InternalRef::Kind::Cause) holding_causes.insert(ref->id);
+      if (ref->kind == model::InternalRef::Kind::Effect) holding_effects.insert(ref->id);
+      if (ref->kind == model::InternalRef::Kind::EffectTag) {
+        const model::Effect* x = m.find_effect(ref->id);
+        if (x && ref->tag >= 1 && static_cast<std::size_t>(ref->tag) <= x->tags.size() && x->tags[ref->tag - 1].ett)
+          holding_effects.insert(x->id);
+      }
+    }
+  }
   const model::InputTable table(m);
   std::set<std::size_t> hold_off;
-  for (const auto& x : m.intersections) {
-    if (!effects.count(x.effect) || causes.count(x.cause)) continue;
-    const Cause* c = m.find_cause(x.cause);
-    if (!c) continue;
-    for (const auto* t : {&c->bypass_tag, &c->inhibit_tag})
+  auto hold = [&](const Cause& c) {
+    for (const auto* t : {&c.bypass_tag, &c.inhibit_tag})
       if (*t && !own.count(**t) && !model::parse_internal_ref(**t))
         if (auto index = table.find(**t)) hold_off.insert(*index);
+  };
+  for (const auto& x : m.intersections) {
+    if ((!effects.count(x.effect) && !holding_effects.count(x.effect)) || causes.count(x.cause)) continue;
+    if (const Cause* c = m.find_cause(x.cause)) hold(*c);
   }
+  for (int id : holding_causes)
+    if (const Cause* c = m.find_cause(id); c && !causes.count(id)) hold(*c);
   if (hold_off.empty()) return std::nullopt;
   std::vector<model::CycleInput> run = demand_run(m, p, mode, cycles);
   for (auto& cycle : run)

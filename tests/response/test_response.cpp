@@ -320,6 +320,30 @@ TEST(Response, TwoOutOfThreeWithOneBadInputReportsItsDegradedFigure) {
   expect_replays(m, dir, p.degraded->counterexample);
 }
 
+// A bad input in `ignore` mode votes with the value it delivers (C.3): an
+// `and` of two switches whose bad input delivers its healthy value never
+// trips. The degraded figure is `unbounded`, shown by the demand run itself
+// (the bad input at its healthy value, the other tripped), held to the cap.
+TEST(Response, IgnoredBadInputOfAnAndHoldsTheDegradedResponseOff) {
+  auto m = matrix(R"({"id": 1, "name": "C1", "sif": [1], "function": "and", "bad_quality": "ignore",
+                      "tags": [{"name": "PS_A"}, {"name": "PS_B"}]})",
+                  effect(1, "Y1"), link(1, 1));
+  auto dir = scratch("ignored_bad_input");
+  const auto r = analyse(m, dir);
+  const auto& p = only_path(r, 1);
+  ASSERT_EQ(p.logic.kind, Figure::Kind::Exact) << p.logic.reason;
+  EXPECT_EQ(p.logic.cycles, 0);
+  ASSERT_TRUE(p.degraded);
+  ASSERT_EQ(p.degraded->kind, Figure::Kind::Unbounded) << p.degraded->reason;
+  expect_replays(m, dir, p.degraded->counterexample);
+  const auto j = nlohmann::json::parse(read(dir / p.degraded->counterexample));
+  ASSERT_EQ(j.at("steps").size(), 2u) << j.dump(1);
+  const auto& demand = j.at("steps")[1].at("inputs");
+  EXPECT_EQ(demand.at("PS_A").at("quality"), "bad") << j.dump(1);
+  EXPECT_EQ(demand.at("PS_A").at("value"), true) << j.dump(1);  // healthy: DTT reads 1
+  EXPECT_EQ(demand.at("PS_B"), false) << j.dump(1);
+}
+
 TEST(Response, OffDelayAndTimedCausesRespondAtOnce) {
   auto m = matrix(cause(1, "S1", R"("time": {"mode": "off_delay", "ms": 3000})") + "," +
                       cause(2, "S2", R"("time": {"mode": "timed", "ms": 5000})"),
@@ -466,6 +490,25 @@ TEST(Response, BypassThroughAnEffectOutputIsReleasedInTheDemandRun) {
   // Without cause 3 tripped, cause 1 is bypassed in the first cycle.
   const auto plain = checker::run_on_runtime(m, {model::default_cycle_input(m)});
   EXPECT_EQ(plain.observables[0][observable_index(m, "cause[1].bypassed")], 1);
+}
+
+// Cause 1 is bypassed while effect 2 is active, and a permissive (cause 3
+// reads `Cause[4]`, de-energize-to-trip) keeps effect 2 active at rest. The
+// demand with the path alone holds cause 3 off by its bypass tag, and is the
+// T - 1 counterexample.
+TEST(Response, DemandAloneHoldsOffWhatBypassesThePath) {
+  auto m = matrix(cause(1, "S1", R"("bypass_tag": "Effect[2]", "time": {"mode": "on_delay", "ms": 500})") + "," +
+                      cause(3, "Cause[4]", R"("bypass_tag": "BY3")") + "," + cause(4, "S4"),
+                  effect(1, "Y1") + "," + effect(2, "Y2"), link(1, 1) + "," + link(3, 2));
+  auto dir = scratch("held_off_holder");
+  auto r = analyse(m, dir);
+  const auto& p = only_path(r, 1);
+  ASSERT_EQ(p.logic.kind, Figure::Kind::Exact) << p.logic.reason;
+  EXPECT_EQ(p.logic.cycles, 5);
+  expect_replays(m, dir, p.logic.counterexample);
+  expect_demand_run(dir, p.logic.counterexample, "S1", 5);
+  const auto first = nlohmann::json::parse(read(dir / p.logic.counterexample)).at("steps")[0].at("inputs");
+  EXPECT_EQ(first.at("BY3"), true) << first.dump();
 }
 
 // Long delays are not unrolled (docs/response-time.md, "Method"): a 30 min
