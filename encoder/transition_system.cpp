@@ -114,7 +114,7 @@ z3::expr TransitionSystem::constraint_formula() const {
 
 z3::expr TransitionSystem::float_const(float v) const {
   z3::expr e = ctx_->fpa_val(v);
-  float_values_.emplace(e.id(), v);
+  if (float_values_.emplace(e.id(), v).second) float_terms_.push_back(e);
   return e;
 }
 

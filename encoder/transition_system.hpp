@@ -103,6 +103,7 @@ class TransitionSystem {
   std::unordered_map<unsigned, std::size_t> input_index_;
   std::unordered_map<std::string, std::size_t> term_index_;
   mutable std::unordered_map<unsigned, float> float_values_;
+  mutable std::vector<z3::expr> float_terms_;  // keeps float_values_'s keys alive: Z3 reuses a freed term's id
 };
 
 }  // namespace cemv::encoder

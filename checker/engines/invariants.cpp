@@ -366,7 +366,7 @@ class FloatAbstraction {
 
   z3::expr operator()(const z3::expr& e) {
     auto it = memo_.find(e.id());
-    if (it != memo_.end()) return it->second;
+    if (it != memo_.end()) return it->second.second;
     z3::expr out = e;
     if (e.is_app() && e.num_args() > 0) {
       bool float_atom = false;
@@ -384,13 +384,14 @@ class FloatAbstraction {
         if (changed) out = e.decl()(args);
       }
     }
-    memo_.emplace(e.id(), out);
+    memo_.emplace(e.id(), std::make_pair(e, out));
     return out;
   }
 
  private:
   z3::context& ctx_;
-  std::unordered_map<unsigned, z3::expr> memo_;
+  // The key term is kept alive with its result: Z3 reuses the id of a freed term.
+  std::unordered_map<unsigned, std::pair<z3::expr, z3::expr>> memo_;
 };
 
 // Distinct states only: held inputs repeat a state for hundreds of cycles.

@@ -22,7 +22,7 @@ class UfAbstraction {
 
   z3::expr operator()(const z3::expr& e) {
     auto it = memo_.find(e.id());
-    if (it != memo_.end()) return it->second;
+    if (it != memo_.end()) return it->second.second;
     z3::expr out = e;
     if (e.is_app() && e.num_args() > 0) {
       z3::expr_vector args(ctx_);
@@ -40,7 +40,7 @@ class UfAbstraction {
         out = e.decl()(args);
       }
     }
-    memo_.emplace(e.id(), out);
+    memo_.emplace(e.id(), std::make_pair(e, out));
     return out;
   }
 
@@ -61,7 +61,8 @@ class UfAbstraction {
   }
 
   z3::context& ctx_;
-  std::unordered_map<unsigned, z3::expr> memo_;
+  // The key term is kept alive with its result: Z3 reuses the id of a freed term.
+  std::unordered_map<unsigned, std::pair<z3::expr, z3::expr>> memo_;
   std::unordered_map<std::string, z3::func_decl> functions_;
 };
 
