@@ -10,7 +10,7 @@
 // concretized), SHOW_LOCAL=1 what it keeps and frees; SHOW_DEMAND=1 the
 // demand run of T cycles on the runtime (the path's elements and the
 // effect's signals, one digit a cycle; =2 the demand with the path alone,
-// =3 the demand after a reset); SHOW_PATHS=1 the number of paths
+// =3 the demand after a reset, =4 an XooN's pulses first); SHOW_PATHS=1 the number of paths
 // (=2: every path with its estimate); SHOW_STATE, SHOW_HOUDINI,
 // SHOW_INVARIANT as before; SHOW_ALL=1 with SHOW_DEMAND every observable;
 // OUT=DIR with SHOW_CHECK writes the probe's scenario there; DEGRADED=1 the
@@ -72,6 +72,8 @@ int main(int argc, char** argv) {
     auto run = response::demand_run(m, path, mode, t);
     if (std::getenv("SHOW_DEMAND")[0] == '2')
       if (auto alone = response::demand_run_alone(m, path, mode, t)) run = *alone;
+    if (std::getenv("SHOW_DEMAND")[0] == '4')
+      if (auto pulses = response::demand_run_pulses_first(m, path, mode, t)) run = *pulses;
     if (std::getenv("SHOW_DEMAND")[0] == '3')
       if (auto reset = response::demand_run_after_reset(m, path, mode, t)) run = *reset;
     auto trace = checker::run_on_runtime(m, run);
@@ -105,6 +107,7 @@ int main(int argc, char** argv) {
     o.localize_to = path.elements;
     if (const char* out = std::getenv("OUT")) o.out_dir = out;
     o.directed_runs = {response::demand_run(m, path, mode, t)};
+    if (auto pulses = response::demand_run_pulses_first(m, path, mode, t)) o.directed_runs.push_back(*pulses);
     if (auto alone = response::demand_run_alone(m, path, mode, t)) o.directed_runs.push_back(*alone);
     if (auto reset = response::demand_run_after_reset(m, path, mode, t)) o.directed_runs.push_back(*reset);
     auto r = checker::check_properties(m, {file}, o);

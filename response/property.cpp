@@ -214,8 +214,12 @@ std::set<int> effects_on(const Path& p) {
 // whose response is latest); among equals a timed cause first (its pulse may
 // end before the slower members' timers expire, and then the XooN never sees
 // X active causes), then a cause whose bypass and inhibit no logic drives (a
-// run in which a member is held off judges nothing from then on).
-std::vector<int> demand_set(const model::Matrix& m, const Path& p, Mode mode) {
+// run in which a member is held off judges nothing from then on). With
+// `pulses_first`, the timed causes come before all others, shortest pulse
+// first: a pulse that ends before an on-delay member fires holds the XooN
+// off for ever (big_matrix's 2oo7 into effect 77: a 0.2 s pulse beside a
+// 0.9 s on-delay).
+std::vector<int> demand_set(const model::Matrix& m, const Path& p, Mode mode, bool pulses_first) {
   if (p.causes.size() == 1) return p.causes;
   const bool degraded = mode == Mode::Degraded && !p.voted.empty();
   std::vector<int> out, rest;
@@ -226,8 +230,10 @@ std::vector<int> demand_set(const model::Matrix& m, const Path& p, Mode mode) {
     const Cause& c = *m.find_cause(id);
     bool held = false;
     for (const auto* t : {&c.bypass_tag, &c.inhibit_tag}) held = held || (*t && model::parse_internal_ref(**t));
-    return std::make_tuple(c.time.mode == model::TimeMode::OnDelay ? -static_cast<long long>(c.time.ms) : 0LL,
-                           c.time.mode == model::TimeMode::Timed ? 0 : 1, held ? 1 : 0);
+    const bool pulse = c.time.mode == model::TimeMode::Timed;
+    return std::make_tuple(pulses_first && pulse ? static_cast<long long>(c.time.ms) - (1LL << 40) : 0LL,
+                           c.time.mode == model::TimeMode::OnDelay ? -static_cast<long long>(c.time.ms) : 0LL,
+                           pulse ? 0 : 1, held ? 1 : 0);
   };
   std::stable_sort(rest.begin(), rest.end(), [&](int a, int b) { return rank(a) < rank(b); });
   for (int id : rest)
@@ -291,7 +297,10 @@ float healthy_value(const Cause& c, const model::CauseTag& t, float value) {
 
 }  // namespace
 
-std::vector<model::CycleInput> demand_run(const model::Matrix& m, const Path& p, Mode mode, long long cycles) {
+namespace {
+
+std::vector<model::CycleInput> demand_run(const model::Matrix& m, const Path& p, Mode mode, long long cycles,
+                                          bool pulses_first) {
   const model::InputTable table(m);
   // The plant quiet: every cause's inputs inside their limits (scenario
   // defaults need not be: a de-energise-to-trip input defaults to 0), so that
@@ -355,15 +364,25 @@ std::vector<model::CycleInput> demand_run(const model::Matrix& m, const Path& p,
   for (const Cause* c : holds_released_by(m, p)) trip(quiet, *c, false);
   // The demand: the trigger causes' inputs beyond their limits.
   model::CycleInput demand = quiet;
-  for (int id : demand_set(m, p, mode))
+  for (int id : demand_set(m, p, mode, pulses_first))
     trip(demand, *m.find_cause(id), mode == Mode::Degraded && !p.voted.empty() && id == p.voted.front());
   std::vector<model::CycleInput> run{quiet};
   run.resize(static_cast<std::size_t>(std::max(0LL, cycles)) + 2, demand);
   return run;
 }
 
-std::optional<std::vector<model::CycleInput>> demand_run_alone(const model::Matrix& m, const Path& p, Mode mode,
-                                                               long long cycles) {
+}  // namespace
+
+std::vector<model::CycleInput> demand_run(const model::Matrix& m, const Path& p, Mode mode, long long cycles) {
+  return demand_run(m, p, mode, cycles, false);
+}
+
+namespace {
+
+// The input tags (by index) that hold off the other causes of the path's
+// effects and of the elements whose activity holds a path cause off
+// (demand_run_alone).
+std::set<std::size_t> hold_off_tags(const model::Matrix& m, const Path& p) {
   // Every tag a path element reads stays as demand_run sets it.
   std::set<std::string> own;
   std::set<int> effects, causes;
@@ -418,10 +437,35 @@ std::optional<std::vector<model::CycleInput>> demand_run_alone(const model::Matr
   }
   for (int id : holding_causes)
     if (const Cause* c = m.find_cause(id); c && !causes.count(id)) hold(*c);
-  if (hold_off.empty()) return std::nullopt;
-  std::vector<model::CycleInput> run = demand_run(m, p, mode, cycles);
+  return hold_off;
+}
+
+void hold_off(std::vector<model::CycleInput>& run, const std::set<std::size_t>& tags) {
   for (auto& cycle : run)
-    for (std::size_t i : hold_off) cycle.tags[i].value = 1.0f;
+    for (std::size_t i : tags) cycle.tags[i].value = 1.0f;
+}
+
+}  // namespace
+
+std::optional<std::vector<model::CycleInput>> demand_run_alone(const model::Matrix& m, const Path& p, Mode mode,
+                                                               long long cycles) {
+  const std::set<std::size_t> tags = hold_off_tags(m, p);
+  if (tags.empty()) return std::nullopt;
+  std::vector<model::CycleInput> run = demand_run(m, p, mode, cycles);
+  hold_off(run, tags);
+  return run;
+}
+
+std::optional<std::vector<model::CycleInput>> demand_run_pulses_first(const model::Matrix& m, const Path& p,
+                                                                      Mode mode, long long cycles) {
+  if (p.causes.size() < 2) return std::nullopt;
+  bool pulse = false;
+  for (int id : p.causes) pulse = pulse || m.find_cause(id)->time.mode == model::TimeMode::Timed;
+  if (!pulse) return std::nullopt;
+  // With the path alone where it can be (demand_run_alone): a run in which a
+  // member is held off judges nothing.
+  std::vector<model::CycleInput> run = demand_run(m, p, mode, cycles, true);
+  hold_off(run, hold_off_tags(m, p));
   return run;
 }
 

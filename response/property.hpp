@@ -26,14 +26,20 @@ std::string response_property_text(const model::Matrix& m, const Path& p, Mode m
 // The demand the trigger describes, as a run for the checker to try before
 // its engines (checker::CheckOptions::directed_runs): the plant quiet in the
 // first cycle (every cause's inputs inside their limits, pass-through process
-// values of the path's effects away from the active state); from the second on, every external input of the trigger
-// causes beyond its limit with good quality, held for `cycles` + 1 cycles, so
-// that "within `cycles`" is violated in the last cycle if the outputs have
-// not responded by then. Degraded: the first external input of the first
-// voted trigger cause in bad quality instead. Only a candidate: what it shows
-// is replayed and checked like any counterexample, and when it does not
-// violate, the engines decide.
+// values of the path's effects away from the active state); from the second
+// on, of each trigger cause (of an XooN, each cause of the demand set) as
+// many external inputs as its voting needs beyond the limit with good
+// quality, held for `cycles` + 1 cycles, so that "within `cycles`" is
+// violated in the last cycle if the outputs have not responded by then.
+// Degraded: the first external input of the first voted trigger cause in bad
+// quality instead. Only a candidate: what it shows is replayed and checked
+// like any counterexample, and when it does not violate, the engines decide.
+// `pulses_first`: an XooN's demand set takes its timed (pulse) causes first,
+// shortest pulse first, then the longest on-delays (docs/response-time.md,
+// "XooN paths"); nullopt when the path has no timed trigger cause.
 std::vector<model::CycleInput> demand_run(const model::Matrix& m, const Path& p, Mode mode, long long cycles);
+std::optional<std::vector<model::CycleInput>> demand_run_pulses_first(const model::Matrix& m, const Path& p,
+                                                                      Mode mode, long long cycles);
 
 // The same demand with the path's effects left to it alone: every other
 // cause linked to an effect of the path held off by its bypass and inhibit

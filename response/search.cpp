@@ -160,6 +160,7 @@ Figure least_response(const model::Matrix& m, const Path& p, Mode mode, const Se
     // observable): beyond kMaxDirectedRunCycles the engines decide alone.
     if (t < kMaxDirectedRunCycles) {
       runs.push_back(demand_run(m, p, mode, t));
+      if (auto pulses = demand_run_pulses_first(m, p, mode, t)) runs.push_back(std::move(*pulses));
       if (auto alone = demand_run_alone(m, p, mode, t)) runs.push_back(std::move(*alone));
       if (auto reset = demand_run_after_reset(m, p, mode, t)) runs.push_back(std::move(*reset));
     }

@@ -468,6 +468,30 @@ TEST(Response, XooNWhosePulseEndsBeforeTheSetCompletesIsUnbounded) {
   EXPECT_EQ(together.observables.back()[observable_index(m, "effect[1].active")], 1);
 }
 
+// The demand set with the pulses first: the 0.2 s pulse of cause 2 ends
+// before the 1 s on-delay of cause 1 fires, while the slowest set (causes 1
+// and 3) responds after 1 s. The unbounded counterexample is that run: one
+// quiet cycle, then causes 1 and 2 tripped and held.
+TEST(Response, XooNDemandWithItsPulseFirstShowsItUnbounded) {
+  auto m = matrix(cause(1, "S1", R"("time": {"mode": "on_delay", "ms": 1000})") + "," +
+                      cause(2, "S2", R"("time": {"mode": "timed", "ms": 200})") + "," +
+                      cause(3, "S3", R"("time": {"mode": "on_delay", "ms": 500})"),
+                  effect(1, "Y1"),
+                  R"({"cause": 1, "effect": 1, "type": "N", "xoon": 2}, {"cause": 2, "effect": 1, "type": "N", "xoon": 2},
+                     {"cause": 3, "effect": 1, "type": "N", "xoon": 2})");
+  auto dir = scratch("xoon_pulse_first");
+  auto r = analyse(m, dir);
+  const auto& p = only_path(r, 1);
+  ASSERT_EQ(p.logic.kind, Figure::Kind::Unbounded) << p.logic.reason;
+  expect_replays(m, dir, p.logic.counterexample);
+  const auto j = nlohmann::json::parse(read(dir / p.logic.counterexample));
+  ASSERT_EQ(j.at("steps").size(), 2u) << j.dump(1);
+  const auto& demand = j.at("steps")[1].at("inputs");
+  EXPECT_EQ(demand.size(), 2u) << j.dump(1);
+  EXPECT_EQ(demand.at("S1"), false) << j.dump(1);
+  EXPECT_EQ(demand.at("S2"), false) << j.dump(1);
+}
+
 // A cause bypassed through a de-energize-to-trip output of another effect
 // (`Effect[2][1]` reads 1 while effect 2 is not active) is held off from
 // start-up. The demand runs trip cause 3, which activates effect 2 at once,
