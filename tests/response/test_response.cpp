@@ -54,12 +54,30 @@ std::string link(int c, int e, const std::string& type = "N") {
   return R"({"cause": )" + std::to_string(c) + R"(, "effect": )" + std::to_string(e) + R"(, "type": ")" + type + R"("})";
 }
 
+std::filesystem::path scratch_root() {
+  return std::filesystem::temp_directory_path() / ("cemv-response-test-" + std::to_string(::getpid()));
+}
+
 std::filesystem::path scratch(const std::string& name) {
-  auto dir = std::filesystem::temp_directory_path() / ("cemv-response-test-" + std::to_string(::getpid())) / name;
+  auto dir = scratch_root() / name;
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
 }
+
+// The scratch directories go when every test passed; a failure keeps them,
+// with the scenarios and logs it names.
+class RemoveScratchWhenPassed : public ::testing::Environment {
+ public:
+  void TearDown() override {
+    if (::testing::UnitTest::GetInstance()->Passed()) {
+      std::error_code ignored;
+      std::filesystem::remove_all(scratch_root(), ignored);
+    }
+  }
+};
+[[maybe_unused]] ::testing::Environment* const remove_scratch =
+    ::testing::AddGlobalTestEnvironment(new RemoveScratchWhenPassed);
 
 response::ResponseResult analyse(const model::Matrix& m, const std::filesystem::path& out, bool conservative = false) {
   response::ResponseOptions o;
