@@ -29,6 +29,7 @@
 #include "formats/matrix_json.hpp"
 #include "properties/parser.hpp"
 #include "response/paths.hpp"
+#include "response/demand.hpp"
 #include "response/property.hpp"
 #include "checker/replay.hpp"
 #include "model/vocabulary.hpp"

@@ -229,4 +229,11 @@ std::vector<Path> response_paths(const model::Matrix& m, const std::vector<int>&
   return out;
 }
 
+std::vector<const model::CauseTag*> external_tags(const model::Cause& c) {
+  std::vector<const model::CauseTag*> out;
+  for (const auto& t : c.tags)
+    if (!model::parse_internal_ref(t.name)) out.push_back(&t);
+  return out;
+}
+
 }  // namespace cemv::response

@@ -42,6 +42,10 @@ std::vector<Path> response_paths(const model::Matrix& m, const std::vector<int>&
 // or 1, and N, 2oo3 2).
 int votes_needed(const model::Cause& c);
 
+// A cause's input tags that are no internal references (6.1.3): what the
+// plant sets.
+std::vector<const model::CauseTag*> external_tags(const model::Cause& c);
+
 // The duration of `ms` in whole cycles (T.2).
 long long cycles_of(std::uint64_t ms, std::uint32_t cycle_ms);
 

@@ -8,6 +8,7 @@
 #include "checker/engines/portfolio.hpp"
 #include "formats/diagnostics.hpp"
 #include "properties/parser.hpp"
+#include "response/demand.hpp"
 
 namespace cemv::response {
 

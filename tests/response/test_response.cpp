@@ -22,6 +22,7 @@
 #include "properties/evaluator.hpp"
 #include "properties/parser.hpp"
 #include "response/analysis.hpp"
+#include "response/demand.hpp"
 #include "response/property.hpp"
 #include "response/report.hpp"
 #include "tests/support/random_matrix.hpp"
