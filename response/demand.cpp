@@ -97,6 +97,33 @@ std::vector<const Cause*> holds_released_by(const model::Matrix& m, const Path& 
   return out;
 }
 
+// The elements whose activity holds a path cause off: x of its bypass or
+// inhibit `Effect[x]`, `Cause[x]` or `Effect[x][y]` of an energize-to-trip
+// tag (each reads 1 while x is active).
+struct Holders {
+  std::set<int> effects, causes;
+};
+
+Holders holders_of(const model::Matrix& m, const Path& p) {
+  Holders out;
+  for (const auto& n : p.elements) {
+    if (n.kind != model::Node::Kind::Cause) continue;
+    const Cause& c = *m.find_cause(n.id);
+    for (const auto* t : {&c.bypass_tag, &c.inhibit_tag}) {
+      const auto ref = *t ? model::parse_internal_ref(**t) : std::nullopt;
+      if (!ref) continue;
+      if (ref->kind == model::InternalRef::Kind::Cause) out.causes.insert(ref->id);
+      if (ref->kind == model::InternalRef::Kind::Effect) out.effects.insert(ref->id);
+      if (ref->kind == model::InternalRef::Kind::EffectTag) {
+        const model::Effect* x = m.find_effect(ref->id);
+        if (x && ref->tag >= 1 && static_cast<std::size_t>(ref->tag) <= x->tags.size() && x->tags[ref->tag - 1].ett)
+          out.effects.insert(x->id);
+      }
+    }
+  }
+  return out;
+}
+
 // A cause's input inside its limit: a discrete input at its healthy value, an
 // analog one at `value` unless that is beyond the limit, else clear of the
 // hysteresis band.
@@ -134,6 +161,18 @@ std::vector<model::CycleInput> demand_run(const model::Matrix& m, const Path& p,
   for (const auto& x : m.intersections)
     if (effects.count(x.effect))
       if (const Cause* c = m.find_cause(x.cause)) make_healthy(*c);
+  // And last the causes of the elements that would hold a path cause off:
+  // a path cause held off judges nothing, where another cause that reads
+  // the same tag may still be quiet by its voting (big_matrix's `BSL_103A`:
+  // cause 3 trips effect 64, which inhibits cause 86 of the path, at 0;
+  // cause 5 of the path needs two of its three inputs).
+  const Holders holders = holders_of(m, p);
+  for (const auto& x : m.intersections)
+    if (holders.effects.count(x.effect))
+      if (const Cause* c = m.find_cause(x.cause); c && !std::count(p.causes.begin(), p.causes.end(), c->id))
+        make_healthy(*c);
+  for (int id : holders.causes)
+    if (const Cause* c = m.find_cause(id); c && !std::count(p.causes.begin(), p.causes.end(), id)) make_healthy(*c);
   // An effect on the path that passes process data through shows the BPCS
   // value while it is not active (E.8): that value away from the active
   // state, so that the outputs respond only when the effect does. The
@@ -220,26 +259,12 @@ std::set<std::size_t> hold_off_tags(const model::Matrix& m, const Path& p) {
       }
     }
   }
-  // The elements whose activity holds a path cause off: x of a bypass or
-  // inhibit `Effect[x]`, `Cause[x]` or `Effect[x][y]` of an energize-to-trip
-  // tag (each reads 1 while x is active). Their causes are held off too
-  // (big_matrix's cause 83 is bypassed while effect 82 is active, which
-  // cause 126 activates whenever the pulse of cause 123 ends).
-  std::set<int> holding_effects, holding_causes;
-  for (int id : causes) {
-    const Cause& c = *m.find_cause(id);
-    for (const auto* t : {&c.bypass_tag, &c.inhibit_tag}) {
-      const auto ref = *t ? model::parse_internal_ref(**t) : std::nullopt;
-      if (!ref) continue;
-      if (ref->kind == model::InternalRef::Kind::Cause) holding_causes.insert(ref->id);
-      if (ref->kind == model::InternalRef::Kind::Effect) holding_effects.insert(ref->id);
-      if (ref->kind == model::InternalRef::Kind::EffectTag) {
-        const model::Effect* x = m.find_effect(ref->id);
-        if (x && ref->tag >= 1 && static_cast<std::size_t>(ref->tag) <= x->tags.size() && x->tags[ref->tag - 1].ett)
-          holding_effects.insert(x->id);
-      }
-    }
-  }
+  // The causes of the elements whose activity holds a path cause off are
+  // held off too (big_matrix's cause 83 is bypassed while effect 82 is
+  // active, which cause 126 activates whenever the pulse of cause 123 ends).
+  const Holders holders = holders_of(m, p);
+  const std::set<int>& holding_effects = holders.effects;
+  const std::set<int>& holding_causes = holders.causes;
   const model::InputTable table(m);
   std::set<std::size_t> hold_off;
   auto hold = [&](const Cause& c) {

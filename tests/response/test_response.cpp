@@ -554,6 +554,32 @@ TEST(Response, DemandAloneHoldsOffWhatBypassesThePath) {
   EXPECT_EQ(first.at("BY3"), true) << first.dump();
 }
 
+// Tag T is read by cause 3, which activates effect 2 and so inhibits cause 1
+// of the path when T is 0, and by cause 4 of the path's effect, energize-to-
+// trip, which wants T at 0 but also needs U. The quiet plant sets T to 1:
+// the causes that would hold a path cause off are quiet last, and the demand
+// run is the T - 1 counterexample.
+TEST(Response, QuietPlantKeepsWhatWouldHoldThePathOffQuiet) {
+  auto m = matrix(cause(1, "S1", R"("inhibit_tag": "Effect[2]", "time": {"mode": "on_delay", "ms": 500})") + "," +
+                      cause(3, "T") + "," +
+                      R"({"id": 4, "name": "C4", "sif": [1], "function": "and",
+                          "tags": [{"name": "T", "ett": true}, {"name": "U", "ett": true}]})",
+                  effect(1, "Y1") + "," + effect(2, "Y2"), link(1, 1) + "," + link(3, 2) + "," + link(4, 1));
+  auto dir = scratch("quiet_holders");
+  auto r = analyse(m, dir);
+  const response::PathResult* p = nullptr;
+  for (const auto& x : r.paths)
+    if (x.path.effect == 1 && x.path.causes == std::vector<int>{1}) p = &x;
+  ASSERT_TRUE(p);
+  ASSERT_EQ(p->logic.kind, Figure::Kind::Exact) << p->logic.reason;
+  EXPECT_EQ(p->logic.cycles, 5);
+  expect_replays(m, dir, p->logic.counterexample);
+  expect_demand_run(dir, p->logic.counterexample, "S1", 5);
+  // T at 1 from the first cycle on: its scenario default, or set there.
+  const auto first = nlohmann::json::parse(read(dir / p->logic.counterexample)).at("steps")[0];
+  EXPECT_EQ(first.value("inputs", nlohmann::json::object()).value("T", true), true) << first.dump();
+}
+
 // Long delays are not unrolled (docs/response-time.md, "Method"): a 30 min
 // on-delay at 100 ms is exactly 18,000 cycles, proved, and the run one cycle
 // short (17,999 cycles of a held demand) replays on the runtime.
