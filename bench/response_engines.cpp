@@ -107,10 +107,7 @@ int main(int argc, char** argv) {
     o.engines_in_order = true;
     o.localize_to = path.elements;
     if (const char* out = std::getenv("OUT")) o.out_dir = out;
-    o.directed_runs = {response::demand_run(m, path, mode, t)};
-    if (auto pulses = response::demand_run_pulses_first(m, path, mode, t)) o.directed_runs.push_back(*pulses);
-    if (auto alone = response::demand_run_alone(m, path, mode, t)) o.directed_runs.push_back(*alone);
-    if (auto reset = response::demand_run_after_reset(m, path, mode, t)) o.directed_runs.push_back(*reset);
+    o.directed_runs = response::demand_runs(m, path, mode, t);
     auto r = checker::check_properties(m, {file}, o);
     const auto& pr = r.properties.at(0);
     std::cout << checker::to_string(pr.verdict) << " " << pr.method << " " << pr.reason << std::endl;

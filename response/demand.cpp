@@ -21,6 +21,52 @@ std::set<int> effects_on(const Path& p) {
   return out;
 }
 
+// The causes linked to an effect of the path.
+std::set<int> linked_causes(const model::Matrix& m, const Path& p) {
+  const std::set<int> effects = effects_on(p);
+  std::set<int> out;
+  for (const auto& x : m.intersections)
+    if (effects.count(x.effect)) out.insert(x.cause);
+  return out;
+}
+
+// Whether a cause's bypass or inhibit is driven by the logic (an internal
+// reference), not by an operator's tag.
+bool held_by_logic(const Cause& c) {
+  for (const auto* t : {&c.bypass_tag, &c.inhibit_tag})
+    if (*t && model::parse_internal_ref(**t)) return true;
+  return false;
+}
+
+// The elements whose state holds a path cause off through its bypass or
+// inhibit tag. `effects`, `causes`: while active (`Effect[x]`, `Cause[x]`,
+// `Effect[x][y]` of an energize-to-trip tag read 1 then); `inactive_effects`:
+// while *not* active (`Effect[x][y]` of a de-energize-to-trip tag reads 1
+// until x responds, start-up included).
+struct Holders {
+  std::set<int> effects, causes, inactive_effects;
+};
+
+Holders holders_of(const model::Matrix& m, const Path& p) {
+  Holders out;
+  for (const auto& n : p.elements) {
+    if (n.kind != model::Node::Kind::Cause) continue;
+    const Cause& c = *m.find_cause(n.id);
+    for (const auto* t : {&c.bypass_tag, &c.inhibit_tag}) {
+      const auto ref = *t ? model::parse_internal_ref(**t) : std::nullopt;
+      if (!ref) continue;
+      if (ref->kind == model::InternalRef::Kind::Cause) out.causes.insert(ref->id);
+      if (ref->kind == model::InternalRef::Kind::Effect) out.effects.insert(ref->id);
+      if (ref->kind == model::InternalRef::Kind::EffectTag) {
+        const model::Effect* x = m.find_effect(ref->id);
+        if (x && ref->tag >= 1 && static_cast<std::size_t>(ref->tag) <= x->tags.size())
+          (x->tags[ref->tag - 1].ett ? out.effects : out.inactive_effects).insert(x->id);
+      }
+    }
+  }
+  return out;
+}
+
 // The causes a demand run trips: every trigger cause of a single-cause path;
 // of an XooN path the X slowest, in degraded mode the degraded cause and the
 // X - 1 slowest of the rest. Slowest: the longest on-delay first (the set
@@ -41,12 +87,10 @@ std::vector<int> demand_set(const model::Matrix& m, const Path& p, Mode mode, bo
     if (!degraded || id != p.voted.front()) rest.push_back(id);
   auto rank = [&](int id) {
     const Cause& c = *m.find_cause(id);
-    bool held = false;
-    for (const auto* t : {&c.bypass_tag, &c.inhibit_tag}) held = held || (*t && model::parse_internal_ref(**t));
     const bool pulse = c.time.mode == model::TimeMode::Timed;
     return std::make_tuple(pulses_first && pulse ? static_cast<long long>(c.time.ms) - (1LL << 40) : 0LL,
                            c.time.mode == model::TimeMode::OnDelay ? -static_cast<long long>(c.time.ms) : 0LL,
-                           pulse ? 0 : 1, held ? 1 : 0);
+                           pulse ? 0 : 1, held_by_logic(c) ? 1 : 0);
   };
   std::stable_sort(rest.begin(), rest.end(), [&](int a, int b) { return rank(a) < rank(b); });
   for (int id : rest)
@@ -54,71 +98,28 @@ std::vector<int> demand_set(const model::Matrix& m, const Path& p, Mode mode, bo
   return out;
 }
 
-// A path cause bypassed or inhibited through `Effect[x][y]` of a
-// de-energize-to-trip tag is held off while x is *not* active (the tag then
-// reads 1), from start-up on, and no demand on it counts. The causes that
-// release such holds: for each x, one cause that activates x in the cycle its
-// condition holds (a processed intersection without XooN, no time function,
-// external inputs only) and that no path effect reads, tripped in every cycle
-// of the demand runs. Without it the engines must find that release
-// themselves (big_matrix's cause 107, bypassed through effect 18's tag 2).
+// A path cause held off while an effect x is *not* active
+// (Holders::inactive_effects) is held off from start-up on, and no demand on
+// it counts. The causes that release such holds: for each x, one cause that
+// activates x in the cycle its condition holds (a processed intersection
+// without XooN, no time function, external inputs only, its own bypass and
+// inhibit not driven by the logic) and that no path effect reads, tripped in
+// every cycle of the demand runs. Without it the engines must find that
+// release themselves (big_matrix's cause 107, bypassed through effect 18's
+// tag 2).
 std::vector<const Cause*> holds_released_by(const model::Matrix& m, const Path& p) {
-  const std::set<int> effects = effects_on(p);
-  std::set<int> linked, held_by;
-  for (const auto& x : m.intersections)
-    if (effects.count(x.effect)) linked.insert(x.cause);
-  for (const auto& n : p.elements) {
-    if (n.kind != model::Node::Kind::Cause) continue;
-    const Cause& c = *m.find_cause(n.id);
-    for (const auto* t : {&c.bypass_tag, &c.inhibit_tag}) {
-      if (!*t) continue;
-      const auto ref = model::parse_internal_ref(**t);
-      if (!ref || ref->kind != model::InternalRef::Kind::EffectTag) continue;
-      const model::Effect* x = m.find_effect(ref->id);
-      if (x && ref->tag >= 1 && static_cast<std::size_t>(ref->tag) <= x->tags.size() && !x->tags[ref->tag - 1].ett)
-        held_by.insert(x->id);
-    }
-  }
+  const std::set<int> linked = linked_causes(m, p);
   std::vector<const Cause*> out;
-  for (int x : held_by) {
+  for (int x : holders_of(m, p).inactive_effects) {
     for (const auto* i : m.intersections_of_effect(x)) {
       const Cause* c = m.find_cause(i->cause);
       if (!c || i->xoon || !model::is_processed(i->type) || i->type == model::IntersectionType::X) continue;
       if (linked.count(c->id) || c->time.mode != model::TimeMode::None || external_tags(*c).size() != c->tags.size())
         continue;
-      if (external_tags(*c).empty() || static_cast<int>(c->tags.size()) < votes_needed(*c)) continue;
-      bool held = false;  // its own bypass or inhibit driven by the logic
-      for (const auto* t : {&c->bypass_tag, &c->inhibit_tag}) held = held || (*t && model::parse_internal_ref(**t));
-      if (held) continue;
+      if (external_tags(*c).empty() || static_cast<int>(c->tags.size()) < votes_needed(*c) || held_by_logic(*c))
+        continue;
       out.push_back(c);
       break;
-    }
-  }
-  return out;
-}
-
-// The elements whose activity holds a path cause off: x of its bypass or
-// inhibit `Effect[x]`, `Cause[x]` or `Effect[x][y]` of an energize-to-trip
-// tag (each reads 1 while x is active).
-struct Holders {
-  std::set<int> effects, causes;
-};
-
-Holders holders_of(const model::Matrix& m, const Path& p) {
-  Holders out;
-  for (const auto& n : p.elements) {
-    if (n.kind != model::Node::Kind::Cause) continue;
-    const Cause& c = *m.find_cause(n.id);
-    for (const auto* t : {&c.bypass_tag, &c.inhibit_tag}) {
-      const auto ref = *t ? model::parse_internal_ref(**t) : std::nullopt;
-      if (!ref) continue;
-      if (ref->kind == model::InternalRef::Kind::Cause) out.causes.insert(ref->id);
-      if (ref->kind == model::InternalRef::Kind::Effect) out.effects.insert(ref->id);
-      if (ref->kind == model::InternalRef::Kind::EffectTag) {
-        const model::Effect* x = m.find_effect(ref->id);
-        if (x && ref->tag >= 1 && static_cast<std::size_t>(ref->tag) <= x->tags.size() && x->tags[ref->tag - 1].ett)
-          out.effects.insert(x->id);
-      }
     }
   }
   return out;
@@ -263,8 +264,6 @@ std::set<std::size_t> hold_off_tags(const model::Matrix& m, const Path& p) {
   // held off too (big_matrix's cause 83 is bypassed while effect 82 is
   // active, which cause 126 activates whenever the pulse of cause 123 ends).
   const Holders holders = holders_of(m, p);
-  const std::set<int>& holding_effects = holders.effects;
-  const std::set<int>& holding_causes = holders.causes;
   const model::InputTable table(m);
   std::set<std::size_t> hold_off;
   auto hold = [&](const Cause& c) {
@@ -273,10 +272,10 @@ std::set<std::size_t> hold_off_tags(const model::Matrix& m, const Path& p) {
         if (auto index = table.find(**t)) hold_off.insert(*index);
   };
   for (const auto& x : m.intersections) {
-    if ((!effects.count(x.effect) && !holding_effects.count(x.effect)) || causes.count(x.cause)) continue;
+    if ((!effects.count(x.effect) && !holders.effects.count(x.effect)) || causes.count(x.cause)) continue;
     if (const Cause* c = m.find_cause(x.cause)) hold(*c);
   }
-  for (int id : holding_causes)
+  for (int id : holders.causes)
     if (const Cause* c = m.find_cause(id); c && !causes.count(id)) hold(*c);
   return hold_off;
 }
@@ -313,9 +312,7 @@ std::optional<std::vector<model::CycleInput>> demand_run_pulses_first(const mode
 std::optional<std::vector<model::CycleInput>> demand_run_after_reset(const model::Matrix& m, const Path& p,
                                                                      Mode mode, long long cycles) {
   const std::set<int> effects = effects_on(p);
-  std::set<int> linked;  // causes linked to a path effect
-  for (const auto& x : m.intersections)
-    if (effects.count(x.effect)) linked.insert(x.cause);
+  const std::set<int> linked = linked_causes(m, p);
   long long settle = 0;
   for (int id : linked)
     if (const Cause* c = m.find_cause(id); c && c->time.mode != model::TimeMode::None)
@@ -353,6 +350,15 @@ std::optional<std::vector<model::CycleInput>> demand_run_after_reset(const model
   run.push_back(quiet);
   run.resize(run.size() + static_cast<std::size_t>(std::max(0LL, cycles)) + 1, demand);
   return run;
+}
+
+std::vector<std::vector<model::CycleInput>> demand_runs(const model::Matrix& m, const Path& p, Mode mode,
+                                                        long long cycles) {
+  std::vector<std::vector<model::CycleInput>> out{demand_run(m, p, mode, cycles)};
+  if (auto pulses = demand_run_pulses_first(m, p, mode, cycles)) out.push_back(std::move(*pulses));
+  if (auto alone = demand_run_alone(m, p, mode, cycles)) out.push_back(std::move(*alone));
+  if (auto reset = demand_run_after_reset(m, p, mode, cycles)) out.push_back(std::move(*reset));
+  return out;
 }
 
 }  // namespace cemv::response

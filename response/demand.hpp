@@ -58,4 +58,9 @@ std::optional<std::vector<model::CycleInput>> demand_run_alone(const model::Matr
 std::optional<std::vector<model::CycleInput>> demand_run_after_reset(const model::Matrix& m, const Path& p,
                                                                      Mode mode, long long cycles);
 
+// Every run above that applies, in the order a probe tries them: the plain
+// demand, the pulses first, the path alone, the demand after a reset.
+std::vector<std::vector<model::CycleInput>> demand_runs(const model::Matrix& m, const Path& p, Mode mode,
+                                                        long long cycles);
+
 }  // namespace cemv::response

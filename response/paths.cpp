@@ -79,13 +79,10 @@ class Walker {
 
   bool on_stack(const Node& n) const { return std::find(stack_.begin(), stack_.end(), n) != stack_.end(); }
 
-  static bool is_reference(const model::CauseTag& t) { return model::parse_internal_ref(t.name).has_value(); }
-  static int external_tags(const Cause& c) {
-    return static_cast<int>(std::count_if(c.tags.begin(), c.tags.end(), [](const auto& t) { return !is_reference(t); }));
-  }
   // A trigger: enough external input tags for the voting.
   static bool is_start(const Cause& c) {
-    return c.function != model::CauseFunction::Comment && external_tags(c) >= votes_needed(c);
+    return c.function != model::CauseFunction::Comment &&
+           static_cast<int>(external_tags(c).size()) >= votes_needed(c);
   }
   // Whether the reference tag trips its cause when the referenced element is
   // active, so that a demand upstream travels on (I.3, C.3). `Cause[x]` and
@@ -218,9 +215,8 @@ std::vector<Path> response_paths(const model::Matrix& m, const std::vector<int>&
         std::sort(p.elements.begin(), p.elements.end());
         for (int id : p.causes) {
           const Cause* c = m.find_cause(id);
-          int external = 0;
-          for (const auto& t : c->tags) external += model::parse_internal_ref(t.name) ? 0 : 1;
-          if (external >= 2 && external == static_cast<int>(c->tags.size())) p.voted.push_back(id);
+          const std::size_t external = external_tags(*c).size();
+          if (external >= 2 && external == c->tags.size()) p.voted.push_back(id);
         }
         out.push_back(std::move(p));
       }

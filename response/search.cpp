@@ -159,12 +159,7 @@ Figure least_response(const model::Matrix& m, const Path& p, Mode mode, const Se
     Runs runs;
     // Every cycle of a run is held in memory (its inputs and, once run, every
     // observable): beyond kMaxDirectedRunCycles the engines decide alone.
-    if (t < kMaxDirectedRunCycles) {
-      runs.push_back(demand_run(m, p, mode, t));
-      if (auto pulses = demand_run_pulses_first(m, p, mode, t)) runs.push_back(std::move(*pulses));
-      if (auto alone = demand_run_alone(m, p, mode, t)) runs.push_back(std::move(*alone));
-      if (auto reset = demand_run_after_reset(m, p, mode, t)) runs.push_back(std::move(*reset));
-    }
+    if (t < kMaxDirectedRunCycles) runs = demand_runs(m, p, mode, t);
     // A path held off beyond `lo` by what its counterexample did (a state
     // the demand alone does not reach) is often held off longer still: that
     // run with its last inputs held for the t - lo cycles more that a
