@@ -15,6 +15,7 @@
 #include <z3++.h>
 
 #include "checker/reduce.hpp"
+#include "encoder/term_memo.hpp"
 #include "encoder/transition_system.hpp"
 
 namespace cemv::checker::reduce_terms {
@@ -58,14 +59,12 @@ class FloatsAsIntegers {
   explicit FloatsAsIntegers(z3::context& c) : c_(c) {}
 
   void map_variable(const expr& fp_var, const expr& int_var) {
-    memo_.emplace(fp_var.id(), std::make_pair(fp_var, int_var));
+    memo_.emplace(fp_var, int_var);
   }
 
   expr operator()(const expr& e) {
-    if (auto it = memo_.find(e.id()); it != memo_.end()) return it->second.second;
-    expr r = rewrite(e);
-    memo_.emplace(e.id(), std::make_pair(e, r));  // the key kept alive: Z3 reuses freed ids
-    return r;
+    if (const expr* known = memo_.find(e)) return *known;
+    return memo_.emplace(e, rewrite(e));
   }
 
  private:
@@ -114,7 +113,7 @@ class FloatsAsIntegers {
   }
 
   z3::context& c_;
-  std::unordered_map<unsigned, std::pair<expr, expr>> memo_;
+  encoder::TermMemo<expr> memo_;
 };
 
 // Folds the Boolean constants a substitution leaves behind (`and` with
@@ -124,12 +123,8 @@ class FloatsAsIntegers {
 class FoldBooleans {
  public:
   expr operator()(const expr& e) {
-    if (auto it = memo_.find(e.id()); it != memo_.end()) return it->second.second;
-    expr r = fold(e);
-    // The key term is kept alive with its result: Z3 reuses the id of a
-    // freed term.
-    memo_.emplace(e.id(), std::make_pair(e, r));
-    return r;
+    if (const expr* known = memo_.find(e)) return *known;
+    return memo_.emplace(e, fold(e));
   }
 
  private:
@@ -177,7 +172,7 @@ class FoldBooleans {
     }
     return changed ? e.decl()(args) : e;
   }
-  std::unordered_map<unsigned, std::pair<expr, expr>> memo_;
+  encoder::TermMemo<expr> memo_;
 };
 
 inline void collect_float_constants(const expr& e, std::vector<expr>& out, std::unordered_set<unsigned>& seen) {

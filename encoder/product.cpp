@@ -5,6 +5,8 @@
 #include <unordered_set>
 #include <vector>
 
+#include "encoder/term_memo.hpp"
+
 namespace cemv::encoder {
 
 namespace {
@@ -14,7 +16,7 @@ namespace {
 class Copier {
  public:
   Copier(TransitionSystem& out, const TransitionSystem& in, const std::string& prefix)
-      : out_(out), in_(in), prefix_(prefix), from_(in.ctx()), to_(in.ctx()), keep_(in.ctx()) {}
+      : out_(out), in_(in), prefix_(prefix), from_(in.ctx()), to_(in.ctx()) {}
 
   void run() {
     for (const auto& s : in_.statevars()) {
@@ -52,7 +54,7 @@ class Copier {
   // most of their subterms, and a substitution per term walked the shared
   // part again for each (a 128 x 128 cone: minutes; docs/performance.md).
   z3::expr rewrite(const z3::expr& e) {
-    if (auto it = memo_.find(e.id()); it != memo_.end()) return it->second;
+    if (const z3::expr* known = memo_.find(e)) return *known;
     z3::expr r = e;
     if (auto v = renamed_.find(e.id()); v != renamed_.end()) {
       r = to_[static_cast<int>(v->second)];
@@ -74,9 +76,7 @@ class Copier {
         r = z3::expr(e.ctx(), u);
       }
     }
-    keep_.push_back(e);  // the memo's keys are AST ids: keep them alive
-    memo_.emplace(e.id(), r);
-    return r;
+    return memo_.emplace(e, r);
   }
   // The Evaluator (and every engine that samples runs) reads float constants
   // through TransitionSystem::float_value: the product must know them too.
@@ -96,8 +96,7 @@ class Copier {
   std::string prefix_;
   z3::expr_vector from_, to_;
   std::unordered_map<unsigned, std::size_t> renamed_;  // state variable id -> index in to_
-  std::unordered_map<unsigned, z3::expr> memo_;
-  z3::expr_vector keep_;
+  TermMemo<z3::expr> memo_;
   std::unordered_set<unsigned> seen_;
 };
 

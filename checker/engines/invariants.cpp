@@ -14,6 +14,7 @@
 #include "checker/engines/solving.hpp"
 #include "encoder/encode.hpp"
 #include "encoder/evaluate.hpp"
+#include "encoder/term_memo.hpp"
 #include "encoder/unroller.hpp"
 
 namespace cemv::checker {
@@ -365,8 +366,7 @@ class FloatAbstraction {
   explicit FloatAbstraction(z3::context& ctx) : ctx_(ctx) {}
 
   z3::expr operator()(const z3::expr& e) {
-    auto it = memo_.find(e.id());
-    if (it != memo_.end()) return it->second.second;
+    if (const z3::expr* known = memo_.find(e)) return *known;
     z3::expr out = e;
     if (e.is_app() && e.num_args() > 0) {
       bool float_atom = false;
@@ -384,14 +384,12 @@ class FloatAbstraction {
         if (changed) out = e.decl()(args);
       }
     }
-    memo_.emplace(e.id(), std::make_pair(e, out));
-    return out;
+    return memo_.emplace(e, out);
   }
 
  private:
   z3::context& ctx_;
-  // The key term is kept alive with its result: Z3 reuses the id of a freed term.
-  std::unordered_map<unsigned, std::pair<z3::expr, z3::expr>> memo_;
+  encoder::TermMemo<z3::expr> memo_;
 };
 
 // Distinct states only: held inputs repeat a state for hundreds of cycles.

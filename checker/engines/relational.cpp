@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "checker/engines/solving.hpp"
+#include "encoder/term_memo.hpp"
 #include "encoder/unroller.hpp"
 
 namespace cemv::checker {
@@ -21,8 +22,7 @@ class UfAbstraction {
   explicit UfAbstraction(z3::context& ctx) : ctx_(ctx) {}
 
   z3::expr operator()(const z3::expr& e) {
-    auto it = memo_.find(e.id());
-    if (it != memo_.end()) return it->second.second;
+    if (const z3::expr* known = memo_.find(e)) return *known;
     z3::expr out = e;
     if (e.is_app() && e.num_args() > 0) {
       z3::expr_vector args(ctx_);
@@ -40,8 +40,7 @@ class UfAbstraction {
         out = e.decl()(args);
       }
     }
-    memo_.emplace(e.id(), std::make_pair(e, out));
-    return out;
+    return memo_.emplace(e, out);
   }
 
  private:
@@ -61,8 +60,7 @@ class UfAbstraction {
   }
 
   z3::context& ctx_;
-  // The key term is kept alive with its result: Z3 reuses the id of a freed term.
-  std::unordered_map<unsigned, std::pair<z3::expr, z3::expr>> memo_;
+  encoder::TermMemo<z3::expr> memo_;
   std::unordered_map<std::string, z3::func_decl> functions_;
 };
 
