@@ -72,6 +72,16 @@ Work parts_of(const SafetyProblem& p) {
   return w;
 }
 
+// The terms as the arguments of one application of a fresh function: one
+// substitute() or simplify() over it shares Z3's cache across all of them.
+// The terms of a cone share most of their DAG, so a call per term was
+// quadratic in the cone.
+expr bundle(z3::context& c, const char* name, const z3::expr_vector& terms) {
+  z3::sort_vector domain(c);
+  for (unsigned i = 0; i < terms.size(); ++i) domain.push_back(terms[i].get_sort());
+  return c.function(name, domain, c.bool_sort())(terms);
+}
+
 void substitute(Work& w, const z3::expr_vector& from, const z3::expr_vector& to) {
   if (from.empty()) return;
   std::vector<expr*> terms;
@@ -79,15 +89,10 @@ void substitute(Work& w, const z3::expr_vector& from, const z3::expr_vector& to)
   for (auto& f : w.facts) terms.push_back(&f.term);
   for (auto& l : w.lemmas) terms.push_back(&l.second);
   terms.push_back(&w.good);
-  // One substitution over all terms at once, as the arguments of one
-  // application: Z3 caches a substitution per call, and the terms share
-  // most of their DAG, so a call per term was quadratic in the cone.
   z3::context& c = w.good.ctx();
-  z3::sort_vector domain(c);
   z3::expr_vector args(c);
-  for (expr* t : terms) domain.push_back(t->get_sort()), args.push_back(*t);
-  const z3::func_decl all_terms = c.function("cemv.reduce.terms", domain, c.bool_sort());
-  const expr replaced = all_terms(args).substitute(from, to);
+  for (expr* t : terms) args.push_back(*t);
+  const expr replaced = bundle(c, "cemv.reduce.terms", args).substitute(from, to);
   FoldBooleans fold;
   for (std::size_t i = 0; i < terms.size(); ++i) *terms[i] = fold(replaced.arg(static_cast<unsigned>(i)));
 }
@@ -152,15 +157,13 @@ void propagate_constants(Work& w, const SafetyProblem& p) {
     z3::expr_vector sf(c), st(c);
     for (std::size_t i = 0; i < w.states.size(); ++i)
       if (constant[i]) sf.push_back(w.states[i].var), st.push_back(w.states[i].init);
-    // The candidates' next-state functions, substituted in one call (a call
-    // per variable repeats the work on the terms they share).
+    // The candidates' next-state functions, substituted in one call.
     std::vector<std::size_t> candidates;
-    z3::sort_vector domain(c);
     z3::expr_vector nexts(c);
     for (std::size_t i = 0; i < w.states.size(); ++i)
-      if (constant[i]) candidates.push_back(i), domain.push_back(w.states[i].next.get_sort()), nexts.push_back(w.states[i].next);
+      if (constant[i]) candidates.push_back(i), nexts.push_back(w.states[i].next);
     if (candidates.empty()) break;
-    expr all = c.function("cemv.reduce.next", domain, c.bool_sort())(nexts);
+    expr all = bundle(c, "cemv.reduce.next", nexts);
     if (!sf.empty()) all = all.substitute(sf, st).simplify();
     for (std::size_t k = 0; k < candidates.size(); ++k) {
       const std::size_t i = candidates[k];
