@@ -48,6 +48,9 @@ struct CheckOptions {
   // variables after the reduction, whatever `engines` and engines_in_order
   // say (empty: those apply there too; PortfolioOptions::wide_engines).
   std::vector<std::string> engines_when_wide;
+  // Race engines_when_wide instead of asking them in order
+  // (PortfolioOptions::race_wide).
+  bool race_when_wide = false;
   // Matrix elements whose state a localization keeps on a wide problem
   // before its engines: the state of every other element is made free
   // (PortfolioOptions::localize_keep, checker/localize.hpp). Empty: none.
@@ -69,6 +72,18 @@ struct CheckOptions {
   // "directed run". Every run is also kept as a witness for the vacuity
   // question. Not tried for reachability (cover) properties.
   std::vector<std::vector<model::CycleInput>> directed_runs;
+  // Only the directed runs: when none violates, the property is Unknown
+  // ("no directed run violates it") and no engine is asked. A caller tries
+  // its cheap candidates this way before a costlier question of its own.
+  bool directed_runs_only = false;
+  // k-induction's bound for the property (PortfolioOptions::max_k; -1: the
+  // portfolio's default).
+  int max_k = -1;
+  // false: a proof is reported without the vacuity question (can the
+  // assumptions and the antecedent hold?). For a caller that uses the proof
+  // only as a lemma of another property under the same assumptions, where
+  // a vacuous lemma constrains nothing that property judges.
+  bool vacuity = true;
   // Called once per finished property (any thread, serialised by the checker).
   std::function<void(const PropertyResult&)> on_result;
   // Called when a property's decision starts, with its name (any thread,

@@ -214,7 +214,11 @@ ProverResult PropertyChecker::decide(const model::Matrix& m, Goal goal, bool sli
     o.engines = options_.engines;
     o.in_order = options_.engines_in_order;
   }
-  if (goal == Goal::Property) o.wide_engines = options_.engines_when_wide;
+  if (goal == Goal::Property && options_.max_k >= 0) o.max_k = options_.max_k;
+  if (goal == Goal::Property) {
+    o.wide_engines = options_.engines_when_wide;
+    o.race_wide = options_.race_when_wide;
+  }
   if (goal == Goal::Property && !options_.localize_to.empty()) o.localize_keep = keep_elements(options_.localize_to);
   if (goal == Goal::Property && options_.shrink_max_cycles >= 0)
     o.shrink_max_cycles = static_cast<std::size_t>(options_.shrink_max_cycles);
@@ -407,6 +411,12 @@ PropertyResult PropertyChecker::run() {
     out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return out;
   }
+  if (options_.directed_runs_only) {
+    out.verdict = PropertyVerdict::Unknown;
+    out.reason = "no directed run violates it";
+    out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    return out;
+  }
   ProverResult r = decide(m_, Goal::Property, true, deadline_);
   bool sliced = true;
   // The portfolio has re-checked its answer in a fresh context (a proof's
@@ -430,7 +440,7 @@ PropertyResult PropertyChecker::run() {
       break;
     case Verdict::Proved: {
       out.invariant = r.invariant.text();
-      Vacuity v = vacuity();
+      Vacuity v = options_.vacuity ? vacuity() : Vacuity{};
       if (v.vacuous) {
         out.verdict = PropertyVerdict::Vacuous;
         out.reason = *v.vacuous;

@@ -29,6 +29,15 @@ std::unique_ptr<Prover> make_prover(const std::string& name, int max_k) {
     o.max_k = max_k;
     return std::make_unique<KInduction>(o);
   }
+  if (name == "k-induction-plain") {
+    // Strengthened by the encoder's lemmas only: for a problem whose own
+    // assumptions carry the invariants it needs (cemv response's member
+    // lemmas), where the miner would spend the time limit looking for them.
+    KInductionOptions o;
+    o.max_k = max_k;
+    o.mine_invariants = false;
+    return std::make_unique<KInduction>(o);
+  }
   if (name == "invariants+induction") return make_invariant_prover();
   if (name == "pdr") return std::make_unique<Pdr>();
   if (name == "accelerated-bmc") return std::make_unique<AcceleratedBmc>();
@@ -94,7 +103,9 @@ ProverResult Portfolio::run(const Limits& limits) {
     else if (!wide && options_.in_order) order = &options_.engines;
     if (!answer && options_.localize_keep) answer = localized_attempt(owned, wide, limits);
     if (!answer && order) {
-      ProverResult r = one_after_another(*order, owned.problem, limits);
+      ProverResult r = wide && options_.race_wide && order == &options_.wide_engines
+                           ? race(make, *order, limits)
+                           : one_after_another(*order, owned.problem, limits);
       if (r.verdict == Verdict::Unknown) {
         r.seconds = seconds_since(start);
         return r;
@@ -103,7 +114,7 @@ ProverResult Portfolio::run(const Limits& limits) {
     }
   }
   if (!answer) {
-    ProverResult raced = race(make, limits);
+    ProverResult raced = race(make, options_.engines, limits);
     if (raced.verdict == Verdict::Unknown) {
       raced.seconds = seconds_since(start);
       return raced;
@@ -186,12 +197,13 @@ ProverResult Portfolio::one_after_another(const std::vector<std::string>& order,
   return r;
 }
 
-ProverResult Portfolio::race(const ProblemFactory& make, const Limits& limits) const {
+ProverResult Portfolio::race(const ProblemFactory& make, const std::vector<std::string>& engines,
+                             const Limits& limits) const {
   const auto start = std::chrono::steady_clock::now();
   std::mutex mutex;
   std::condition_variable changed;
   std::vector<std::unique_ptr<Lane>> lanes;
-  for (const auto& name : options_.engines) {
+  for (const auto& name : engines) {
     make_prover(name);  // unknown names fail here, before any thread starts
     auto lane = std::make_unique<Lane>();
     lane->engine = name;

@@ -32,7 +32,9 @@
 namespace cemv::checker {
 
 struct PortfolioOptions {
-  // Engine names: "bmc", "k-induction", "invariants+induction", "pdr", "accelerated-bmc".
+  // Engine names: "bmc", "k-induction", "invariants+induction", "pdr", "accelerated-bmc";
+  // and "k-induction-plain" (k-induction with the encoder's lemmas only, no
+  // mined invariants), which only a caller names.
   std::vector<std::string> engines{"k-induction", "invariants+induction", "bmc", "pdr", "accelerated-bmc"};
   // When each engine starts: tier t once every prover of the earlier tiers has
   // finished without an answer, or t * `grace` after the start. Two threads
@@ -85,6 +87,12 @@ struct PortfolioOptions {
   // state variables). A count, so the choice never depends on the machine.
   std::size_t in_order_max_states = 64;
   std::vector<std::string> wide_engines;
+  // Race `wide_engines` (threads, under the race's preference rules) instead
+  // of asking them in order: for a question whose answer may be either, on
+  // a wide problem where one engine is quick at one answer and slow at the
+  // other (PDR proves a short bound in seconds and may take minutes to
+  // find the counterexample BMC finds in one).
+  bool race_wide = false;
   // Localization (checker/localize.hpp): before the engines (after the quick
   // attempt), `localized_engines` in order on the problem with only the
   // state that `localize_keep` keeps, within half of the time left; on a
@@ -118,7 +126,7 @@ class Portfolio {
   std::optional<ProverResult> quick_attempt(const SafetyProblem& problem, const Limits& limits) const;
   std::optional<ProverResult> localized_attempt(const OwnedProblem& whole, bool wide, const Limits& limits) const;
   ProverResult quick_k_induction(const SafetyProblem& problem, const Limits& limits) const;
-  ProverResult race(const ProblemFactory& make, const Limits& limits) const;
+  ProverResult race(const ProblemFactory& make, const std::vector<std::string>& engines, const Limits& limits) const;
   ProverResult one_after_another(const std::vector<std::string>& engines, const SafetyProblem& problem,
                                  const Limits& limits) const;
   ProverResult confirmed(const ProblemFactory& make, ProverResult answer, const Limits& limits,

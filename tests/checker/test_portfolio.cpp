@@ -129,6 +129,44 @@ TEST(Portfolio, QuickBmcFindsADeeperCounterexample) {
   EXPECT_EQ(Portfolio(bug.make, o).run(Limits::within(std::chrono::seconds(30), 40)).verdict, Verdict::Unknown);
 }
 
+// On a wide problem with race_wide, the wide engines race: PDR's proof, or
+// BMC's shortest counterexample, whichever the problem has. Every problem is
+// wide here (in_order_max_states = 0).
+TEST(Portfolio, WideEnginesRaceWhenAskedTo) {
+  PortfolioOptions o;
+  o.quick_k = -1;
+  o.in_order_max_states = 0;
+  o.wide_engines = {"pdr", "bmc"};
+  o.race_wide = true;
+  const auto bug = fixtures::guarded_counter(2);
+  ProverResult r = Portfolio(bug.make, o).run(Limits::within(std::chrono::seconds(30), 40));
+  ASSERT_EQ(r.verdict, Verdict::Falsified) << r.reason;
+  EXPECT_EQ(r.method, "bmc");  // the shortest counterexample, whoever found one first
+  EXPECT_EQ(r.cex.length(), 4u);
+  const auto fine = fixtures::guarded_counter(3);
+  ProverResult p = Portfolio(fine.make, o).run(Limits::within(std::chrono::seconds(30), 40));
+  ASSERT_EQ(p.verdict, Verdict::Proved) << p.reason;
+  EXPECT_EQ(p.method, "pdr");
+}
+
+// k-induction-plain: no mined invariant, only the encoder's lemmas (this
+// hand-made system has none): it proves the guarded counter by induction
+// over a simple path alone, where k-induction proves it strengthened by what
+// its miner found.
+TEST(Portfolio, PlainKInductionMinesNothing) {
+  const auto proof = fixtures::guarded_counter(3);
+  z3::context ctx;
+  const OwnedProblem owned = proof.make(ctx);
+  ProverResult mined = make_prover("k-induction", 10)->prove(owned.problem, Limits::within(std::chrono::seconds(30)));
+  ProverResult plain =
+      make_prover("k-induction-plain", 10)->prove(owned.problem, Limits::within(std::chrono::seconds(30)));
+  ASSERT_EQ(mined.verdict, Verdict::Proved) << mined.reason;
+  ASSERT_EQ(plain.verdict, Verdict::Proved) << plain.reason;
+  EXPECT_FALSE(mined.invariant.clauses.empty());
+  EXPECT_TRUE(plain.invariant.clauses.empty()) << plain.invariant.text();
+  EXPECT_EQ(plain.method, "k-induction");
+}
+
 TEST(Portfolio, RejectsAnUnknownEngine) {
   PortfolioOptions o;
   o.engines = {"bmc", "magic"};
