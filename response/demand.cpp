@@ -38,35 +38,6 @@ bool held_by_logic(const Cause& c) {
   return false;
 }
 
-// The elements whose state holds a path cause off through its bypass or
-// inhibit tag. `effects`, `causes`: while active (`Effect[x]`, `Cause[x]`,
-// `Effect[x][y]` of an energize-to-trip tag read 1 then); `inactive_effects`:
-// while *not* active (`Effect[x][y]` of a de-energize-to-trip tag reads 1
-// until x responds, start-up included).
-struct Holders {
-  std::set<int> effects, causes, inactive_effects;
-};
-
-Holders holders_of(const model::Matrix& m, const Path& p) {
-  Holders out;
-  for (const auto& n : p.elements) {
-    if (n.kind != model::Node::Kind::Cause) continue;
-    const Cause& c = *m.find_cause(n.id);
-    for (const auto* t : {&c.bypass_tag, &c.inhibit_tag}) {
-      const auto ref = *t ? model::parse_internal_ref(**t) : std::nullopt;
-      if (!ref) continue;
-      if (ref->kind == model::InternalRef::Kind::Cause) out.causes.insert(ref->id);
-      if (ref->kind == model::InternalRef::Kind::Effect) out.effects.insert(ref->id);
-      if (ref->kind == model::InternalRef::Kind::EffectTag) {
-        const model::Effect* x = m.find_effect(ref->id);
-        if (x && ref->tag >= 1 && static_cast<std::size_t>(ref->tag) <= x->tags.size())
-          (x->tags[ref->tag - 1].ett ? out.effects : out.inactive_effects).insert(x->id);
-      }
-    }
-  }
-  return out;
-}
-
 // The causes a demand run trips: every trigger cause of a single-cause path;
 // of an XooN path the X slowest, in degraded mode the degraded cause and the
 // X - 1 slowest of the rest. Slowest: the longest on-delay first (the set
@@ -78,13 +49,13 @@ Holders holders_of(const model::Matrix& m, const Path& p) {
 // first: a pulse that ends before an on-delay member fires holds the XooN
 // off for ever (big_matrix's 2oo7 into effect 77: a 0.2 s pulse beside a
 // 0.9 s on-delay).
-std::vector<int> demand_set(const model::Matrix& m, const Path& p, Mode mode, bool pulses_first) {
+std::vector<int> demand_set(const model::Matrix& m, const Path& p, Mode mode, bool pulses_first, int bad) {
   if (p.causes.size() == 1) return p.causes;
   const bool degraded = mode == Mode::Degraded && !p.voted.empty();
   std::vector<int> out, rest;
-  if (degraded) out.push_back(p.voted.front());
+  if (degraded) out.push_back(bad);
   for (int id : p.causes)
-    if (!degraded || id != p.voted.front()) rest.push_back(id);
+    if (!degraded || id != bad) rest.push_back(id);
   auto rank = [&](int id) {
     const Cause& c = *m.find_cause(id);
     const bool pulse = c.time.mode == model::TimeMode::Timed;
@@ -97,6 +68,10 @@ std::vector<int> demand_set(const model::Matrix& m, const Path& p, Mode mode, bo
     if (static_cast<int>(out.size()) < p.needed) out.push_back(id);
   return out;
 }
+
+// The voted trigger cause whose input the degraded demand runs put in bad
+// quality first (0: none).
+int first_voted(const Path& p) { return p.voted.empty() ? 0 : p.voted.front(); }
 
 // A path cause held off while an effect x is *not* active
 // (Holders::inactive_effects) is held off from start-up on, and no demand on
@@ -143,8 +118,10 @@ float healthy_value(const Cause& c, const model::CauseTag& t, float value) {
 
 namespace {
 
+// `bad`: in degraded mode, the voted trigger cause with an input in bad
+// quality.
 std::vector<model::CycleInput> demand_run(const model::Matrix& m, const Path& p, Mode mode, long long cycles,
-                                          bool pulses_first) {
+                                          bool pulses_first, int bad) {
   const model::InputTable table(m);
   // The plant quiet: every cause's inputs inside their limits (scenario
   // defaults need not be: a de-energise-to-trip input defaults to 0), so that
@@ -220,8 +197,8 @@ std::vector<model::CycleInput> demand_run(const model::Matrix& m, const Path& p,
   for (const Cause* c : holds_released_by(m, p)) trip(quiet, *c, false);
   // The demand: the trigger causes' inputs beyond their limits.
   model::CycleInput demand = quiet;
-  for (int id : demand_set(m, p, mode, pulses_first))
-    trip(demand, *m.find_cause(id), mode == Mode::Degraded && !p.voted.empty() && id == p.voted.front());
+  for (int id : demand_set(m, p, mode, pulses_first, bad))
+    trip(demand, *m.find_cause(id), mode == Mode::Degraded && !p.voted.empty() && id == bad);
   std::vector<model::CycleInput> run{quiet};
   run.resize(static_cast<std::size_t>(std::max(0LL, cycles)) + 2, demand);
   return run;
@@ -230,7 +207,7 @@ std::vector<model::CycleInput> demand_run(const model::Matrix& m, const Path& p,
 }  // namespace
 
 std::vector<model::CycleInput> demand_run(const model::Matrix& m, const Path& p, Mode mode, long long cycles) {
-  return demand_run(m, p, mode, cycles, false);
+  return demand_run(m, p, mode, cycles, false, first_voted(p));
 }
 
 namespace {
@@ -304,7 +281,7 @@ std::optional<std::vector<model::CycleInput>> demand_run_pulses_first(const mode
   if (!pulse) return std::nullopt;
   // With the path alone where it can be (demand_run_alone): a run in which a
   // member is held off judges nothing.
-  std::vector<model::CycleInput> run = demand_run(m, p, mode, cycles, true);
+  std::vector<model::CycleInput> run = demand_run(m, p, mode, cycles, true, first_voted(p));
   hold_off(run, hold_off_tags(m, p));
   return run;
 }
@@ -358,6 +335,11 @@ std::vector<std::vector<model::CycleInput>> demand_runs(const model::Matrix& m, 
   if (auto pulses = demand_run_pulses_first(m, p, mode, cycles)) out.push_back(std::move(*pulses));
   if (auto alone = demand_run_alone(m, p, mode, cycles)) out.push_back(std::move(*alone));
   if (auto reset = demand_run_after_reset(m, p, mode, cycles)) out.push_back(std::move(*reset));
+  // The degraded figure of an XooN path is that of its slowest voted member
+  // in bad quality: the demand with each of the others in turn (an `and`
+  // whose bad input is ignored never trips, and its set never responds).
+  if (mode == Mode::Degraded && p.causes.size() > 1)
+    for (std::size_t i = 1; i < p.voted.size(); ++i) out.push_back(demand_run(m, p, mode, cycles, false, p.voted[i]));
   return out;
 }
 

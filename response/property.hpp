@@ -3,6 +3,7 @@
 // decide. docs/response-time.md explains each part.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,7 +20,32 @@ enum class Mode { Normal, Degraded };
 // state within `cycles` cycles; no bypass, inhibit, override or maintenance
 // operation on the path. Degraded: one input of a voted trigger cause in bad
 // quality throughout, the others as the degraded voting needs them.
+// `assumed`: terms the property assumes never hold (`assume not (...)`),
+// proved elsewhere (member_lemmas).
 std::string response_property_text(const model::Matrix& m, const Path& p, Mode mode, long long cycles,
-                                   const std::string& name);
+                                   const std::string& name, const std::vector<std::string>& assumed = {});
+
+// The member lemmas of an XooN path's bound (docs/response-time.md,
+// "Compositional proof"). For each trigger cause i that is not timed, with
+// its on-delay of d_i <= `cycles` cycles (0 without one), and for each
+// condition of i the property's demand may hold (its normal one; in degraded
+// mode also its degraded one when it is voted), the term L: "the condition
+// has held for `cycles` cycles since a fresh rise, and cause i has not been
+// active for the last `cycles` - d_i of them". `property_text` holds one
+// property per term, `<name>.c<i>` (and `<name>.c<i>.degraded`), stating
+// that it never holds, under the assumptions on cause i alone (no bypass,
+// inhibit or maintenance on it): fewer than the bound's property makes, so
+// what such a property proves holds in every run the bound judges, and the
+// bound may assume its term never holds. The bound's proof is then a short
+// induction over the effect's own delays. Nullopt for a single-cause path,
+// or when no member gives a term.
+struct MemberLemmas {
+  std::vector<std::string> names;  // the properties, one per term
+  std::vector<std::string> terms;
+  std::vector<long long> delays;   // the on-delay d_i in cycles of each term's cause
+  std::string property_text;
+};
+std::optional<MemberLemmas> member_lemmas(const model::Matrix& m, const Path& p, Mode mode, long long cycles,
+                                          const std::string& name);
 
 }  // namespace cemv::response

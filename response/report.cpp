@@ -33,7 +33,9 @@ std::string figure_text(const Figure& f, long long cycle_ms) {
   switch (f.kind) {
     case Figure::Kind::Exact:
       return std::to_string(f.cycles) + " cycles (" + std::to_string(f.cycles * cycle_ms) + " ms)";
-    case Figure::Kind::Unbounded: return "unbounded (held off " + std::to_string(f.cycles) + " cycles)";
+    case Figure::Kind::Unbounded:
+      return "unbounded (held off " + std::to_string(f.cycles) + " cycles" + (f.reason.empty() ? "" : "; " + f.reason) +
+             ")";
     case Figure::Kind::Unknown: return "unknown: " + f.reason;
   }
   return "";

@@ -1,7 +1,9 @@
 #include "response/search.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <set>
 #include <stdexcept>
 
 #include "checker/check.hpp"
@@ -33,12 +35,12 @@ using Runs = std::vector<std::vector<model::CycleInput>>;
 // Both empty: the whole portfolio, raced.
 struct Engines {
   std::vector<std::string> narrow, wide;
+  bool race_wide = false;  // `wide` raced (checker::CheckOptions::race_when_wide), not in order
 };
 
-Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles, const SearchOptions& o,
-             const Engines& engines, const Runs& runs, bool localize) {
-  const std::string name = property_name(p, mode);
-  const std::string text = response_property_text(m, p, mode, cycles, name);
+// A property file's text decided by the checker with `options`.
+checker::CheckResult check_text(const model::Matrix& m, const std::string& name, const std::string& text,
+                                const checker::CheckOptions& options) {
   properties::PropertyFile file;
   try {
     file = properties::parse_properties(text, m, "cemv-response:" + name);
@@ -48,6 +50,24 @@ Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles,
     for (const auto& i : e.issues()) what += "\n" + i.str();
     throw std::logic_error("cemv response wrote a property the parser refuses:" + what + "\n" + text);
   }
+  return checker::check_properties(m, {file}, options);
+}
+
+// The answer for the text's one property.
+Probe check_one(const model::Matrix& m, const std::string& name, const std::string& text,
+                const checker::CheckOptions& options) {
+  checker::CheckResult r = check_text(m, name, text, options);
+  Probe out;
+  const checker::PropertyResult& pr = r.properties.at(0);
+  out.verdict = pr.verdict;
+  out.reason = pr.reason;
+  out.method = pr.method;
+  if (!pr.scenario_file.empty()) out.scenario = std::filesystem::path(pr.scenario_file).filename().string();
+  if (pr.verdict == checker::PropertyVerdict::Falsified && pr.trace) out.run = pr.trace->inputs;
+  return out;
+}
+
+checker::CheckOptions probe_options(const SearchOptions& o, const Engines& engines, const Runs& runs) {
   checker::CheckOptions options;
   options.property_timeout_s = o.timeout_s;
   options.jobs = 1;
@@ -56,10 +76,18 @@ Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles,
   options.engines = engines.narrow;
   options.engines_when_wide = engines.wide;
   options.engines_in_order = !engines.narrow.empty();
+  options.race_when_wide = engines.race_wide;
   // The runs first: where one shows the bound too short, no engine is
   // needed; where none does, they still witness that the trigger can rise
   // (the proof's vacuity question).
   options.directed_runs = runs;
+  return options;
+}
+
+Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles, const SearchOptions& o,
+             const Engines& engines, const Runs& runs, bool localize) {
+  const std::string name = property_name(p, mode);
+  checker::CheckOptions options = probe_options(o, engines, runs);
   // A cone is mostly other elements that can only make the effect respond
   // sooner (other causes, the effects their references read): a proof on
   // the path's own elements, the rest left free, is re-checked on the whole
@@ -70,15 +98,76 @@ Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles,
   // steps: readable as it is, and the core-guided search over 33 to 64
   // cycles was most of the CPU of such a probe (compressor: 2 s of 2.2 s).
   if (engines.narrow == std::vector<std::string>{"accelerated-bmc"}) options.shrink_max_cycles = 0;
-  checker::CheckResult r = checker::check_properties(m, {file}, options);
-  Probe out;
-  const checker::PropertyResult& pr = r.properties.at(0);
-  out.verdict = pr.verdict;
-  out.reason = pr.reason;
-  out.method = pr.method;
-  if (!pr.scenario_file.empty()) out.scenario = std::filesystem::path(pr.scenario_file).filename().string();
-  if (pr.verdict == checker::PropertyVerdict::Falsified && pr.trace) out.run = pr.trace->inputs;
-  return out;
+  return check_one(m, name, response_property_text(m, p, mode, cycles, name), options);
+}
+
+// The deepest induction over an XooN bound's member lemmas: an effect's
+// output delay of up to about a second at 100 ms cycles.
+constexpr long long kMaxMemberLemmaK = 12;
+
+// An XooN bound from its member lemmas (response/property.hpp, member_lemmas;
+// docs/response-time.md, "Compositional proof"), within `seconds` (0: no
+// limit): the lemmas first, then the bound assuming those proved, by
+// k-induction with the encoder's lemmas only. The member lemmas are what the
+// miner would otherwise have to find: an induction over eleven `held`
+// counters and their causes' timers (big_matrix's 4oo11 into effect 17: no
+// engine within 60 s) becomes one over the effect's own delays (1.7 s). A
+// counterexample of the bound assuming them is one of the bound: the lemmas
+// hold in every run the bound judges. Nullopt when it decides nothing: no
+// lemma proved, or the bound neither proved nor refuted.
+std::optional<Probe> decide_from_member_lemmas(const model::Matrix& m, const Path& p, Mode mode, long long cycles,
+                                               const SearchOptions& o, double seconds, const Runs& runs) {
+  const std::string name = property_name(p, mode);
+  const std::optional<MemberLemmas> lemmas = member_lemmas(m, p, mode, cycles, name + ".members");
+  if (!lemmas) return std::nullopt;
+  const auto start = std::chrono::steady_clock::now();
+  SearchOptions mine = o;
+  // Each lemma is a small cone (a cause's inputs, timers and `held`
+  // counter): a quarter of the time each is plenty (PDR proves big_matrix's
+  // slowest, cause 107 with its bypass through effect 18, in about a second).
+  mine.timeout_s = seconds / 4;
+  checker::CheckOptions options = probe_options(mine, {{"invariants+induction", "pdr", "k-induction"}, {}}, {});
+  options.out_dir.clear();  // a lemma's counterexample is no figure's
+  // A vacuous lemma (its assumptions unsatisfiable) constrains no run the
+  // bound judges: the bound states those assumptions too.
+  options.vacuity = false;
+  checker::CheckResult proved = check_text(m, name + ".members", lemmas->property_text, options);
+  std::vector<std::string> assumed;
+  std::set<std::string> methods;
+  long long slowest = 0;  // the longest on-delay among the members proved
+  for (std::size_t i = 0; i < lemmas->names.size(); ++i) {
+    const checker::PropertyResult& r = proved.properties.at(i);
+    if (r.verdict != checker::PropertyVerdict::Proved) continue;
+    assumed.push_back(lemmas->terms[i]);
+    methods.insert(r.method);
+    slowest = std::max(slowest, lemmas->delays[i]);
+  }
+  if (assumed.empty()) return std::nullopt;
+  if (seconds > 0) {
+    mine.timeout_s = seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (mine.timeout_s < 0.001) return std::nullopt;
+  }
+  // In a violation, every member of the set has been active for at least
+  // the last `cycles` - `slowest` cycles: the induction needs to reach back
+  // over those and the cycle before (and no further when the bound is
+  // tight, since then they are the effect's own delays).
+  const std::vector<std::string> plain{"k-induction-plain"};
+  // The demand runs again: none violates the bound (decide() tried them),
+  // but they witness that its demand can be held (the vacuity question).
+  checker::CheckOptions bound_options = probe_options(mine, {plain, plain}, runs);
+  bound_options.max_k = static_cast<int>(std::min<long long>(kMaxMemberLemmaK, cycles - slowest + 2));
+  Probe bound = check_one(m, name, response_property_text(m, p, mode, cycles, name, assumed), bound_options);
+  if (bound.verdict == checker::PropertyVerdict::Proved) {
+    std::string how;
+    for (const auto& x : methods) how += (how.empty() ? "" : ", ") + x;
+    bound.method += ", from member lemmas (" + how + ")";
+    return bound;
+  }
+  // Falsified, or vacuous (no demand can be held that long): the lemmas hold
+  // in every run the bound judges, so assuming them changes neither.
+  if (bound.verdict == checker::PropertyVerdict::Falsified || bound.verdict == checker::PropertyVerdict::Vacuous)
+    return bound;
+  return std::nullopt;
 }
 
 // What a probe expects, from the search's state: the estimate and the bounds
@@ -93,22 +182,25 @@ enum class Expect { Proof, Counterexample, Either };
 // the portfolio's quick attempt), then invariants+induction, which proves a
 // timer's bound in one strengthened step whatever its length, then
 // k-induction to k = 10, then BMC (a guess too low that the demand run did
-// not show). On a wide cone PDR alone: there the relational miner takes the
-// whole time limit at k = 0, and PDR proves a short bound, or falsifies a
-// guess too low, in seconds. A counterexample to T - 1 (when the demand run
+// not show). On a wide cone PDR raced against BMC: there the relational
+// miner takes the whole time limit at k = 0, and PDR proves a short bound in
+// seconds, while a guess too low that needs a preamble (an effect latched at
+// start-up released first) takes PDR minutes and BMC seconds (big_matrix's
+// cause 9 -> effect 61: PDR 80 s, BMC 10 s at depth 18; effect 127 at
+// T = 0: 7.8 s and 0.6 s). A counterexample to T - 1 (when the demand run
 // did not show one): BMC, whose trace is a shortest one, and the accelerated
 // unrolling; above BMC's depth the accelerated unrolling alone (a violation
 // of "within b cycles" takes at least b + 1 cycles); raced on a wide cone.
 Engines engines_for(Expect e, long long bound) {
   switch (e) {
-    case Expect::Proof: return {{"invariants+induction", "k-induction", "bmc"}, {"pdr"}};
+    case Expect::Proof: return {{"invariants+induction", "k-induction", "bmc"}, {"pdr", "bmc"}, true};
     case Expect::Counterexample:
       if (bound > checker::PortfolioOptions{}.bmc_depth) return {{"accelerated-bmc"}, {}};
       return {{"bmc", "accelerated-bmc"}, {}};
-    // Either answer: the whole portfolio, raced; on a wide cone PDR, which
-    // gives either (the race would hold a PDR proof until invariants+
-    // induction, earlier in its order, has used the whole time limit).
-    case Expect::Either: return {{}, {"pdr"}};
+    // Either answer: the whole portfolio, raced; on a wide cone PDR against
+    // BMC (the whole race would hold a PDR proof until invariants+induction,
+    // earlier in its order, has used the whole time limit).
+    case Expect::Either: return {{}, {"pdr", "bmc"}, true};
   }
   return {};
 }
@@ -125,9 +217,30 @@ Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles,
              Expect e, const Runs& runs) {
   const Engines engines = engines_for(e, cycles);
   const auto start = std::chrono::steady_clock::now();
-  Probe r = decide(m, p, mode, cycles, o, engines, runs, e != Expect::Counterexample);
-  if (r.verdict != checker::PropertyVerdict::Unknown || (engines.narrow.empty() && engines.wide.empty())) return r;
+  // An XooN bound that may hold: first the demand runs alone (they show a
+  // bound too short in milliseconds), then from its member lemmas, within
+  // half of the probe's time.
+  if (e != Expect::Counterexample && p.causes.size() > 1) {
+    if (!runs.empty()) {
+      checker::CheckOptions only = probe_options(o, engines, runs);
+      only.directed_runs_only = true;
+      const std::string name = property_name(p, mode);
+      Probe r = check_one(m, name, response_property_text(m, p, mode, cycles, name), only);
+      if (r.verdict == checker::PropertyVerdict::Falsified) return r;
+    }
+    if (auto r = decide_from_member_lemmas(m, p, mode, cycles, o, o.timeout_s / 2, runs)) return *r;
+  }
   SearchOptions rest = o;
+  if (o.timeout_s > 0) {
+    rest.timeout_s = o.timeout_s - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (rest.timeout_s < 0.001) {
+      Probe none;
+      none.reason = "time limit";
+      return none;
+    }
+  }
+  Probe r = decide(m, p, mode, cycles, rest, engines, runs, e != Expect::Counterexample);
+  if (r.verdict != checker::PropertyVerdict::Unknown || (engines.narrow.empty() && engines.wide.empty())) return r;
   if (o.timeout_s > 0) {
     rest.timeout_s = o.timeout_s - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (rest.timeout_s < 0.001) return r;
@@ -151,7 +264,11 @@ long long search_cap(const Path& p) { return 2 * p.estimate + 64; }
 Figure least_response(const model::Matrix& m, const Path& p, Mode mode, const SearchOptions& o) {
   Figure f;
   long long lo = -1;  // largest bound falsified (-1: none needed below 0)
-  long long hi = -1;  // smallest bound proved (-1: none yet)
+  long long hi = -1;  // smallest bound proved or vacuous (-1: none yet)
+  // Whether `hi` was vacuous: no demand can be held for hi + 1 cycles. Then
+  // every larger bound is vacuous too, while a bound below may be proved.
+  bool hi_vacuous = false;
+  std::string vacuous_reason;
   std::string lo_scenario;
   std::vector<model::CycleInput> lo_run;  // the counterexample to `lo`
   const long long cap = search_cap(p);
@@ -174,6 +291,7 @@ Figure least_response(const model::Matrix& m, const Path& p, Mode mode, const Se
     switch (r.verdict) {
       case checker::PropertyVerdict::Proved:
         hi = t;
+        hi_vacuous = false;
         f.method = r.method;
         return true;
       case checker::PropertyVerdict::Falsified:
@@ -182,8 +300,10 @@ Figure least_response(const model::Matrix& m, const Path& p, Mode mode, const Se
         lo_run = std::move(r.run);
         return true;
       case checker::PropertyVerdict::Vacuous:
-        f.reason = "vacuous: " + r.reason;
-        return false;
+        hi = t;
+        hi_vacuous = true;
+        vacuous_reason = r.reason;
+        return true;
       default:
         f.reason = r.reason.empty() ? "not decided" : r.reason;
         return false;
@@ -206,6 +326,21 @@ Figure least_response(const model::Matrix& m, const Path& p, Mode mode, const Se
   while (hi - lo > 1) {
     long long mid = lo + (hi - lo) / 2;
     if (!probe(mid, Expect::Either)) return f;
+  }
+  if (hi_vacuous && lo < 0) {  // no demand at all (docs/response-time.md, "Vacuous paths")
+    f.reason = "vacuous: " + vacuous_reason;
+    return f;
+  }
+  if (hi_vacuous) {
+    // A demand lasts at most lo + 1 cycles, and lo's counterexample shows
+    // one that long without a response: the path never responds to a demand
+    // that can be held.
+    f.kind = Figure::Kind::Unbounded;
+    f.cycles = lo;
+    f.counterexample = lo_scenario;
+    f.reason = "its demand cannot last longer than " + std::to_string(lo + 1) +
+               " cycles: the logic then bypasses or inhibits an element of the path";
+    return f;
   }
   f.kind = Figure::Kind::Exact;
   f.cycles = hi;

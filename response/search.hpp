@@ -17,7 +17,7 @@ struct Figure {
   Kind kind = Kind::Unknown;
   long long cycles = -1;       // Exact: T; Unbounded: the largest bound tried (falsified)
   std::string counterexample;  // scenario of T - 1 (or of the bound), relative to the out folder; "" = none
-  std::string reason;          // Unknown: why
+  std::string reason;          // Unknown: why; Unbounded: why no demand lasts longer ("" = it can)
   std::string method;          // Exact: the engine that proved T
   int probes = 0;              // properties decided
 };

@@ -511,6 +511,60 @@ TEST(Response, XooNDemandWithItsPulseFirstShowsItUnbounded) {
   EXPECT_EQ(demand.at("S2"), false) << j.dump(1);
 }
 
+// An XooN bound is proved from its member lemmas (docs/response-time.md,
+// "Compositional proof"): each cause is active once its on-delay has run
+// while its condition holds, and the induction then only spans the effect's
+// output delay. The slowest set, causes 1 (1 s) and 2 (0.5 s), responds
+// after 1 s and the 0.3 s output delay.
+TEST(Response, XooNBoundIsProvedFromItsMemberLemmas) {
+  auto m = matrix(cause(1, "S1", R"("time": {"mode": "on_delay", "ms": 1000})") + "," +
+                      cause(2, "S2", R"("time": {"mode": "on_delay", "ms": 500})") + "," + cause(3, "S3"),
+                  effect(1, "Y1", R"("output_delay_ms": 300)"),
+                  R"({"cause": 1, "effect": 1, "type": "N", "xoon": 2}, {"cause": 2, "effect": 1, "type": "N", "xoon": 2},
+                     {"cause": 3, "effect": 1, "type": "N", "xoon": 2})");
+  auto dir = scratch("xoon_lemmas");
+  auto r = analyse(m, dir);
+  const auto& p = only_path(r, 1);
+  ASSERT_EQ(p.logic.kind, Figure::Kind::Exact) << p.logic.reason;
+  EXPECT_EQ(p.logic.cycles, 13);
+  EXPECT_NE(p.logic.method.find("from member lemmas"), std::string::npos) << p.logic.method;
+  expect_replays(m, dir, p.logic.counterexample);
+  expect_not_yet_active(dir, p.logic.counterexample, 1);
+  // One lemma per cause that is not timed, each its own property.
+  const auto lemmas = response::member_lemmas(m, p.path, response::Mode::Normal, 13, "l");
+  ASSERT_TRUE(lemmas);
+  EXPECT_EQ(lemmas->names, (std::vector<std::string>{"l.c1", "l.c2", "l.c3"}));
+  EXPECT_EQ(lemmas->delays, (std::vector<long long>{10, 5, 0}));
+  EXPECT_NE(lemmas->terms[0].find("not held(cause[1].active, 3 cycles)"), std::string::npos) << lemmas->terms[0];
+  EXPECT_EQ(properties::parse_properties(lemmas->property_text, m, "l").properties.size(), 3u);
+}
+
+// Cause 1 activates effect 2 once its 0.5 s on-delay has run, and effect 2
+// bypasses cause 2, the other member of the 2oo2. No demand lasts beyond
+// that cycle (a bypassed cause of the path is no demand), and until then the
+// XooN never sees both: the path never responds to a demand that can be
+// held, `unbounded` with the reason. An override of effect 2 (1 s at most)
+// would lift the bypass for that long; it is an operation on the path, and
+// the figure does not count it.
+TEST(Response, DemandThatTheLogicEndsIsUnbounded) {
+  auto m = matrix(cause(1, "S1", R"("time": {"mode": "on_delay", "ms": 500})") + "," +
+                      cause(2, "S2", R"("bypass_tag": "Effect[2]")"),
+                  effect(1, "Y1") + "," + effect(2, "Y2", R"("override": {"max_s": 1, "prealarm_s": 0})"),
+                  R"({"cause": 1, "effect": 1, "type": "N", "xoon": 2}, {"cause": 2, "effect": 1, "type": "N", "xoon": 2},
+                     {"cause": 1, "effect": 2, "type": "V"})");
+  auto dir = scratch("demand_ended");
+  auto r = analyse(m, dir);
+  const auto& p = only_path(r, 1);
+  ASSERT_EQ(p.logic.kind, Figure::Kind::Unbounded) << p.logic.reason;
+  EXPECT_EQ(p.logic.cycles, 4);
+  EXPECT_NE(p.logic.reason.find("cannot last longer than 5 cycles"), std::string::npos) << p.logic.reason;
+  EXPECT_EQ(p.verdict, Verdict::Unbounded);
+  expect_replays(m, dir, p.logic.counterexample);
+  expect_not_yet_active(dir, p.logic.counterexample, 1);
+  const std::string text = response::response_property_text(m, p.path, response::Mode::Normal, 5, "t");
+  EXPECT_NE(text.find("assume not effect[2].override_active"), std::string::npos) << text;
+}
+
 // A cause bypassed through a de-energize-to-trip output of another effect
 // (`Effect[2][1]` reads 1 while effect 2 is not active) is held off from
 // start-up. The demand runs trip cause 3, which activates effect 2 at once,
