@@ -5,18 +5,25 @@
 // checker/reduce.hpp), to see which engine carries cemv response's probes.
 // Usage:
 //   response_engines MATRIX CAUSE EFFECT T [SECONDS] [ENGINE...]
-// Environment: LOCALIZE=1 the engines on the path's localization
+// Environment: SEARCH=1 the path's figure as cemv response searches it (each
+// probe within SECONDS); SHOW_PROPERTY=1 the probe's property text (=2: its member
+// lemmas, and on stderr the bound assuming them); PROPERTY=FILE that
+// file's first property instead; LOCALIZE=1 the engines on the path's localization (KEEP="e22 c5": those
+// elements kept too)
 // (checker/localize.hpp; a proof re-checked on the whole problem, a trace
 // concretized), SHOW_LOCAL=1 what it keeps and frees; SHOW_DEMAND=1 the
 // demand run of T cycles on the runtime (the path's elements and the
 // effect's signals, one digit a cycle; =2 the demand with the path alone,
 // =3 the demand after a reset, =4 an XooN's pulses first); SHOW_PATHS=1 the number of paths
 // (=2: every path with its estimate); SHOW_STATE, SHOW_HOUDINI,
-// SHOW_INVARIANT as before; SHOW_ALL=1 with SHOW_DEMAND every observable;
-// OUT=DIR with SHOW_CHECK writes the probe's scenario there; DEGRADED=1 the
+// SHOW_INVARIANT as before; MAX_DEPTH=N the engines' bound (default T + 2); SHOW_ALL=1 with SHOW_DEMAND every observable;
+// OUT=DIR with SHOW_CHECK writes the probe's scenario there (ENGINEs named: those, in order,
+// on any cone); DEGRADED=1 the
 // degraded figure's property and demand runs.
 #include <chrono>
 #include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <iostream>
 
 #include "checker/check.hpp"
@@ -31,6 +38,7 @@
 #include "response/paths.hpp"
 #include "response/demand.hpp"
 #include "response/property.hpp"
+#include "response/search.hpp"
 #include "checker/replay.hpp"
 #include "model/vocabulary.hpp"
 
@@ -96,6 +104,38 @@ int main(int argc, char** argv) {
     }
     return 0;
   }
+  if (std::getenv("SEARCH")) {  // the whole search of the path's figure, as cemv response runs it
+    response::SearchOptions o;
+    o.timeout_s = seconds;
+    if (const char* out = std::getenv("OUT")) o.out_dir = out;
+    const auto start = std::chrono::steady_clock::now();
+    response::Figure f = response::least_response(m, path, mode, o);
+    const char* kinds[] = {"exact", "unbounded", "unknown"};
+    std::cout << kinds[static_cast<int>(f.kind)] << " T=" << f.cycles << " probes=" << f.probes << " method=" << f.method
+              << " reason=" << f.reason << " "
+              << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() << " s" << std::endl;
+    return 0;
+  }
+  // PROPERTY=FILE: that property file's first property instead of the
+  // path's (the same text at T and T - 1).
+  auto property_text = [&](long long bound) {
+    if (const char* f = std::getenv("PROPERTY")) {
+      std::ifstream in(f);
+      return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    return response::response_property_text(m, path, mode, bound, "probe");
+  };
+  if (std::getenv("SHOW_PROPERTY")) {
+    if (std::getenv("SHOW_PROPERTY")[0] == '2') {  // the member lemmas, and the bound assuming them
+      auto lemmas = response::member_lemmas(m, path, mode, t, "probe.members");
+      if (!lemmas) return 1;
+      std::cout << lemmas->property_text;
+      std::cerr << response::response_property_text(m, path, mode, t, "probe", lemmas->terms);
+      return 0;
+    }
+    std::cout << response::response_property_text(m, path, mode, t, "probe");
+    return 0;
+  }
   if (std::getenv("SHOW_CHECK")) {
     auto file = properties::parse_properties(
         response::response_property_text(m, path, mode, t, "probe"), m, "probe");
@@ -104,6 +144,8 @@ int main(int argc, char** argv) {
     o.support = false;
     o.engines = {"invariants+induction", "k-induction", "bmc"};
     o.engines_when_wide = {"pdr"};
+    // Engines named on the command line: those, in order, on any cone.
+    if (argc > 6) o.engines = o.engines_when_wide = engines;
     o.engines_in_order = true;
     o.localize_to = path.elements;
     if (const char* out = std::getenv("OUT")) o.out_dir = out;
@@ -116,7 +158,7 @@ int main(int argc, char** argv) {
   }
   for (long long bound : {t, t - 1}) {
     auto file = properties::parse_properties(
-        response::response_property_text(m, path, mode, bound, "probe"), m, "probe");
+        property_text(bound), m, "probe");
     const auto& prop = file.properties.at(0);
     auto make = checker::property_problem(m, file, prop);
     for (const auto& engine : engines) {
@@ -125,17 +167,17 @@ int main(int argc, char** argv) {
       auto problem = checker::reduce(make(ctx), &red);
       auto concrete = problem;
       if (std::getenv("LOCALIZE")) {
-        auto keep = [&](const std::string& name) {
-          std::string n = name.rfind("prev.", 0) == 0 ? name.substr(5) : name;
-          for (const char* kind : {"cause[", "effect["}) {
-            if (n.rfind(kind, 0) != 0) continue;
-            int id = std::atoi(n.c_str() + std::string(kind).size());
-            for (const auto& e : path.elements)
-              if (e.id == id && (e.kind == model::Node::Kind::Cause) == (kind[0] == 'c')) return true;
-            return false;
+        // The path's elements, and those KEEP names ("e22 c5").
+        std::vector<model::Node> kept = path.elements;
+        if (const char* extra = std::getenv("KEEP"))
+          for (const char* c = extra; *c;) {
+            if (*c == 'c' || *c == 'e')
+              kept.push_back({*c == 'c' ? model::Node::Kind::Cause : model::Node::Kind::Effect, std::atoi(c + 1)});
+            ++c;
+            while (*c && *c != ' ') ++c;
+            while (*c == ' ') ++c;
           }
-          return true;
-        };
+        auto keep = checker::keep_elements(kept);
         checker::Localization loc;
         auto l = checker::localize(problem, keep, &loc);
         std::cout << "localized: " << loc.state_vars_before << " -> " << loc.state_vars_after << " (freed "
@@ -167,7 +209,9 @@ int main(int argc, char** argv) {
       auto prover = checker::make_prover(engine);
       auto start = std::chrono::steady_clock::now();
       auto r = prover->prove(problem.problem,
-                             checker::Limits::within(std::chrono::seconds(seconds), static_cast<int>(bound + 2)));
+                             checker::Limits::within(std::chrono::seconds(seconds),
+                                                     std::getenv("MAX_DEPTH") ? std::atoi(std::getenv("MAX_DEPTH"))
+                                                                              : static_cast<int>(bound + 2)));
       double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       std::cout << "T=" << bound << " " << engine << ": " << checker::to_string(r.verdict) << " " << r.reason
                 << " k=" << r.k << " " << s << " s (state variables " << red.state_vars_before << " -> "
