@@ -49,7 +49,7 @@ std::vector<model::CycleInput> cycle_inputs(const Trace& trace, const encoder::E
 }
 
 std::optional<Trace> encoded_trace(const std::vector<model::CycleInput>& inputs, const encoder::Encoding& enc,
-                                   const encoder::TransitionSystem& ts) {
+                                   const encoder::TransitionSystem& ts, std::size_t* dropped) {
   // What each input variable of the system reads from a cycle's inputs.
   enum class Source { Value, Bad, Command, CommandValue };
   struct Column {
@@ -86,7 +86,11 @@ std::optional<Trace> encoded_trace(const std::vector<model::CycleInput>& inputs,
     for (const auto& command : cycle.commands) {
       std::size_t k = 0;
       while (k < enc.commands.size() && !same(enc.commands[k], command)) ++k;
-      if (k == enc.commands.size()) return std::nullopt;
+      if (k == enc.commands.size()) {
+        if (!dropped) return std::nullopt;
+        ++*dropped;
+        continue;
+      }
       issued[k] = &command;
     }
     Trace::Cycle c;

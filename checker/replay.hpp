@@ -27,9 +27,12 @@ std::vector<model::CycleInput> cycle_inputs(const Trace& trace, const encoder::E
 // encoding's transition system `ts` (the encoding's system, possibly with a
 // monitor compiled into it). Every input of `ts` must be an encoded tag's
 // value or quality or a command; nullopt when one is not, or when a cycle
-// issues a command that is none of the encoding's command inputs.
+// issues a command that is none of the encoding's command inputs. With
+// `dropped`, such commands are left out instead and counted there (a
+// slice's encoding has no input for a command on an element outside its
+// cone, which cannot act on it).
 std::optional<Trace> encoded_trace(const std::vector<model::CycleInput>& inputs, const encoder::Encoding& enc,
-                                   const encoder::TransitionSystem& ts);
+                                   const encoder::TransitionSystem& ts, std::size_t* dropped = nullptr);
 
 // Runs the inputs on a fresh reference runtime.
 ConcreteTrace run_on_runtime(const model::Matrix& m, const std::vector<model::CycleInput>& inputs);
