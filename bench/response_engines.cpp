@@ -14,9 +14,9 @@
 // concretized), SHOW_LOCAL=1 what it keeps and frees; SHOW_DEMAND=1 the
 // demand run of T cycles on the runtime (the path's elements and the
 // effect's signals, one digit a cycle; =2 the demand with the path alone,
-// =3 the demand after a reset, =4 an XooN's pulses first); SHOW_PATHS=1 the number of paths
+// =3 the demand after a reset, =4 an XooN's pulses first, =5 the settled demand); SHOW_PATHS=1 the number of paths
 // (=2: every path with its estimate); SHOW_STATE, SHOW_HOUDINI,
-// SHOW_INVARIANT as before; MAX_DEPTH=N the engines' bound (default T + 2); SHOW_ALL=1 with SHOW_DEMAND every observable;
+// SHOW_INVARIANT as before; MAX_DEPTH=N the engines' bound (default T + 2); SHOW_ALL=1 with SHOW_DEMAND every observable, JUDGE=1 the property's verdict on it;
 // OUT=DIR with SHOW_CHECK writes the probe's scenario there (ENGINEs named: those, in order,
 // on any cone); DEGRADED=1 the
 // degraded figure's property and demand runs.
@@ -34,6 +34,7 @@
 #include "checker/property_problem.hpp"
 #include "checker/reduce.hpp"
 #include "formats/matrix_json.hpp"
+#include "properties/evaluator.hpp"
 #include "properties/parser.hpp"
 #include "response/paths.hpp"
 #include "response/demand.hpp"
@@ -83,9 +84,19 @@ int main(int argc, char** argv) {
       if (auto alone = response::demand_run_alone(m, path, mode, t)) run = *alone;
     if (std::getenv("SHOW_DEMAND")[0] == '4')
       if (auto pulses = response::demand_run_pulses_first(m, path, mode, t)) run = *pulses;
+    if (std::getenv("SHOW_DEMAND")[0] == '5')
+      run = response::demand_run_settled(m, path, mode, t).value_or(run);
     if (std::getenv("SHOW_DEMAND")[0] == '3')
       if (auto reset = response::demand_run_after_reset(m, path, mode, t)) run = *reset;
     auto trace = checker::run_on_runtime(m, run);
+    if (std::getenv("JUDGE")) {  // the concrete evaluator's verdict on the run
+      auto file = properties::parse_properties(response::response_property_text(m, path, mode, t, "probe"), m, "probe");
+      properties::Trace pt;
+      for (std::size_t k = 0; k < trace.inputs.size(); ++k) pt.push_back({trace.inputs[k], trace.observables[k]});
+      auto e = properties::Evaluator(m).evaluate(file, pt).at(0);
+      std::cout << "holds=" << e.holds << " judged=" << e.judged << "/" << pt.size()
+                << " cycle=" << (e.cycle ? static_cast<long long>(*e.cycle) : -1) << std::endl;
+    }
     const auto all = model::observables(m);
     for (std::size_t i = 0; i < all.size(); ++i) {
       const std::string& key = all[i].key;

@@ -82,21 +82,63 @@ int first_voted(const Path& p) { return p.voted.empty() ? 0 : p.voted.front(); }
 // every cycle of the demand runs. Without it the engines must find that
 // release themselves (big_matrix's cause 107, bypassed through effect 18's
 // tag 2).
+// One cause that activates effect x in the cycle its condition holds: a
+// processed intersection without XooN, no time function, external inputs
+// only, its own bypass and inhibit not driven by the logic, and not linked
+// to an effect of the path. Null when there is none.
+const Cause* activator_of(const model::Matrix& m, int x, const std::set<int>& linked) {
+  for (const auto* i : m.intersections_of_effect(x)) {
+    const Cause* c = m.find_cause(i->cause);
+    if (!c || i->xoon || !model::is_processed(i->type) || i->type == model::IntersectionType::X) continue;
+    if (linked.count(c->id) || c->time.mode != model::TimeMode::None || external_tags(*c).size() != c->tags.size())
+      continue;
+    if (external_tags(*c).empty() || static_cast<int>(c->tags.size()) < votes_needed(*c) || held_by_logic(*c))
+      continue;
+    return c;
+  }
+  return nullptr;
+}
+
 std::vector<const Cause*> holds_released_by(const model::Matrix& m, const Path& p) {
   const std::set<int> linked = linked_causes(m, p);
   std::vector<const Cause*> out;
-  for (int x : holders_of(m, p).inactive_effects) {
-    for (const auto* i : m.intersections_of_effect(x)) {
-      const Cause* c = m.find_cause(i->cause);
-      if (!c || i->xoon || !model::is_processed(i->type) || i->type == model::IntersectionType::X) continue;
-      if (linked.count(c->id) || c->time.mode != model::TimeMode::None || external_tags(*c).size() != c->tags.size())
+  for (int x : holders_of(m, p).inactive_effects)
+    if (const Cause* c = activator_of(m, x, linked)) out.push_back(c);
+  return out;
+}
+
+// The causes linked to the path's effects (not the path's own) that trip at
+// rest through an internal reference reading an effect x that is not active
+// (`Effect[x]` reads 0 then, `Effect[x][y]` 0 for an energize-to-trip tag y
+// and 1 for a de-energize-to-trip one): such a cause answers for the path's
+// effect at start-up, and a timed one pulses again whenever x falls
+// (big_matrix's cause 123 reads `Effect[127]`, activates effect 127 with its
+// 1 s pulse, and so trips again when the pulse ends; its V cell into effect
+// 91 answers any demand on cause 82 for the first second). For each such x,
+// the cause that activates it (activator_of), tripped in every cycle.
+std::vector<const Cause*> rest_trips_released_by(const model::Matrix& m, const Path& p) {
+  const std::set<int> linked = linked_causes(m, p);
+  std::set<int> held_active;
+  for (int id : linked) {
+    if (std::count(p.causes.begin(), p.causes.end(), id)) continue;
+    for (const auto& t : m.find_cause(id)->tags) {
+      const auto ref = model::parse_internal_ref(t.name);
+      if (!ref || (ref->kind != model::InternalRef::Kind::Effect && ref->kind != model::InternalRef::Kind::EffectTag))
         continue;
-      if (external_tags(*c).empty() || static_cast<int>(c->tags.size()) < votes_needed(*c) || held_by_logic(*c))
-        continue;
-      out.push_back(c);
-      break;
+      const model::Effect* x = m.find_effect(ref->id);
+      if (!x) continue;
+      bool reads_when_inactive = false;  // the reference's value while x is not active
+      if (ref->kind == model::InternalRef::Kind::EffectTag) {
+        if (ref->tag < 1 || static_cast<std::size_t>(ref->tag) > x->tags.size()) continue;
+        reads_when_inactive = !x->tags[ref->tag - 1].ett;
+      }
+      if (reads_when_inactive == t.ett) held_active.insert(x->id);  // the trip value (C.3: 1 ETT, 0 DTT)
     }
   }
+  std::vector<const Cause*> out;
+  for (int x : held_active)
+    if (const Cause* c = activator_of(m, x, linked); c && std::find(out.begin(), out.end(), c) == out.end())
+      out.push_back(c);
   return out;
 }
 
@@ -120,8 +162,10 @@ namespace {
 
 // `bad`: in degraded mode, the voted trigger cause with an input in bad
 // quality.
+// `also_tripped`: causes tripped in every cycle besides (rest_trips_released_by).
 std::vector<model::CycleInput> demand_run(const model::Matrix& m, const Path& p, Mode mode, long long cycles,
-                                          bool pulses_first, int bad) {
+                                          bool pulses_first, int bad,
+                                          const std::vector<const Cause*>& also_tripped = {}) {
   const model::InputTable table(m);
   // The plant quiet: every cause's inputs inside their limits (scenario
   // defaults need not be: a de-energise-to-trip input defaults to 0), so that
@@ -195,6 +239,7 @@ std::vector<model::CycleInput> demand_run(const model::Matrix& m, const Path& p,
     }
   };
   for (const Cause* c : holds_released_by(m, p)) trip(quiet, *c, false);
+  for (const Cause* c : also_tripped) trip(quiet, *c, false);
   // The demand: the trigger causes' inputs beyond their limits.
   model::CycleInput demand = quiet;
   for (int id : demand_set(m, p, mode, pulses_first, bad))
@@ -286,8 +331,11 @@ std::optional<std::vector<model::CycleInput>> demand_run_pulses_first(const mode
   return run;
 }
 
-std::optional<std::vector<model::CycleInput>> demand_run_after_reset(const model::Matrix& m, const Path& p,
-                                                                     Mode mode, long long cycles) {
+namespace {
+
+// demand_run_after_reset on the quiet plant and the demand of `base`.
+std::optional<std::vector<model::CycleInput>> after_reset(const model::Matrix& m, const Path& p, long long cycles,
+                                                          const std::vector<model::CycleInput>& base) {
   const std::set<int> effects = effects_on(p);
   const std::set<int> linked = linked_causes(m, p);
   long long settle = 0;
@@ -298,7 +346,6 @@ std::optional<std::vector<model::CycleInput>> demand_run_after_reset(const model
   settle += 1;
   constexpr long long kMaxSettle = 10000;
   if (settle > kMaxSettle) return std::nullopt;
-  std::vector<model::CycleInput> base = demand_run_alone(m, p, mode, cycles).value_or(demand_run(m, p, mode, cycles));
   const model::CycleInput quiet = base.front(), demand = base.back();
   model::CycleInput reset = quiet;
   const model::InputTable table(m);
@@ -322,10 +369,37 @@ std::optional<std::vector<model::CycleInput>> demand_run_after_reset(const model
       if (auto index = table.find(*e.reset_tag)) reset.tags[*index].value = quiet.tags[*index].value != 0.0f ? 0.0f : 1.0f;
     }
   }
+  // Commands count only with secure write enabled (M.3).
+  if (m.secure_write && !reset.commands.empty())
+    if (auto index = table.find(m.secure_write->enable_tag)) reset.tags[*index].value = 1.0f;
   std::vector<model::CycleInput> run(static_cast<std::size_t>(settle), quiet);
   run.push_back(reset);
   run.push_back(quiet);
   run.resize(run.size() + static_cast<std::size_t>(std::max(0LL, cycles)) + 1, demand);
+  return run;
+}
+
+}  // namespace
+
+std::optional<std::vector<model::CycleInput>> demand_run_after_reset(const model::Matrix& m, const Path& p,
+                                                                     Mode mode, long long cycles) {
+  return after_reset(m, p, cycles,
+                     demand_run_alone(m, p, mode, cycles).value_or(demand_run(m, p, mode, cycles)));
+}
+
+std::optional<std::vector<model::CycleInput>> demand_run_settled(const model::Matrix& m, const Path& p, Mode mode,
+                                                                 long long cycles) {
+  const std::vector<const Cause*> released = rest_trips_released_by(m, p);
+  if (released.empty()) return std::nullopt;
+  std::vector<model::CycleInput> base = demand_run(m, p, mode, cycles, false, first_voted(p), released);
+  hold_off(base, hold_off_tags(m, p));
+  return after_reset(m, p, cycles, base);
+}
+
+std::vector<model::CycleInput> demand_run_at_start_up(const model::Matrix& m, const Path& p, Mode mode,
+                                                      long long cycles) {
+  std::vector<model::CycleInput> run = demand_run(m, p, mode, cycles);
+  run.erase(run.begin());
   return run;
 }
 
@@ -335,6 +409,8 @@ std::vector<std::vector<model::CycleInput>> demand_runs(const model::Matrix& m, 
   if (auto pulses = demand_run_pulses_first(m, p, mode, cycles)) out.push_back(std::move(*pulses));
   if (auto alone = demand_run_alone(m, p, mode, cycles)) out.push_back(std::move(*alone));
   if (auto reset = demand_run_after_reset(m, p, mode, cycles)) out.push_back(std::move(*reset));
+  if (auto settled = demand_run_settled(m, p, mode, cycles)) out.push_back(std::move(*settled));
+  out.push_back(demand_run_at_start_up(m, p, mode, cycles));
   // The degraded figure of an XooN path is that of its slowest voted member
   // in bad quality: the demand with each of the others in turn (an `and`
   // whose bad input is ignored never trips, and its set never responds).

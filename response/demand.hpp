@@ -58,8 +58,26 @@ std::optional<std::vector<model::CycleInput>> demand_run_alone(const model::Matr
 std::optional<std::vector<model::CycleInput>> demand_run_after_reset(const model::Matrix& m, const Path& p,
                                                                      Mode mode, long long cycles);
 
+// The demand after a reset (as above) on a plant whose rest trips are
+// released: a cause linked to the path's effects that trips at rest because
+// it reads an effect x that is not active (a timed one pulses at start-up and
+// again whenever x falls) is kept quiet by tripping, in every cycle, a cause
+// that activates x. Nullopt when there is no such cause.
+std::optional<std::vector<model::CycleInput>> demand_run_settled(const model::Matrix& m, const Path& p, Mode mode,
+                                                                 long long cycles);
+
+// The plain demand from the first cycle on, without the quiet cycle: a
+// trigger cause that trips at rest through an internal reference (it reads
+// an effect that is not active at start-up) has requested its trip by the
+// second cycle, so that only a demand at start-up is fresh (big_matrix's
+// cause 69, an `or` that reads `Effect[68]`).
+std::vector<model::CycleInput> demand_run_at_start_up(const model::Matrix& m, const Path& p, Mode mode,
+                                                      long long cycles);
+
 // Every run above that applies, in the order a probe tries them: the plain
-// demand, the pulses first, the path alone, the demand after a reset.
+// demand, the pulses first, the path alone, the demand after a reset, the
+// settled demand, the demand at start-up; in degraded mode, an XooN's demand with each other voted
+// member in bad quality.
 std::vector<std::vector<model::CycleInput>> demand_runs(const model::Matrix& m, const Path& p, Mode mode,
                                                         long long cycles);
 

@@ -320,6 +320,78 @@ TEST(Response, EffectLatchedAtStartUpIsResetBeforeTheDemand) {
   EXPECT_EQ(plain.observables[1][observable_index(m, "effect[1].active")], 1);
 }
 
+// A start-up pulse that comes back: cause 2 reads `Effect[3]`
+// de-energize-to-trip, so it trips while effect 3 is not active; its 1 s
+// pulse activates effect 3 and latches effect 1 (S), and when the pulse ends
+// effect 3 falls and cause 2 pulses again. The settled demand trips cause 4,
+// which holds effect 3 active, so that cause 2 pulses once; then effect 1 is
+// reset (the reset counts only with secure write enabled, M.3) and the
+// demand on cause 1 shows its 0.5 s on-delay.
+TEST(Response, StartUpPulseThatComesBackIsReleasedBeforeTheDemand) {
+  auto m = matrix(cause(1, "S1", R"("time": {"mode": "on_delay", "ms": 500})") + "," +
+                      cause(2, "Effect[3]", R"("time": {"mode": "timed", "ms": 1000})") + "," + cause(4, "S4"),
+                  effect(1, "Y1") + "," + effect(3, "Y3"),
+                  link(1, 1) + "," + link(2, 1, "S") + "," + link(2, 3) + "," + link(4, 3),
+                  R"("secure_write": {"enable_tag": "EN"},)");
+  auto dir = scratch("start_up_pulse");
+  auto r = analyse(m, dir);
+  const auto& p = only_path(r, 1);
+  ASSERT_EQ(p.path.causes, std::vector<int>{1});
+  ASSERT_EQ(p.logic.kind, Figure::Kind::Exact) << p.logic.reason;
+  EXPECT_EQ(p.logic.cycles, 5);
+  expect_replays(m, dir, p.logic.counterexample);
+  expect_not_yet_active(dir, p.logic.counterexample, 1);
+  // The settled run, not an engine's trace: cause 4 tripped from the first
+  // cycle, the reset with secure write enabled.
+  const auto j = nlohmann::json::parse(read(dir / p.logic.counterexample));
+  const auto& steps = j.at("steps");
+  ASSERT_GE(steps.size(), 3u) << j.dump(1);
+  EXPECT_EQ(steps[0].at("inputs").at("S4"), false) << j.dump(1);
+  EXPECT_EQ(steps[1].at("commands")[0].at("op"), "reset_effect") << j.dump(1);
+  EXPECT_EQ(steps[1].at("inputs").at("EN"), true) << j.dump(1);
+  // Without cause 4, the pulse comes back after the reset.
+  const auto reset = response::demand_run_after_reset(m, p.path, response::Mode::Normal, 4);
+  ASSERT_TRUE(reset);
+  const auto again = checker::run_on_runtime(m, *reset);
+  EXPECT_EQ(again.observables.back()[observable_index(m, "effect[1].active")], 1);
+}
+
+// Cause 1 is an `or` of S1 and `Effect[2]`, de-energize-to-trip: it trips at
+// rest while effect 2 is not active, so a demand after a quiet cycle is no
+// fresh demand. A demand at start-up is: its 0.5 s on-delay and effect 1's
+// 0.3 s output delay.
+TEST(Response, DemandAtStartUpIsFreshWhereTheCauseTripsAtRest) {
+  auto m = matrix(R"({"id": 1, "name": "C1", "sif": [1], "function": "or", "tags": [{"name": "S1"}, {"name": "Effect[2]"}],
+                      "time": {"mode": "on_delay", "ms": 500}})" "," + cause(3, "S3"),
+                  effect(1, "Y1", R"("output_delay_ms": 300)") + "," + effect(2, "Y2"),
+                  link(1, 1, "S") + "," + link(3, 2));
+  auto dir = scratch("start_up_demand");
+  auto r = analyse(m, dir);
+  const auto& p = only_path(r, 1);
+  ASSERT_EQ(p.logic.kind, Figure::Kind::Exact) << p.logic.reason;
+  EXPECT_EQ(p.logic.cycles, 8);
+  expect_replays(m, dir, p.logic.counterexample);
+  expect_not_yet_active(dir, p.logic.counterexample, 1);
+  const auto j = nlohmann::json::parse(read(dir / p.logic.counterexample));
+  EXPECT_EQ(j.at("steps")[0].at("inputs").at("S1"), false) << j.dump(1);  // tripped from the first cycle
+  const auto plain = checker::run_on_runtime(m, response::demand_run(m, p.path, response::Mode::Normal, 7));
+  EXPECT_EQ(plain.observables[0][observable_index(m, "cause[1].trip_requested")], 1);  // tripped at rest
+  // The demand at start-up violates "within 7 cycles" by itself, where the
+  // plain demand judges nothing (its trigger never rises freshly).
+  const auto file = properties::parse_properties(
+      response::response_property_text(m, p.path, response::Mode::Normal, 7, "start"), m, "start");
+  auto judge = [&](const checker::ConcreteTrace& run) {
+    properties::Trace trace;
+    for (std::size_t i = 0; i < run.inputs.size(); ++i) trace.push_back({run.inputs[i], run.observables[i]});
+    return properties::Evaluator(m).evaluate(file, trace).at(0);
+  };
+  const auto at_start_up =
+      judge(checker::run_on_runtime(m, response::demand_run_at_start_up(m, p.path, response::Mode::Normal, 7)));
+  EXPECT_FALSE(at_start_up.holds);
+  EXPECT_EQ(at_start_up.cycle, std::optional<std::size_t>(7));
+  EXPECT_TRUE(judge(plain).holds);
+}
+
 TEST(Response, TwoOutOfThreeWithOneBadInputReportsItsDegradedFigure) {
   // Discrete switches (de-energize-to-trip): 2oo3 with "degrade" becomes 1oo2
   // when one of them goes bad (C.4).
