@@ -128,6 +128,16 @@ void expect_not_yet_active(const std::filesystem::path& dir, const std::string& 
   EXPECT_NE(text.find(key), std::string::npos) << text;
 }
 
+// The path's figure is exactly `cycles`, and its T - 1 counterexample
+// replays on the runtime with `effect` not yet active.
+void expect_exact(const model::Matrix& m, const std::filesystem::path& dir, const response::PathResult& p,
+                  long long cycles, int effect) {
+  ASSERT_EQ(p.logic.kind, Figure::Kind::Exact) << p.logic.reason;
+  EXPECT_EQ(p.logic.cycles, cycles);
+  expect_replays(m, dir, p.logic.counterexample);
+  expect_not_yet_active(dir, p.logic.counterexample, effect);
+}
+
 // The T - 1 counterexample is the demand itself (docs/response-time.md,
 // "Method"): one quiet cycle, then only the trigger's tag changed and held
 // for T cycles, at whose end the outputs have not yet responded.
@@ -179,10 +189,7 @@ TEST(Response, OutputDelayAddsItsCycles) {
   auto dir = scratch("output_delay");
   const auto r = analyse(m, dir);
   const auto& p = only_path(r, 1);
-  ASSERT_EQ(p.logic.kind, Figure::Kind::Exact) << p.logic.reason;
-  EXPECT_EQ(p.logic.cycles, 5);
-  expect_replays(m, dir, p.logic.counterexample);
-  expect_not_yet_active(dir, p.logic.counterexample, 1);
+  ASSERT_NO_FATAL_FAILURE(expect_exact(m, dir, p, 5, 1));
   // After an on-delay: the two delays add up (10 + 20 cycles).
   auto both = matrix(cause(1, "S1", R"("time": {"mode": "on_delay", "ms": 1000})"),
                      effect(1, "Y1", R"("output_delay_ms": 2000)"), link(1, 1));
@@ -305,10 +312,7 @@ TEST(Response, EffectLatchedAtStartUpIsResetBeforeTheDemand) {
   auto r = analyse(m, dir);
   const auto& p = only_path(r, 1);
   ASSERT_EQ(p.path.causes, std::vector<int>{1});
-  ASSERT_EQ(p.logic.kind, Figure::Kind::Exact) << p.logic.reason;
-  EXPECT_EQ(p.logic.cycles, 5);
-  expect_replays(m, dir, p.logic.counterexample);
-  expect_not_yet_active(dir, p.logic.counterexample, 1);
+  ASSERT_NO_FATAL_FAILURE(expect_exact(m, dir, p, 5, 1));
   // That run, not an engine's trace: the plant settles for 6 cycles (the
   // 500 ms pulse and output delay, and one more), then the reset.
   const auto j = nlohmann::json::parse(read(dir / p.logic.counterexample));
@@ -337,10 +341,7 @@ TEST(Response, StartUpPulseThatComesBackIsReleasedBeforeTheDemand) {
   auto r = analyse(m, dir);
   const auto& p = only_path(r, 1);
   ASSERT_EQ(p.path.causes, std::vector<int>{1});
-  ASSERT_EQ(p.logic.kind, Figure::Kind::Exact) << p.logic.reason;
-  EXPECT_EQ(p.logic.cycles, 5);
-  expect_replays(m, dir, p.logic.counterexample);
-  expect_not_yet_active(dir, p.logic.counterexample, 1);
+  ASSERT_NO_FATAL_FAILURE(expect_exact(m, dir, p, 5, 1));
   // The settled run, not an engine's trace: cause 4 tripped from the first
   // cycle, the reset with secure write enabled.
   const auto j = nlohmann::json::parse(read(dir / p.logic.counterexample));
@@ -368,10 +369,7 @@ TEST(Response, DemandAtStartUpIsFreshWhereTheCauseTripsAtRest) {
   auto dir = scratch("start_up_demand");
   auto r = analyse(m, dir);
   const auto& p = only_path(r, 1);
-  ASSERT_EQ(p.logic.kind, Figure::Kind::Exact) << p.logic.reason;
-  EXPECT_EQ(p.logic.cycles, 8);
-  expect_replays(m, dir, p.logic.counterexample);
-  expect_not_yet_active(dir, p.logic.counterexample, 1);
+  ASSERT_NO_FATAL_FAILURE(expect_exact(m, dir, p, 8, 1));
   const auto j = nlohmann::json::parse(read(dir / p.logic.counterexample));
   EXPECT_EQ(j.at("steps")[0].at("inputs").at("S1"), false) << j.dump(1);  // tripped from the first cycle
   const auto plain = checker::run_on_runtime(m, response::demand_run(m, p.path, response::Mode::Normal, 7));
@@ -511,10 +509,7 @@ TEST(Response, XooNCausesTakingTurnsAreNoDemand) {
   auto dir = scratch("xoon_turns");
   auto r = analyse(m, dir);
   const auto& p = only_path(r, 1);
-  ASSERT_EQ(p.logic.kind, Figure::Kind::Exact) << p.logic.reason;
-  EXPECT_EQ(p.logic.cycles, 10);
-  expect_replays(m, dir, p.logic.counterexample);
-  expect_not_yet_active(dir, p.logic.counterexample, 1);
+  ASSERT_NO_FATAL_FAILURE(expect_exact(m, dir, p, 10, 1));
   // The pairs {1,2}, {1,3}, {2,3} in turn, 4 cycles each (switches are DTT:
   // 0 is tripped): two conditions in every cycle, the effect never active,
   // and the bound of 10 cycles not violated.
@@ -714,10 +709,7 @@ TEST(Response, ThirtyMinuteOnDelayIsExactWithoutUnrolling) {
   auto dir = scratch("long");
   const auto r = analyse(m, dir);
   const auto& p = only_path(r, 1);
-  ASSERT_EQ(p.logic.kind, Figure::Kind::Exact) << p.logic.reason;
-  EXPECT_EQ(p.logic.cycles, 18000);
-  expect_replays(m, dir, p.logic.counterexample);
-  expect_not_yet_active(dir, p.logic.counterexample, 1);
+  ASSERT_NO_FATAL_FAILURE(expect_exact(m, dir, p, 18000, 1));
 }
 
 // The proof of a bound does not unroll it: one induction step of the
