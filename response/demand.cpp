@@ -6,37 +6,13 @@
 #include <tuple>
 
 #include "model/vocabulary.hpp"
+#include "response/plant.hpp"
 
 namespace cemv::response {
 
 using model::Cause;
 
 namespace {
-
-// The ids of the effects on a path (its end and the effects its routes cross).
-std::set<int> effects_on(const Path& p) {
-  std::set<int> out;
-  for (const auto& n : p.elements)
-    if (n.kind == model::Node::Kind::Effect) out.insert(n.id);
-  return out;
-}
-
-// The causes linked to an effect of the path.
-std::set<int> linked_causes(const model::Matrix& m, const Path& p) {
-  const std::set<int> effects = effects_on(p);
-  std::set<int> out;
-  for (const auto& x : m.intersections)
-    if (effects.count(x.effect)) out.insert(x.cause);
-  return out;
-}
-
-// Whether a cause's bypass or inhibit is driven by the logic (an internal
-// reference), not by an operator's tag.
-bool held_by_logic(const Cause& c) {
-  for (const auto* t : {&c.bypass_tag, &c.inhibit_tag})
-    if (*t && model::parse_internal_ref(**t)) return true;
-  return false;
-}
 
 // The causes a demand run trips: every trigger cause of a single-cause path;
 // of an XooN path the X slowest, in degraded mode the degraded cause and the
@@ -73,75 +49,6 @@ std::vector<int> demand_set(const model::Matrix& m, const Path& p, Mode mode, bo
 // quality first (0: none).
 int first_voted(const Path& p) { return p.voted.empty() ? 0 : p.voted.front(); }
 
-// A path cause held off while an effect x is *not* active
-// (Holders::inactive_effects) is held off from start-up on, and no demand on
-// it counts. The causes that release such holds: for each x, one cause that
-// activates x in the cycle its condition holds (a processed intersection
-// without XooN, no time function, external inputs only, its own bypass and
-// inhibit not driven by the logic) and that no path effect reads, tripped in
-// every cycle of the demand runs. Without it the engines must find that
-// release themselves (big_matrix's cause 107, bypassed through effect 18's
-// tag 2).
-// One cause that activates effect x in the cycle its condition holds: a
-// processed intersection without XooN, no time function, external inputs
-// only, its own bypass and inhibit not driven by the logic, and not linked
-// to an effect of the path. Null when there is none.
-const Cause* activator_of(const model::Matrix& m, int x, const std::set<int>& linked) {
-  for (const auto* i : m.intersections_of_effect(x)) {
-    const Cause* c = m.find_cause(i->cause);
-    if (!c || i->xoon || !model::is_processed(i->type) || i->type == model::IntersectionType::X) continue;
-    if (linked.count(c->id) || c->time.mode != model::TimeMode::None || external_tags(*c).size() != c->tags.size())
-      continue;
-    if (external_tags(*c).empty() || static_cast<int>(c->tags.size()) < votes_needed(*c) || held_by_logic(*c))
-      continue;
-    return c;
-  }
-  return nullptr;
-}
-
-std::vector<const Cause*> holds_released_by(const model::Matrix& m, const Path& p) {
-  const std::set<int> linked = linked_causes(m, p);
-  std::vector<const Cause*> out;
-  for (int x : holders_of(m, p).inactive_effects)
-    if (const Cause* c = activator_of(m, x, linked)) out.push_back(c);
-  return out;
-}
-
-// The causes linked to the path's effects (not the path's own) that trip at
-// rest through an internal reference reading an effect x that is not active
-// (`Effect[x]` reads 0 then, `Effect[x][y]` 0 for an energize-to-trip tag y
-// and 1 for a de-energize-to-trip one): such a cause answers for the path's
-// effect at start-up, and a timed one pulses again whenever x falls
-// (big_matrix's cause 123 reads `Effect[127]`, activates effect 127 with its
-// 1 s pulse, and so trips again when the pulse ends; its V cell into effect
-// 91 answers any demand on cause 82 for the first second). For each such x,
-// the cause that activates it (activator_of), tripped in every cycle.
-std::vector<const Cause*> rest_trips_released_by(const model::Matrix& m, const Path& p) {
-  const std::set<int> linked = linked_causes(m, p);
-  std::set<int> held_active;
-  for (int id : linked) {
-    if (std::count(p.causes.begin(), p.causes.end(), id)) continue;
-    for (const auto& t : m.find_cause(id)->tags) {
-      const auto ref = model::parse_internal_ref(t.name);
-      if (!ref || (ref->kind != model::InternalRef::Kind::Effect && ref->kind != model::InternalRef::Kind::EffectTag))
-        continue;
-      const model::Effect* x = m.find_effect(ref->id);
-      if (!x) continue;
-      bool reads_when_inactive = false;  // the reference's value while x is not active
-      if (ref->kind == model::InternalRef::Kind::EffectTag) {
-        if (ref->tag < 1 || static_cast<std::size_t>(ref->tag) > x->tags.size()) continue;
-        reads_when_inactive = !x->tags[ref->tag - 1].ett;
-      }
-      if (reads_when_inactive == t.ett) held_active.insert(x->id);  // the trip value (C.3: 1 ETT, 0 DTT)
-    }
-  }
-  std::vector<const Cause*> out;
-  for (int x : held_active)
-    if (const Cause* c = activator_of(m, x, linked); c && std::find(out.begin(), out.end(), c) == out.end())
-      out.push_back(c);
-  return out;
-}
-
 // A cause's input inside its limit: a discrete input at its healthy value, an
 // analog one at `value` unless that is beyond the limit, else clear of the
 // hysteresis band.
@@ -155,10 +62,6 @@ float healthy_value(const Cause& c, const model::CauseTag& t, float value) {
   }
   return t.ett ? 0.0f : 1.0f;
 }
-
-}  // namespace
-
-namespace {
 
 // `bad`: in degraded mode, the voted trigger cause with an input in bad
 // quality.
@@ -256,51 +159,6 @@ std::vector<model::CycleInput> demand_run(const model::Matrix& m, const Path& p,
 }
 
 namespace {
-
-// The input tags (by index) that hold off the other causes of the path's
-// effects and of the elements whose activity holds a path cause off
-// (demand_run_alone).
-std::set<std::size_t> hold_off_tags(const model::Matrix& m, const Path& p) {
-  // Every tag a path element reads stays as demand_run sets it.
-  std::set<std::string> own;
-  std::set<int> effects, causes;
-  for (const auto& n : p.elements) {
-    if (n.kind == model::Node::Kind::Cause) {
-      const Cause& c = *m.find_cause(n.id);
-      causes.insert(c.id);
-      for (const auto& t : c.tags) own.insert(t.name);
-      for (const auto* t : {&c.bypass_tag, &c.inhibit_tag})
-        if (*t) own.insert(**t);
-    } else {
-      const model::Effect& e = *m.find_effect(n.id);
-      effects.insert(e.id);
-      for (const auto* t : {&e.bypass_tag, &e.reset_tag})
-        if (*t) own.insert(**t);
-      if (e.process_data) {
-        if (e.process_data->tag) own.insert(*e.process_data->tag);
-        if (e.process_data->mask_tag) own.insert(*e.process_data->mask_tag);
-      }
-    }
-  }
-  // The causes of the elements whose activity holds a path cause off are
-  // held off too (big_matrix's cause 83 is bypassed while effect 82 is
-  // active, which cause 126 activates whenever the pulse of cause 123 ends).
-  const Holders holders = holders_of(m, p);
-  const model::InputTable table(m);
-  std::set<std::size_t> hold_off;
-  auto hold = [&](const Cause& c) {
-    for (const auto* t : {&c.bypass_tag, &c.inhibit_tag})
-      if (*t && !own.count(**t) && !model::parse_internal_ref(**t))
-        if (auto index = table.find(**t)) hold_off.insert(*index);
-  };
-  for (const auto& x : m.intersections) {
-    if ((!effects.count(x.effect) && !holders.effects.count(x.effect)) || causes.count(x.cause)) continue;
-    if (const Cause* c = m.find_cause(x.cause)) hold(*c);
-  }
-  for (int id : holders.causes)
-    if (const Cause* c = m.find_cause(id); c && !causes.count(id)) hold(*c);
-  return hold_off;
-}
 
 void hold_off(std::vector<model::CycleInput>& run, const std::set<std::size_t>& tags) {
   for (auto& cycle : run)
