@@ -214,10 +214,10 @@ ProverResult PropertyChecker::decide(const model::Matrix& m, Goal goal, bool sli
     o.engines = options_.engines;
     o.in_order = options_.engines_in_order;
   }
-  if (goal == Goal::Property && options_.max_k >= 0) o.max_k = options_.max_k;
   if (goal == Goal::Property) {
     o.wide_engines = options_.engines_when_wide;
     o.race_wide = options_.race_when_wide;
+    if (options_.max_k >= 0) o.max_k = options_.max_k;
   }
   if (goal == Goal::Property && !options_.localize_to.empty()) o.localize_keep = keep_elements(options_.localize_to);
   if (goal == Goal::Property && options_.shrink_max_cycles >= 0)

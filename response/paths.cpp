@@ -232,24 +232,4 @@ std::vector<const model::CauseTag*> external_tags(const model::Cause& c) {
   return out;
 }
 
-Holders holders_of(const model::Matrix& m, const Path& p) {
-  Holders out;
-  for (const auto& n : p.elements) {
-    if (n.kind != Node::Kind::Cause) continue;
-    const Cause& c = *m.find_cause(n.id);
-    for (const auto* t : {&c.bypass_tag, &c.inhibit_tag}) {
-      const auto ref = *t ? model::parse_internal_ref(**t) : std::nullopt;
-      if (!ref) continue;
-      if (ref->kind == model::InternalRef::Kind::Cause) out.causes.insert(ref->id);
-      if (ref->kind == model::InternalRef::Kind::Effect) out.effects.insert(ref->id);
-      if (ref->kind == model::InternalRef::Kind::EffectTag) {
-        const Effect* x = m.find_effect(ref->id);
-        if (x && ref->tag >= 1 && static_cast<std::size_t>(ref->tag) <= x->tags.size())
-          (x->tags[ref->tag - 1].ett ? out.effects : out.inactive_effects).insert(x->id);
-      }
-    }
-  }
-  return out;
-}
-
 }  // namespace cemv::response

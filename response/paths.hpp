@@ -4,7 +4,6 @@
 // is one path triggered by X of its causes.
 #pragma once
 
-#include <set>
 #include <string>
 #include <vector>
 
@@ -38,16 +37,6 @@ struct Path {
 // group when its effect and some other element on it (a trigger or relaying
 // cause) are members of the group.
 std::vector<Path> response_paths(const model::Matrix& m, const std::vector<int>& sifs);
-
-// The elements whose state holds a cause of the path off through its bypass
-// or inhibit tag (an internal reference, 6.1.3). `effects`, `causes`: while
-// active (`Effect[x]`, `Cause[x]`, `Effect[x][y]` of an energize-to-trip tag
-// read 1 then); `inactive_effects`: while *not* active (`Effect[x][y]` of a
-// de-energize-to-trip tag reads 1 until x responds, start-up included).
-struct Holders {
-  std::set<int> effects, causes, inactive_effects;
-};
-Holders holders_of(const model::Matrix& m, const Path& p);
 
 // The number of input tags a cause's voting needs for a trip (C.4: normal 1,
 // or 1, and N, 2oo3 2).

@@ -13,6 +13,16 @@
 
 namespace cemv::response {
 
+// The elements whose state holds a cause of the path off through its bypass
+// or inhibit tag (an internal reference, 6.1.3). `effects`, `causes`: while
+// active (`Effect[x]`, `Cause[x]`, `Effect[x][y]` of an energize-to-trip tag
+// read 1 then); `inactive_effects`: while *not* active (`Effect[x][y]` of a
+// de-energize-to-trip tag reads 1 until x responds, start-up included).
+struct Holders {
+  std::set<int> effects, causes, inactive_effects;
+};
+Holders holders_of(const model::Matrix& m, const Path& p);
+
 // The ids of the effects on a path (its end and the effects its routes cross).
 std::set<int> effects_on(const Path& p);
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
+#include <optional>
 #include <set>
 #include <stdexcept>
 
@@ -23,6 +24,16 @@ struct Engines {
   std::vector<std::string> narrow, wide;
   bool race_wide = false;  // `wide` raced (checker::CheckOptions::race_when_wide), not in order
 };
+
+// What is left of a time limit of `limit` seconds that started at `start`:
+// 0 for no limit; nullopt when (next to) nothing is left, since --timeout is
+// a hard limit per probe.
+std::optional<double> time_left(double limit, std::chrono::steady_clock::time_point start) {
+  if (limit <= 0) return 0.0;
+  const double left = limit - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (left < 0.001) return std::nullopt;
+  return left;
+}
 
 // A property file's text decided by the checker with `options`.
 checker::CheckResult check_text(const model::Matrix& m, const std::string& name, const std::string& text,
@@ -129,10 +140,9 @@ std::optional<Probe> decide_from_member_lemmas(const model::Matrix& m, const Pat
     slowest = std::max(slowest, lemmas->delays[i]);
   }
   if (assumed.empty()) return std::nullopt;
-  if (seconds > 0) {
-    mine.timeout_s = seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (mine.timeout_s < 0.001) return std::nullopt;
-  }
+  const std::optional<double> left = time_left(seconds, start);
+  if (!left) return std::nullopt;
+  mine.timeout_s = *left;
   // In a violation, every member of the set has been active for at least
   // the last `cycles` - `slowest` cycles: the induction needs to reach back
   // over those and the cycle before (and no further when the bound is
@@ -155,7 +165,6 @@ std::optional<Probe> decide_from_member_lemmas(const model::Matrix& m, const Pat
     return bound;
   return std::nullopt;
 }
-
 
 // The engines that can give the expected answer, asked one after another in
 // the probe's thread (checker::CheckOptions::engines_in_order): probes run in
@@ -207,20 +216,18 @@ Probe decide_probe(const model::Matrix& m, const Path& p, Mode mode, long long c
     if (auto r = decide_from_member_lemmas(m, p, mode, cycles, o, o.timeout_s / 2, runs)) return *r;
   }
   SearchOptions rest = o;
-  if (o.timeout_s > 0) {
-    rest.timeout_s = o.timeout_s - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (rest.timeout_s < 0.001) {
-      Probe none;
-      none.reason = "time limit";
-      return none;
-    }
+  std::optional<double> left = time_left(o.timeout_s, start);
+  if (!left) {
+    Probe none;
+    none.reason = "time limit";
+    return none;
   }
+  rest.timeout_s = *left;
   Probe r = decide(m, p, mode, cycles, rest, engines, runs, e != Expect::Counterexample);
   if (r.verdict != checker::PropertyVerdict::Unknown || (engines.narrow.empty() && engines.wide.empty())) return r;
-  if (o.timeout_s > 0) {
-    rest.timeout_s = o.timeout_s - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (rest.timeout_s < 0.001) return r;
-  }
+  left = time_left(o.timeout_s, start);
+  if (!left) return r;
+  rest.timeout_s = *left;
   return decide(m, p, mode, cycles, rest, Engines{}, runs, false);
 }
 

@@ -7,6 +7,7 @@
 
 #include "model/text.hpp"
 #include "model/vocabulary.hpp"
+#include "response/plant.hpp"
 
 namespace cemv::response {
 
@@ -93,6 +94,14 @@ std::string held_since_fresh_rise(const std::string& condition, int id, long lon
          ".trip_requested)), " + std::to_string(cycles) + " cycles)";
 }
 
+// Cause `c`'s normal or degraded condition held since a fresh rise for
+// `cycles` cycles: the one text of that term for an XooN bound and for its
+// member lemmas, so that the bound's monitor and the lemmas it assumes read
+// one `held` counter (member_lemmas).
+std::string member_held(const Cause& c, bool degraded, long long cycles) {
+  return held_since_fresh_rise(degraded ? degraded_trigger(c) : "(" + normal_trigger(c) + ")", c.id, cycles);
+}
+
 // Its first cycle: the demand of the set that holds it has lasted exactly
 // `cycles` cycles after its rise.
 std::string first_cycle(const std::string& held) { return "(" + held + " and not prev(" + held + "))"; }
@@ -112,7 +121,7 @@ std::string any_of(const std::vector<std::string>& terms) {
 std::string xoon_violation(const model::Matrix& m, const Path& p, Mode mode, long long cycles,
                            const std::string& response) {
   std::vector<std::string> held;
-  for (int id : p.causes) held.push_back(held_since_fresh_rise("(" + normal_trigger(*m.find_cause(id)) + ")", id, cycles));
+  for (int id : p.causes) held.push_back(member_held(*m.find_cause(id), false, cycles));
   std::string set;
   if (mode == Mode::Normal) {
     std::vector<std::string> first;
@@ -122,7 +131,7 @@ std::string xoon_violation(const model::Matrix& m, const Path& p, Mode mode, lon
     // The degraded cause v is one of the set, with X - 1 of the rest.
     std::vector<std::string> terms;
     for (int v : p.voted) {
-      const std::string degraded = held_since_fresh_rise(degraded_trigger(*m.find_cause(v)), v, cycles);
+      const std::string degraded = member_held(*m.find_cause(v), true, cycles);
       std::vector<std::string> rest, first{first_cycle(degraded)};
       for (std::size_t i = 0; i < p.causes.size(); ++i)
         if (p.causes[i] != v) {
@@ -187,13 +196,12 @@ std::string response_property_text(const model::Matrix& m, const Path& p, Mode m
   // maximum time, and a figure that counts it measures that time, not the
   // logic (docs/response-time.md, "Assumptions").
   const Holders holders = holders_of(m, p);
-  std::set<int> held_by;
-  for (const auto* set : {&holders.effects, &holders.inactive_effects})
-    for (int id : *set)
-      if (!std::count(p.elements.begin(), p.elements.end(), model::Node{model::Node::Kind::Effect, id}))
-        held_by.insert(id);
+  const std::set<int> on_path = effects_on(p);  // assumed not overridden above
+  std::set<int> held_by(holders.effects);
+  held_by.insert(holders.inactive_effects.begin(), holders.inactive_effects.end());
   for (int id : held_by)
-    if (m.find_effect(id)->override_time) s += "  assume not " + effect_ref(id) + ".override_active\n";
+    if (!on_path.count(id) && m.find_effect(id)->override_time)
+      s += "  assume not " + effect_ref(id) + ".override_active\n";
   for (const auto& t : assumed) s += "  assume not " + t + "\n";
   if (p.causes.size() > 1) {
     s += "  never " + xoon_violation(m, p, mode, cycles, response) + "\n";
@@ -219,14 +227,13 @@ std::optional<MemberLemmas> member_lemmas(const model::Matrix& m, const Path& p,
     if (c.time.mode == model::TimeMode::Timed) continue;
     const long long delay = c.time.mode == model::TimeMode::OnDelay ? cycles_of(c.time.ms, m.cycle_ms) : 0;
     if (delay > cycles) continue;
-    // Each condition exactly as xoon_violation writes it, so that the bound's
-    // monitor and its assumptions share one `held` counter; one property
+    // Each condition as xoon_violation writes it (member_held); one property
     // each, since a lemma may fail for one condition only (an `and` whose
     // bad input is ignored never trips in degraded mode).
     std::vector<std::pair<std::string, std::string>> conditions{
-        {".c" + std::to_string(id), held_since_fresh_rise("(" + normal_trigger(c) + ")", id, cycles)}};
+        {".c" + std::to_string(id), member_held(c, false, cycles)}};
     if (mode == Mode::Degraded && std::count(p.voted.begin(), p.voted.end(), id))
-      conditions.push_back({".c" + std::to_string(id) + ".degraded", held_since_fresh_rise(degraded_trigger(c), id, cycles)});
+      conditions.push_back({".c" + std::to_string(id) + ".degraded", member_held(c, true, cycles)});
     for (const auto& [suffix, held] : conditions) {
       const std::string term = "(" + held + " and not held(" + cause_ref(id) + ".active, " +
                                std::to_string(cycles - delay) + " cycles))";
