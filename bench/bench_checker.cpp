@@ -70,10 +70,12 @@ void BM_Req4PlainBmcToTimerDepth(benchmark::State& state) {
     z3::context ctx;
     auto enc = encoder::encode(ctx, m, properties::property_roots(*req4, file.assumptions, m));
     auto mon = properties::compile_monitor(*enc, *req4, file.assumptions);
-    checker::Limits limits = checker::Limits::within(std::chrono::seconds(120), 18001);
+    checker::Limits limits;
+    limits.deadline = checker::Clock::now() + std::chrono::seconds(120);
+    limits.max_depth = 18001;
     r = checker::Bmc{}.prove({&enc->ts, mon.good, mon.assumption}, limits);
   }
-  state.SetLabel("plain BMC to depth 18,001 (limit 120 s): " + checker::to_string(r.verdict) + " " + r.reason +
+  state.SetLabel("plain BMC to depth 18,001 (limit 120 s): " + checker::to_string(r.verdict) + " " + r.reason_text() +
                  ", reached depth " + std::to_string(r.k));
 }
 BENCHMARK(BM_Req4PlainBmcToTimerDepth)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();

@@ -17,8 +17,8 @@ testgen::TestSuite& suite() {
   static testgen::TestSuite s = [] {
     testgen::TestgenOptions o;
     o.jobs = 2;
-    o.objective_budget_s = 5.0;
-    o.proof_budget_s = 2.0;
+    o.objective_work = 5 * checker::kMega;
+    o.proof_work = 2 * checker::kMega;
     return testgen::generate_tests(testsupport::big_matrix(1), o);
   }();
   return s;

@@ -4,7 +4,7 @@
 // checker/property_problem.hpp, after the exact reductions of
 // checker/reduce.hpp), to see which engine carries cemv response's probes.
 // Usage:
-//   response_engines MATRIX CAUSE EFFECT T [SECONDS] [ENGINE...]
+//   response_engines MATRIX CAUSE EFFECT T [WORK] [ENGINE...]   (WORK: millions of Z3 resource units per engine)
 // Environment: SEARCH=1 the path's figure as cemv response searches it (each
 // probe within SECONDS); SHOW_PROPERTY=1 the probe's property text (=2: its member
 // lemmas, and on stderr the bound assuming them); PROPERTY=FILE that
@@ -57,11 +57,19 @@ int main(int argc, char** argv) {
   }
   const int effect = std::atoi(argv[3]);
   const long long t = std::atoll(argv[4]);
-  const int seconds = argc > 5 ? std::atoi(argv[5]) : 30;
-  std::vector<std::string> engines;
-  for (int i = 6; i < argc; ++i) engines.emplace_back(argv[i]);
+  const checker::Work work = static_cast<checker::Work>((argc > 5 ? std::atof(argv[5]) : 30.0) * checker::kMega);
+  std::vector<checker::Method> engines;
+  for (int i = 6; i < argc; ++i) {
+    auto e = checker::method_from_string(argv[i]);
+    if (!e) {
+      std::cerr << "unknown engine " << argv[i] << std::endl;
+      return 2;
+    }
+    engines.push_back(*e);
+  }
   if (engines.empty())
-    engines = {"invariants+induction", "k-induction", "pdr", "accelerated-bmc", "bmc"};
+    engines = {checker::Method::InvariantsInduction, checker::Method::KInduction, checker::Method::Pdr,
+               checker::Method::AcceleratedBmc, checker::Method::Bmc};
   if (std::getenv("SHOW_PATHS")) {
     auto paths = response::response_paths(m, {});
     std::size_t chains = 0;
@@ -117,7 +125,7 @@ int main(int argc, char** argv) {
   }
   if (std::getenv("SEARCH")) {  // the whole search of the path's figure, as cemv response runs it
     response::SearchOptions o;
-    o.timeout_s = seconds;
+    o.work = work;
     if (const char* out = std::getenv("OUT")) o.out_dir = out;
     const auto start = std::chrono::steady_clock::now();
     response::Figure f = response::least_response(m, path, mode, o);
@@ -151,13 +159,12 @@ int main(int argc, char** argv) {
     auto file = properties::parse_properties(
         response::response_property_text(m, path, mode, t, "probe"), m, "probe");
     checker::CheckOptions o;
-    o.property_timeout_s = seconds;
+    o.budgets.engine = work;
     o.support = false;
-    o.engines = {"invariants+induction", "k-induction", "bmc"};
-    o.engines_when_wide = {"pdr"};
+    o.engines = {checker::Method::InvariantsInduction, checker::Method::KInduction, checker::Method::Bmc};
+    o.engines_when_wide = {checker::Method::Pdr};
     // Engines named on the command line: those, in order, on any cone.
     if (argc > 6) o.engines = o.engines_when_wide = engines;
-    o.engines_in_order = true;
     o.localize_to = path.elements;
     if (const char* out = std::getenv("OUT")) o.out_dir = out;
     o.directed_runs = response::demand_runs(m, path, mode, t);
@@ -208,8 +215,8 @@ int main(int argc, char** argv) {
       }
       if (std::getenv("SHOW_HOUDINI") && engine == engines.front()) {
         auto cands = checker::mine_candidates(problem.problem);
-        auto kept = checker::houdini(problem.problem, cands,
-                                     checker::Limits::within(std::chrono::seconds(seconds)));
+        checker::WorkMeter meter(problem.problem.ts->ctx(), work);
+        auto kept = checker::houdini(problem.problem, cands, checker::Limits{}, meter);
         std::cout << "  mined " << cands.size() << ", inductive " << kept.size() << std::endl;
         for (const auto& c : cands) {
           bool k = false;
@@ -220,11 +227,12 @@ int main(int argc, char** argv) {
       auto prover = checker::make_prover(engine);
       auto start = std::chrono::steady_clock::now();
       auto r = prover->prove(problem.problem,
-                             checker::Limits::within(std::chrono::seconds(seconds),
-                                                     std::getenv("MAX_DEPTH") ? std::atoi(std::getenv("MAX_DEPTH"))
-                                                                              : static_cast<int>(bound + 2)));
+                             checker::Limits{}.with_work(work).with_depth(std::getenv("MAX_DEPTH")
+                                                                             ? std::atoi(std::getenv("MAX_DEPTH"))
+                                                                             : static_cast<int>(bound + 2)));
       double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      std::cout << "T=" << bound << " " << engine << ": " << checker::to_string(r.verdict) << " " << r.reason
+      std::cout << "T=" << bound << " " << checker::to_string(engine) << ": " << checker::to_string(r.verdict) << " "
+                << r.reason_text()
                 << " k=" << r.k << " " << s << " s (state variables " << red.state_vars_before << " -> "
                 << red.state_vars_after << ", inputs " << red.inputs_before << " -> " << red.inputs_after
                 << (red.floats_as_integers ? ", floats as integers" : "") << ")" << std::endl;

@@ -1,26 +1,65 @@
-// The checker's one function (checker/check.hpp): the properties spread over
-// worker threads, each decided by PropertyChecker (property_checker.cpp).
+// The checker's one function (checker/check.hpp): three passes of the run's
+// work queue over the properties (checker/property_checker.hpp): decide,
+// vacuity, support. The vacuity pass asks the runtime traces of the first
+// pass, all of them and in property order, so that no answer depends on which
+// worker finished first.
 #include "checker/check.hpp"
 
 #include <algorithm>
-#include <atomic>
-#include <chrono>
+#include <memory>
 #include <mutex>
-#include <thread>
+#include <optional>
 
 #include "checker/property_checker.hpp"
+#include "checker/work_queue.hpp"
 #include "formats/matrix_json.hpp"
 
 namespace cemv::checker {
 
+namespace {
+
+Clock::duration seconds(double s) {
+  return std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(s));
+}
+
+// What is left of a property's --timeout when one of its passes starts (the
+// passes share it).
+struct PropertyClock {
+  double limit_s = 0.0;
+  double used_s = 0.0;
+  Limits limits(const CancelToken& cancel) const {
+    Limits l;
+    l.cancel = &cancel;
+    if (limit_s > 0) l.deadline = Clock::now() + seconds(std::max(0.0, limit_s - used_s));
+    return l;
+  }
+};
+
+// The result of a property that the run did not get to (the cancel token
+// ended it first).
+PropertyResult not_decided(const properties::PropertyFile& f, const properties::Property& p) {
+  PropertyResult r;
+  r.name = p.name;
+  r.description = p.description;
+  r.kind = properties::to_string(p.kind);
+  r.line = p.loc.line;
+  r.column = p.loc.column;
+  r.file = f.file_name;
+  r.notes = p.notes;
+  r.verdict = PropertyVerdict::Unknown;
+  r.unknown = UnknownReason::TimeLimit;
+  r.reason = to_string(r.unknown);
+  return r;
+}
+
+}  // namespace
+
 CheckResult check_properties(const model::Matrix& m, const std::vector<properties::PropertyFile>& files,
                              const CheckOptions& options) {
-  using Clock = std::chrono::steady_clock;
-  const auto start = Clock::now();
-  const auto total_deadline =
-      options.total_timeout_s > 0
-          ? start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(options.total_timeout_s))
-          : Clock::time_point::max();
+  std::optional<CancelToken> own;
+  if (!options.cancel)
+    own.emplace(options.total_timeout_s > 0 ? Clock::now() + seconds(options.total_timeout_s) : Clock::time_point::max());
+  CancelToken& cancel = options.cancel ? *options.cancel : *own;
 
   CheckResult result;
   result.matrix_name = m.name;
@@ -31,51 +70,88 @@ CheckResult check_properties(const model::Matrix& m, const std::vector<propertie
     result.shard = std::to_string(options.shard_index) + "/" + std::to_string(options.shard_count);
   for (const auto& f : files) result.property_files.push_back(f.file_name);
 
-  struct Job { const properties::PropertyFile* file; const properties::Property* property; };
+  struct Job {
+    const properties::PropertyFile* file;
+    const properties::Property* property;
+    std::unique_ptr<PropertyChecker> checker;
+    std::optional<PropertyResult> result;
+    PropertyClock clock;
+    bool vacuity_settled = false;
+    bool done = false;  // every pass it needs has run
+  };
   std::vector<Job> jobs;
   std::size_t index = 0;
   for (const auto& f : files)
     for (const auto& p : f.properties)
-      if (in_shard(index++, options.shard_index, options.shard_count)) jobs.push_back({&f, &p});
+      if (in_shard(index++, options.shard_index, options.shard_count))
+        jobs.push_back({&f, &p, nullptr, std::nullopt, {options.property_timeout_s, 0.0}});
 
-  result.properties.resize(jobs.size());
-  WitnessPool witnesses;
-  std::atomic<std::size_t> next{0};
   std::mutex report_mutex;
-  std::exception_ptr failure;
-  auto worker = [&] {
-    for (;;) {
-      std::size_t i = next++;
-      if (i >= jobs.size()) return;
-      try {
-        if (options.on_start) {
-          std::lock_guard<std::mutex> lock(report_mutex);
-          options.on_start(jobs[i].property->name);
-        }
-        auto deadline = total_deadline;
-        if (options.property_timeout_s > 0)
-          deadline = std::min(deadline, Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                                                          std::chrono::duration<double>(options.property_timeout_s)));
-        PropertyChecker pc(m, *jobs[i].file, *jobs[i].property, options, deadline, &witnesses);
-        PropertyResult r = pc.run();
-        std::lock_guard<std::mutex> lock(report_mutex);
-        result.properties[i] = std::move(r);
-        if (options.on_result) options.on_result(result.properties[i]);
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(report_mutex);
-        if (!failure) failure = std::current_exception();
-        next = jobs.size();
-        return;
-      }
-    }
+  auto report = [&](Job& j) {
+    j.done = true;
+    if (!options.on_result) return;
+    std::lock_guard<std::mutex> lock(report_mutex);
+    options.on_result(*j.result);
   };
-  const int threads = std::max(1, std::min<int>(options.jobs, static_cast<int>(jobs.size())));
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
-  if (failure) std::rethrow_exception(failure);
-  result.interrupted = total_deadline != Clock::time_point::max() && Clock::now() >= total_deadline;
+  WorkQueue queue(options.jobs, cancel);
+
+  // 1. Decide.
+  queue.run(jobs.size(), [&](std::size_t i) {
+    Job& j = jobs[i];
+    if (options.on_start) {
+      std::lock_guard<std::mutex> lock(report_mutex);
+      options.on_start(j.property->name);
+    }
+    j.checker = std::make_unique<PropertyChecker>(m, *j.file, *j.property, options);
+    j.result = j.checker->decide(j.clock.limits(cancel));
+    j.clock.used_s += j.result->seconds;
+    if (!j.checker->needs_vacuity(*j.result) && !j.checker->needs_support(*j.result)) report(j);
+  });
+
+  // 2. Vacuity, answered first from every run of the first pass.
+  WitnessPool known;
+  for (auto& j : jobs)
+    if (j.checker)
+      for (auto& t : j.checker->take_runs()) known.add(std::move(t));
+  std::vector<Job*> open;
+  for (auto& j : jobs)
+    if (j.result && !j.done) open.push_back(&j);
+  queue.run(open.size(), [&](std::size_t i) {
+    Job& j = *open[i];
+    const double before = j.result->seconds;
+    j.checker->settle_vacuity(*j.result, known, j.clock.limits(cancel));
+    j.vacuity_settled = true;
+    j.clock.used_s += j.result->seconds - before;
+    if (!j.checker->needs_support(*j.result)) report(j);
+  });
+
+  // 3. Support.
+  std::vector<Job*> proofs;
+  for (auto* j : open)
+    if (!j->done && j->checker->needs_support(*j->result)) proofs.push_back(j);
+  queue.run(proofs.size(), [&](std::size_t i) {
+    Job& j = *proofs[i];
+    j.checker->find_support(*j.result, j.clock.limits(cancel));
+    report(j);
+  });
+
+  for (auto& j : jobs) {
+    // A proof whose later passes the cancel token cut short keeps its
+    // verdict, with notes saying what was not done; a property never
+    // decided is unknown.
+    if (j.result && !j.done) {
+      if (!j.vacuity_settled && j.checker->needs_vacuity(*j.result))
+        j.result->notes.push_back("vacuity not decided (time limit)");
+      else if (j.checker->needs_support(*j.result))
+        j.result->notes.push_back("support not computed (time limit)");
+    }
+    result.properties.push_back(j.result ? std::move(*j.result) : not_decided(*j.file, *j.property));
+    if (!j.done && j.result) {
+      std::lock_guard<std::mutex> lock(report_mutex);
+      if (options.on_result) options.on_result(result.properties.back());
+    }
+  }
+  result.interrupted = cancel.cancelled();
   if (options.standard) result.unsupported = unsupported_elements(m, result.properties);
   return result;
 }

@@ -3,7 +3,9 @@
 // it (docs/checker.md):
 //   1. encode the property's cone of influence and compile its monitor;
 //   2. decide vacuity (assumptions satisfiable, antecedent reachable);
-//   3. run the engine portfolio (BMC, k-induction, PDR, relational invariants);
+//   3. run the engine portfolio (k-induction, relational invariants, BMC, PDR,
+//      the accelerated unrolling), one engine after another, each within a
+//      budget of work, so that the answer is the same on every machine;
 //   4. re-check the answer: a counterexample is replayed on the reference
 //      runtime and judged by the concrete property evaluator; an invariant or
 //      induction step is re-proved by a fresh solver;
@@ -16,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include "checker/limits.hpp"
+#include "checker/names.hpp"
 #include "checker/result.hpp"
 #include "encoder/encode.hpp"
 #include "model/matrix.hpp"
@@ -24,33 +28,40 @@
 
 namespace cemv::checker {
 
+// Budgets of work (checker/limits.hpp): what each step of a property may
+// spend. The same budgets give the same answers on every machine.
+struct CheckBudgets {
+  Work engine = 20 * kMega;   // each engine of a decision (PDR and the accelerated unrolling twice)
+  Work quick = 2 * kMega;     // the quick k-induction before the engines
+  Work shrink = 10 * kMega;   // making a counterexample readable
+  Work vacuity = 4 * kMega;   // each engine of a vacuity question
+  Work support = 2 * kMega;   // each engine of a support trial
+};
+
 struct CheckOptions {
-  double property_timeout_s = 0.0;  // per property wall clock; 0 = none
-  double total_timeout_s = 0.0;     // whole run; 0 = none
-  int jobs = 1;                     // worker threads over properties
+  double property_timeout_s = 0.0;  // --timeout: wall clock per property; 0 = none
+  double total_timeout_s = 0.0;     // --total-timeout: the whole run (when `cancel` is not given); 0 = none
+  // The run's cancel token (checker/work_queue.hpp), for a caller whose run
+  // is more than this check; its deadline bounds the whole run.
+  CancelToken* cancel = nullptr;
+  int jobs = 1;                     // workers over the properties
   int shard_index = 1;              // --shard i/n: 1-based i
   int shard_count = 1;
   std::string out_dir;              // counterexample scenarios go here ("" = nowhere)
   bool support = true;              // compute the support of proofs
   bool standard = false;            // the properties are the standard set
-  // The engines that decide each property (checker/engines/portfolio.hpp's
-  // names; empty = the portfolio's default set). A caller that knows which
-  // answer to expect (cemv response: a proof of T, a counterexample to T - 1)
-  // leaves out the engines that cannot give it; an Unknown then means "not
-  // with these engines", and the caller asks again with the default set.
-  // Vacuity and support questions always use the default set.
-  std::vector<std::string> engines;
-  // With `engines` given: ask them one after another in that order, in the
-  // property's thread, the first answer final (PortfolioOptions::in_order),
-  // instead of racing them under the portfolio's preference rules.
-  bool engines_in_order = false;
-  // The engines asked in order, instead, on a problem wider than 64 state
-  // variables after the reduction, whatever `engines` and engines_in_order
-  // say (empty: those apply there too; PortfolioOptions::wide_engines).
-  std::vector<std::string> engines_when_wide;
-  // Race engines_when_wide instead of asking them in order
-  // (PortfolioOptions::race_wide).
-  bool race_when_wide = false;
+  CheckBudgets budgets;
+  // The engines that decide each property, in order (empty = the
+  // portfolio's default order). A caller that knows which answer to expect
+  // (cemv response: a proof of T, a counterexample to T - 1) leaves out the
+  // engines that cannot give it; an Unknown then means "not with these
+  // engines", and the caller asks again with the default order. Vacuity and
+  // support questions always use the default order.
+  std::vector<Method> engines;
+  // The engines asked instead on a problem wider than 64 state variables
+  // after the reduction (empty: `engines` apply there too;
+  // PortfolioOptions::wide_engines).
+  std::vector<Method> engines_when_wide;
   // Matrix elements whose state a localization keeps on a wide problem
   // before its engines: the state of every other element is made free
   // (PortfolioOptions::localize_keep, checker/localize.hpp). Empty: none.

@@ -20,7 +20,6 @@ namespace cemv::checker {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
 using model::Node;
 
 // How many cycles deep BMC looks for a difference before the random runs:
@@ -31,14 +30,29 @@ class Decider {
  public:
   Decider(const model::Matrix& a, const model::Matrix& b, const ObservableGroup& g, const EquivalenceOptions& o)
       : a_(a), b_(b), g_(g), o_(o) {
-    deadline_ = std::min(o.deadline, Clock::now() + o.timeout);
+    limits_.cancel = o.cancel;
+    if (o.timeout_s > 0)
+      limits_.deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(o.timeout_s));
   }
 
   GroupEquivalence run() {
     const auto start = Clock::now();
     GroupEquivalence out;
     out.group = g_.name;
-    decide(out);
+    try {
+      decide(out);
+    } catch (const Interrupted&) {
+      out = GroupEquivalence{};
+      out.group = g_.name;
+    }
+    if (limits_.interrupted() && out.verdict != EquivalenceVerdict::Equivalent &&
+        out.verdict != EquivalenceVerdict::Differs)
+      out.unknown = UnknownReason::TimeLimit;
+    if (out.verdict == EquivalenceVerdict::Unknown && out.unknown == UnknownReason::TimeLimit) {
+      out.method.clear();
+      out.reason = to_string(UnknownReason::TimeLimit);
+      out.distinction.reset();
+    }
     out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
     return out;
   }
@@ -52,8 +66,8 @@ class Decider {
       out.method = "identical cone";
       return;
     }
-    const EquivalenceQuestion q{a_, b_, g_.name, keys_, roots_in(a_, b_, group_roots), roots_in(b_, a_, group_roots),
-                                deadline_, o_.timeout};
+    const EquivalenceQuestion q{a_,      b_,       g_.name, keys_, roots_in(a_, b_, group_roots), roots_in(b_, a_, group_roots),
+                                limits_, o_.work, o_.random_cycles};
     if (o_.identical_cone_shortcut && !q.ra.empty() && q.ra == q.rb &&
         cone_configuration(a_, q.ra) == cone_configuration(b_, q.rb)) {
       out.verdict = EquivalenceVerdict::Equivalent;
@@ -86,14 +100,13 @@ class Decider {
       // as the search). Contexts are borrowed from the pool: tearing down a
       // context that held the product of two wide cones cost more than
       // building and solving it (the benchmark's changed effect: 1.7 s of 4).
-      Limits probe;
-      probe.deadline = std::min(deadline_, Clock::now() + o_.timeout / 6);
-      probe.max_depth = kShortestCheckDepth - 1;
+      const Limits probe = limits_.with_work(o_.work / 3).with_depth(kShortestCheckDepth - 1);
       PooledContext ctx;
       const OwnedProblem op = make(ctx);
       r = Bmc().prove(op.problem, probe);
+      stop_if_interrupted(limits_);
       if (r.verdict == Verdict::Falsified) {
-        out.method = r.method;
+        out.method = r.method_text();
         out.k = r.k;
         if (replay_product_run(q, op, r.cex, out, why)) return true;
         return whole_product(q, out, why);
@@ -107,33 +120,31 @@ class Decider {
     // runs do: tank-overfill's soft bypass at 3 s, 1 s CPU with the runs
     // alone, 29 s with BMC to depth 30).
     if (RandomFalsifier(q).find(out)) {
-      if (r.verdict == Verdict::Unknown && r.reason != "bound reached")
-        out.reason = "a shorter difference is not ruled out (BMC: " + r.reason + ")";
+      if (r.verdict == Verdict::Unknown && r.reason != UnknownReason::BoundReached)
+        out.reason = "a shorter difference is not ruled out (BMC: " + r.reason_text() + ")";
       return true;
     }
     // The relational engine next: where the two copies are built alike,
     // a.x = b.x is inductive and proves the group in a few solver calls.
     // Its proof is re-checked with the real float semantics in a fresh
     // context (an InternalError if it fails), like every portfolio answer.
-    // At most a third of the time: Houdini on a product whose copies do
-    // differ weakens the claims one by one to no proof, and BMC in the
-    // portfolio needs the rest.
-    Limits limits;
-    limits.deadline = std::min(deadline_, Clock::now() + o_.timeout / 3);
+    // A third of an engine's budget: Houdini on a product whose copies do
+    // differ weakens the claims one by one to no proof, and the portfolio
+    // after it needs the rest.
     {
       PooledContext ctx;
       const OwnedProblem op = make(ctx);
-      r = make_relational_prover()->prove(op.problem, limits);
+      r = make_relational_prover()->prove(op.problem, limits_.with_work(o_.work / 3));
     }
+    stop_if_interrupted(limits_);
     if (r.verdict == Verdict::Proved) {
-      check::recheck(make, r);
+      check::recheck(make, r, &limits_);
       out.verdict = EquivalenceVerdict::Equivalent;
-      out.method = r.method;
+      out.method = r.method_text();
       return true;
     }
-    limits.deadline = deadline_;
-    r = Portfolio(make).run(limits);
-    out.method = r.method;
+    r = Portfolio(make, portfolio_options()).run(limits_);
+    out.method = r.method_text();
     out.k = r.k;
     if (r.verdict == Verdict::Proved) {
       out.verdict = EquivalenceVerdict::Equivalent;
@@ -141,7 +152,8 @@ class Decider {
     }
     if (r.verdict == Verdict::Unknown) {
       out.verdict = EquivalenceVerdict::Unknown;
-      out.reason = r.reason;
+      out.unknown = r.reason;
+      out.reason = r.reason_text();
       return true;
     }
     if (replay_product_run(q, r.cex, out, why)) return true;
@@ -153,11 +165,10 @@ class Decider {
   // filled), else an InternalError.
   bool whole_product(const EquivalenceQuestion& sliced, GroupEquivalence& out, const std::string& why) {
     if (!sliced.ra.empty() || !sliced.rb.empty()) {
-      const EquivalenceQuestion q{a_, b_, g_.name, keys_, {}, {}, deadline_, o_.timeout};
-      Limits limits;
-      limits.deadline = deadline_;
-      const ProverResult r = Portfolio(product_factory(q)).run(limits);
-      out.method = r.method;
+      const EquivalenceQuestion q{a_, b_, g_.name, keys_, {}, {}, limits_, o_.work, o_.random_cycles};
+      const ProverResult r = Portfolio(product_factory(q), portfolio_options()).run(limits_);
+      stop_if_interrupted(limits_);
+      out.method = r.method_text();
       out.k = r.k;
       std::string whole_why;
       if (r.verdict == Verdict::Falsified && replay_product_run(q, r.cex, out, whole_why)) return true;
@@ -244,8 +255,14 @@ class Decider {
   const model::Matrix& a_;
   const model::Matrix& b_;
   const ObservableGroup& g_;
+  PortfolioOptions portfolio_options() const {
+    PortfolioOptions p;
+    p.engine_work = o_.work;
+    return p;
+  }
+
   const EquivalenceOptions& o_;
-  Clock::time_point deadline_;
+  Limits limits_;
   std::vector<KeyInfo> keys_;
 };
 

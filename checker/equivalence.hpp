@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include "checker/limits.hpp"
+#include "checker/names.hpp"
 #include "checker/result.hpp"
 #include "model/matrix.hpp"
 #include "model/node.hpp"
@@ -64,15 +66,22 @@ struct GroupEquivalence {
   // for term), or "interface" (keys only one matrix has).
   std::string method;
   int k = 0;                // induction depth of a proof
+  UnknownReason unknown = UnknownReason::None;  // Unknown: why (its words in `reason`)
   std::string reason;       // Unknown: why; Differs by interface: which keys
   std::optional<Distinction> distinction;
   double seconds = 0.0;
 };
 
 struct EquivalenceOptions {
-  std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
-  // Per group, on top of the deadline.
-  std::chrono::milliseconds timeout{60000};
+  // Each engine's budget of work (the portfolio's; a third of it for the
+  // first BMC and for relational induction), and the random runs' budget of
+  // simulated cycles: the same budgets give the same answer everywhere.
+  Work work = 20 * kMega;
+  std::size_t random_cycles = 1500000;
+  // The user's wall clock (--timeout per group) and the run's cancel token:
+  // they only interrupt, an interrupted group is Unknown ("time limit").
+  double timeout_s = 0.0;
+  const CancelToken* cancel = nullptr;
   bool identical_cone_shortcut = true;
 };
 

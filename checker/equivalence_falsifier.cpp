@@ -11,7 +11,6 @@
 
 namespace cemv::checker {
 
-using Clock = std::chrono::steady_clock;
 using model::Node;
 
 std::optional<int> RandomFalsifier::find(GroupEquivalence& out) const {
@@ -84,12 +83,14 @@ std::optional<int> RandomFalsifier::find(GroupEquivalence& out) const {
   };
   constexpr int kRuns = 300;
   constexpr std::size_t kSegments = 10;
-  // At most a third of the group's time: a proof still gets the rest.
-  const Clock::time_point stop = std::min(q_.deadline, Clock::now() + q_.timeout / 3);
-  for (int r = 0; r < kRuns && Clock::now() < stop; ++r) {
+  // A budget of simulated cycles, not of time: the same runs everywhere.
+  std::size_t simulated = 0;
+  for (int r = 0; r < kRuns && simulated < q_.random_cycles; ++r) {
+    if (q_.limits.interrupted()) throw Interrupted{};
     // Every sixteenth run may hold an input for hours of cycles (a soft
     // bypass timeout of 8 h moved by a second); the others stay short.
     Run run = gen.next(kSegments, r % 16 == 15 ? 400000 : 5000);
+    simulated += run_cycles(run);
     if (differs(run) < 0) continue;
     run = minimise_run(std::move(run), differs);
     const long c = differs(run);

@@ -202,9 +202,8 @@ Distinction make_distinction(const KeyInfo& k, std::size_t cycle, ConcreteTrace 
 bool replay_product_run(const EquivalenceQuestion& q, const OwnedProblem& op, const Trace& cex,
                         GroupEquivalence& out, std::string& why) {
   const auto& p = *std::static_pointer_cast<encoder::Product>(op.owner);
-  Limits limits;
-  limits.deadline = std::min(q.deadline, std::chrono::steady_clock::now() + std::chrono::seconds(10));
-  const Trace readable = shrink_trace(op.problem, cex, plant_at_rest({{p.a.get(), &q.a}, {p.b.get(), &q.b}}), limits);
+  const Trace readable =
+      shrink_trace(op.problem, cex, plant_at_rest({{p.a.get(), &q.a}, {p.b.get(), &q.b}}), q.limits.with_work(q.work / 2));
   std::vector<model::CycleInput> in_a = product_inputs(readable, *p.a, *p.b, q.a);
   std::vector<model::CycleInput> in_b = product_inputs(readable, *p.b, *p.a, q.b);
   ConcreteTrace ta = run_on_runtime(q.a, in_a), tb = run_on_runtime(q.b, in_b);

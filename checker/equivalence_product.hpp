@@ -28,8 +28,9 @@ struct EquivalenceQuestion {
   std::string group;                  // its name, for messages
   std::vector<KeyInfo> keys;
   std::vector<model::Node> ra, rb;    // the roots encoded in each (empty: whole matrix)
-  std::chrono::steady_clock::time_point deadline;
-  std::chrono::milliseconds timeout;  // the group's, for shares of it
+  Limits limits;                      // the group's wall clock and cancel token
+  Work work = 0;                      // each engine's budget
+  std::size_t random_cycles = 0;      // the random runs' budget of simulated cycles
   std::vector<std::string> key_names() const;
 };
 

@@ -12,6 +12,7 @@
 #include "checker/counterexample.hpp"
 #include "checker/engines/bmc.hpp"
 #include "checker/engines/portfolio.hpp"
+#include "checker/engines/solving.hpp"
 #include "checker/property_problem.hpp"
 #include "checker/replay.hpp"
 #include "checker/support.hpp"
@@ -31,16 +32,6 @@ constexpr int kRandomWitnessRuns = 8;
 
 using properties::Expr;
 using properties::PropertyKind;
-
-const char* kind_text(PropertyKind k) {
-  switch (k) {
-    case PropertyKind::Invariant: return "invariant";
-    case PropertyKind::Never: return "never";
-    case PropertyKind::Reachable: return "reachable";
-    case PropertyKind::Response: return "response";
-  }
-  return "invariant";
-}
 
 // The observables a property reads, in first-use order: what its
 // counterexample's scenario expects and its timing table shows.
@@ -166,10 +157,8 @@ bool remap_inputs(properties::PropertyFile& f, properties::Property& p, const mo
 }  // namespace
 
 PropertyChecker::PropertyChecker(const model::Matrix& m, const properties::PropertyFile& file,
-                                 const properties::Property& p, const CheckOptions& options,
-                                 Clock::time_point deadline, WitnessPool* witnesses)
-    : m_(m), file_(file), p_(p), options_(options), deadline_(deadline),
-      roots_(properties::property_roots(p, file.assumptions, m)), witnesses_(witnesses) {
+                                 const properties::Property& p, const CheckOptions& options)
+    : m_(m), file_(file), p_(p), options_(options), roots_(properties::property_roots(p, file.assumptions, m)) {
   // Whether the monitor has an antecedent (a trigger, the left side of an
   // implication) is the monitor's to say: ask it once, in a scratch context.
   PooledContext ctx;
@@ -196,38 +185,33 @@ ProblemFactory PropertyChecker::factory(const model::Matrix& m, Goal goal, bool 
   return property_problem(m, file_, p_, o);
 }
 
-ProverResult PropertyChecker::decide(const model::Matrix& m, Goal goal, bool sliced,
-                                     Clock::time_point deadline) const {
-  Limits limits;
-  limits.deadline = deadline;
+ProverResult PropertyChecker::ask(const model::Matrix& m, Goal goal, bool sliced, const Limits& limits) const {
+  const CheckBudgets& b = options_.budgets;
   if (goal == Goal::Assumptions) {
     // One cycle decides it: a run either starts with the assumptions holding
     // or there is none. Plain BMC to depth 0.
     PooledContext ctx;
     OwnedProblem op = factory(m, goal, sliced)(ctx);
-    limits.max_depth = 0;
-    return Bmc{}.prove(op.problem, limits);
+    return Bmc{}.prove(op.problem, limits.with_work(b.vacuity).with_depth(0));
   }
   PortfolioOptions o;
   o.preferred = preferred_;
-  if (goal == Goal::Property && !options_.engines.empty()) {
-    o.engines = options_.engines;
-    o.in_order = options_.engines_in_order;
-  }
+  o.quick_work = b.quick;
+  o.engine_work = goal == Goal::Property ? b.engine : b.vacuity;
+  o.shrink_work = b.shrink;
   if (goal == Goal::Property) {
+    if (!options_.engines.empty()) o.engines = options_.engines;
     o.wide_engines = options_.engines_when_wide;
-    o.race_wide = options_.race_when_wide;
     if (options_.max_k >= 0) o.max_k = options_.max_k;
+    if (!options_.localize_to.empty()) o.localize_keep = keep_elements(options_.localize_to);
+    if (options_.shrink_max_cycles >= 0) o.shrink_max_cycles = static_cast<std::size_t>(options_.shrink_max_cycles);
   }
-  if (goal == Goal::Property && !options_.localize_to.empty()) o.localize_keep = keep_elements(options_.localize_to);
-  if (goal == Goal::Property && options_.shrink_max_cycles >= 0)
-    o.shrink_max_cycles = static_cast<std::size_t>(options_.shrink_max_cycles);
   // Only the property's own counterexample is shown; the witness that an
   // antecedent can hold needs no readable form.
-  if (goal != Goal::Property) o.shrink_budget = std::chrono::milliseconds(0);
+  if (goal != Goal::Property) o.shrink_work = 0;
   // An antecedent is expected to be reachable, usually within a few delays,
-  // and so is what a cover asks for: BMC alone finds that without the
-  // induction engines' set-up.
+  // and so is what a cover asks for: BMC finds that before the induction
+  // engines' set-up.
   if (goal == Goal::Antecedent || (goal == Goal::Property && p_.kind == PropertyKind::Reachable))
     o.quick_bmc_depth = o.bmc_depth;
   return Portfolio(factory(m, goal, sliced), o).run(limits);
@@ -241,8 +225,8 @@ bool PropertyChecker::confirm_trace(const ProverResult& r, bool sliced, Property
   // violation allows) and re-checked it on this problem.
   std::vector<model::CycleInput> inputs = cycle_inputs(r.cex, enc, m_);
   ConcreteTrace runtime_trace = run_on_runtime(m_, inputs);
+  runs_.push_back(as_property_trace(runtime_trace));
   Judgement j = judge(m_, file_, p_, runtime_trace);
-  if (witnesses_) witnesses_->add(as_property_trace(runtime_trace));
   if (!j.violated) {
     out.reason = describe_disagreement(m_, runtime_trace, run_on_encoding(enc, m_, inputs));
     return false;
@@ -255,7 +239,7 @@ bool PropertyChecker::directed_counterexample(PropertyResult& out) const {
   if (p_.kind == PropertyKind::Reachable) return false;
   for (const auto& inputs : options_.directed_runs) {
     ConcreteTrace runtime_trace = run_on_runtime(m_, inputs);
-    if (witnesses_) witnesses_->add(as_property_trace(runtime_trace));
+    runs_.push_back(as_property_trace(runtime_trace));
     Judgement j = judge(m_, file_, p_, runtime_trace);
     if (!j.violated) continue;
     // The runtime and the concrete evaluator found it; the encoding and the
@@ -280,7 +264,7 @@ bool PropertyChecker::directed_counterexample(PropertyResult& out) const {
                           "\n" + describe_disagreement(m_, runtime_trace, run_on_encoding(enc, m_, prefix)));
     }
     report_trace(std::move(runtime_trace), j.cycle, out);
-    out.method = "directed run";
+    out.method = to_string(Method::DirectedRun);
     return true;
   }
   return false;
@@ -312,38 +296,27 @@ void PropertyChecker::report_trace(ConcreteTrace runtime_trace, int violation_cy
   out.trace = std::move(runtime_trace);
 }
 
-void PropertyChecker::keep_witness(const ProverResult& r) const {
-  if (!witnesses_) return;
-  PooledContext ctx;
-  OwnedProblem op = factory(m_, Goal::Antecedent, true)(ctx);
-  const auto& enc = *std::static_pointer_cast<encoder::Encoding>(op.owner);
-  witnesses_->add(as_property_trace(run_on_runtime(m_, cycle_inputs(r.cex, enc, m_))));
-}
-
-PropertyChecker::Vacuity PropertyChecker::vacuity() const {
+PropertyChecker::Vacuity PropertyChecker::vacuity(const WitnessPool& known, const Limits& limits) const {
   Vacuity v;
   // A witness that the antecedent can hold is a run in which the assumptions
   // hold too: most properties need no more than that one question.
-  if (witnesses_ && witnesses_->witnesses(m_, p_, file_.assumptions, has_antecedent_)) return v;
-  if (witnesses_ && witnesses_->search(m_, p_, file_.assumptions, has_antecedent_, cone_space_, kRandomWitnessRuns))
-    return v;
+  if (known.witnesses(m_, p_, file_.assumptions, has_antecedent_)) return v;
+  WitnessPool mine;
+  if (mine.search(m_, p_, file_.assumptions, has_antecedent_, cone_space_, kRandomWitnessRuns)) return v;
   std::optional<ProverResult> t;
   if (has_antecedent_) {
-    t = decide(m_, Goal::Antecedent, true, deadline_);
-    if (t->verdict == Verdict::Falsified) {
-      keep_witness(*t);
-      return v;
-    }
+    t = ask(m_, Goal::Antecedent, true, limits);
+    if (t->verdict == Verdict::Falsified) return v;
   }
   // Plain BMC to depth 0 answers "bound reached" exactly when no first cycle
   // satisfies the assumptions; any other unknown leaves the question open.
-  ProverResult a = decide(m_, Goal::Assumptions, true, deadline_);
-  if (a.verdict == Verdict::Unknown && a.reason == "bound reached") {
+  ProverResult a = ask(m_, Goal::Assumptions, true, limits);
+  if (a.verdict == Verdict::Unknown && a.reason == UnknownReason::BoundReached) {
     v.vacuous = "the assumptions cannot hold in the first cycle";
     return v;
   }
   if (a.verdict != Verdict::Falsified) {
-    v.undecided = "vacuity not decided (" + a.reason + ")";
+    v.undecided = "vacuity not decided (" + a.reason_text() + ")";
     return v;
   }
   if (!t) return v;
@@ -352,11 +325,35 @@ PropertyChecker::Vacuity PropertyChecker::vacuity() const {
   else
     v.undecided = "vacuity not decided: whether the " +
                   std::string(p_.kind == PropertyKind::Response ? "trigger" : "antecedent") +
-                  " can hold (" + t->reason + ")";
+                  " can hold (" + t->reason_text() + ")";
   return v;
 }
 
-void PropertyChecker::find_support(PropertyResult& out) const {
+bool PropertyChecker::needs_vacuity(const PropertyResult& r) const {
+  return options_.vacuity && (r.verdict == PropertyVerdict::Proved || r.verdict == PropertyVerdict::Unreachable);
+}
+
+void PropertyChecker::settle_vacuity(PropertyResult& r, const WitnessPool& known, const Limits& limits) const {
+  if (!needs_vacuity(r)) return;
+  const auto start = Clock::now();
+  Vacuity v = vacuity(known, limits);
+  r.seconds += seconds_since(start);
+  if (v.vacuous) {
+    r.verdict = PropertyVerdict::Vacuous;
+    r.reason = *v.vacuous;
+    r.support.clear();
+    return;
+  }
+  if (v.undecided) r.notes.push_back(*v.undecided);
+}
+
+bool PropertyChecker::needs_support(const PropertyResult& r) const {
+  return options_.support && sliced_ && r.verdict == PropertyVerdict::Proved;
+}
+
+void PropertyChecker::find_support(PropertyResult& out, const Limits& limits) const {
+  if (!needs_support(out)) return;
+  const auto start = Clock::now();
   std::vector<Deletion> candidates = candidate_deletions(m_, roots_);
   const model::InputTable table(m_);
   // The problem of the property on an edited matrix, its input tags found
@@ -368,27 +365,28 @@ void PropertyChecker::find_support(PropertyResult& out) const {
   auto prove = [&](const model::Matrix& trial, bool checked) -> std::optional<ProverResult> {
     auto t = std::make_shared<Trial>(Trial{file_, p_});
     if (!remap_inputs(t->file, t->property, table, model::InputTable(trial))) return std::nullopt;
-    Limits limits;
-    limits.deadline = deadline_;
     ProblemOptions o;
     o.modify_encoding = options_.modify_encoding;
     PortfolioOptions po;
     po.preferred = preferred_;
+    po.quick_work = options_.budgets.quick;
+    po.engine_work = options_.budgets.support;
     // A trial only steers the search: its answer is not reported, so it
     // skips the re-check and the readable counterexample. The support found
     // is proved once more below, checked.
     po.recheck = checked;
-    po.shrink_budget = std::chrono::milliseconds(0);
+    po.shrink_work = 0;
     return Portfolio(property_problem(trial, t->file, t->property, o), po).run(limits);
   };
   auto reprove = [&](const model::Matrix& trial) {
-    if (Clock::now() >= deadline_) return ReproveOutcome::Undecided;
+    if (limits.interrupted()) return ReproveOutcome::Undecided;
     std::optional<ProverResult> r = prove(trial, false);
     if (!r || r->verdict == Verdict::Falsified) return ReproveOutcome::NotProved;
     return r->verdict == Verdict::Proved ? ReproveOutcome::Proved : ReproveOutcome::Undecided;
   };
   model::Matrix reduced = m_;
   out.support = minimal_support(m_, candidates, reprove, out.support_minimal, &reduced);
+  out.seconds += seconds_since(start);
   if (out.support.size() == candidates.size()) return;  // nothing deleted: the proof above stands
   std::optional<ProverResult> r = prove(reduced, true);
   if (r && r->verdict == Verdict::Proved) return;
@@ -401,70 +399,76 @@ void PropertyChecker::find_support(PropertyResult& out) const {
   out.support_minimal = false;
 }
 
-PropertyResult PropertyChecker::run() {
+PropertyResult PropertyChecker::decide(const Limits& limits) {
   PropertyResult out;
   const auto start = Clock::now();
   out.name = p_.name;
   out.description = p_.description;
-  out.kind = kind_text(p_.kind);
+  out.kind = properties::to_string(p_.kind);
   out.line = p_.loc.line;
   out.column = p_.loc.column;
   out.file = file_.file_name;
   out.notes = p_.notes;
-
-  if (directed_counterexample(out)) {
-    out.verdict = PropertyVerdict::Falsified;
-    out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  auto finish = [&](PropertyVerdict v) {
+    out.verdict = v;
+    out.seconds = seconds_since(start);
     return out;
-  }
-  if (options_.directed_runs_only) {
-    out.verdict = PropertyVerdict::Unknown;
-    out.reason = "no directed run violates it";
-    out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-    return out;
-  }
-  ProverResult r = decide(m_, Goal::Property, true, deadline_);
-  bool sliced = true;
-  // The portfolio has re-checked its answer in a fresh context (a proof's
-  // invariant and step re-proved, a trace re-simulated on the encoding): an
-  // engine bug stops there. The runtime replay below catches encoder bugs.
-  if (r.verdict == Verdict::Falsified && !confirm_trace(r, true, out)) {
-    // A slice over-approximates what lies outside the cone (first-out groups,
-    // mutual locks: docs/encoding.md "Slices"), so a slice's trace may not be a
-    // run of the whole matrix. The full encoding is exact: its trace must replay.
-    sliced = false;
-    r = decide(m_, Goal::Property, false, deadline_);
-    if (r.verdict == Verdict::Falsified && !confirm_trace(r, false, out))
-      throw InternalError("the runtime does not reproduce the counterexample to property " + p_.name +
-                          " (" + file_.file_name + ")\n" + out.reason);
-  }
-  out.method = r.method;
-  out.depth = r.verdict == Verdict::Falsified ? out.depth : r.k;
-  switch (r.verdict) {
-    case Verdict::Falsified:
-      out.verdict = p_.kind == PropertyKind::Reachable ? PropertyVerdict::Reachable : PropertyVerdict::Falsified;
-      break;
-    case Verdict::Proved: {
-      out.invariant = r.invariant.text();
-      Vacuity v = options_.vacuity ? vacuity() : Vacuity{};
-      if (v.vacuous) {
-        out.verdict = PropertyVerdict::Vacuous;
-        out.reason = *v.vacuous;
-        break;
-      }
-      if (v.undecided) out.notes.push_back(*v.undecided);
-      out.verdict = p_.kind == PropertyKind::Reachable ? PropertyVerdict::Unreachable : PropertyVerdict::Proved;
-      if (out.verdict == PropertyVerdict::Proved && options_.support && sliced) find_support(out);
-      break;
+  };
+  auto interrupted = [&] {
+    PropertyResult cut = out;
+    cut.verdict = PropertyVerdict::Unknown;
+    cut.unknown = UnknownReason::TimeLimit;
+    cut.reason = to_string(UnknownReason::TimeLimit);
+    cut.method.clear();
+    cut.trace.reset();
+    cut.scenario_file.clear();
+    cut.timing_table.clear();
+    cut.seconds = seconds_since(start);
+    return cut;
+  };
+  try {
+    if (directed_counterexample(out)) return finish(PropertyVerdict::Falsified);
+    if (options_.directed_runs_only) {
+      out.unknown = UnknownReason::NoDirectedRun;
+      out.reason = to_string(out.unknown);
+      return finish(PropertyVerdict::Unknown);
     }
-    case Verdict::Unknown:
-      out.verdict = PropertyVerdict::Unknown;
-      out.reason = r.reason;
-      if (!r.engines.empty()) out.notes.push_back("engines: " + r.engines);
-      break;
+    ProverResult r = ask(m_, Goal::Property, true, limits);
+    sliced_ = true;
+    // The portfolio has re-checked its answer in a fresh context (a proof's
+    // invariant and step re-proved, a trace re-simulated on the encoding): an
+    // engine bug stops there. The runtime replay below catches encoder bugs.
+    if (r.verdict == Verdict::Falsified && !confirm_trace(r, true, out)) {
+      // A slice over-approximates what lies outside the cone (first-out
+      // groups, mutual locks: docs/encoding.md "Slices"), so a slice's trace
+      // may not be a run of the whole matrix. The full encoding is exact:
+      // its trace must replay.
+      sliced_ = false;
+      r = ask(m_, Goal::Property, false, limits);
+      if (r.verdict == Verdict::Falsified && !confirm_trace(r, false, out))
+        throw InternalError("the runtime does not reproduce the counterexample to property " + p_.name + " (" +
+                            file_.file_name + ")\n" + out.reason);
+    }
+    if (limits.interrupted()) return interrupted();
+    out.method = r.method_text();
+    out.depth = r.verdict == Verdict::Falsified ? out.depth : r.k;
+    out.work = r.work;
+    switch (r.verdict) {
+      case Verdict::Falsified:
+        return finish(p_.kind == PropertyKind::Reachable ? PropertyVerdict::Reachable : PropertyVerdict::Falsified);
+      case Verdict::Proved:
+        out.invariant = r.invariant.text();
+        return finish(p_.kind == PropertyKind::Reachable ? PropertyVerdict::Unreachable : PropertyVerdict::Proved);
+      case Verdict::Unknown:
+        out.unknown = r.reason;
+        out.reason = r.reason_text();
+        if (!r.engines.empty()) out.notes.push_back("engines: " + r.engines);
+        return finish(PropertyVerdict::Unknown);
+    }
+  } catch (const Interrupted&) {
+    return interrupted();
   }
-  out.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  return out;
+  return finish(PropertyVerdict::Unknown);
 }
 
 std::vector<SupportElement> unsupported_elements(const model::Matrix& m,

@@ -1,47 +1,63 @@
 // Decides one property and checks the answer before it is reported
-// (docs/checker.md). The steps, in the order run() takes them:
-//   directed runs the caller's candidate runs (CheckOptions::directed_runs),
-//                 on the runtime and then on the encoding;
-//   decide        the engine portfolio on the property's cone of influence;
-//   confirm_trace a counterexample or witness replayed on the reference
-//                 runtime and judged by the concrete evaluator (on failure the
-//                 full, unsliced encoding is tried, then InternalError);
-//   (re-check)    done by the portfolio: the proof's invariant and induction
-//                 step re-proved, a trace re-simulated, in a fresh context;
-//   vacuity       assumptions satisfiable, antecedent reachable: first
-//                 asked of the runtime traces the run has produced, then of
+// (docs/checker.md), in three steps that check_properties runs as three
+// passes over all properties, so that what one property learns from the
+// others (the runtime traces of the first pass) never depends on which worker
+// finished first:
+//   decide        the caller's directed runs (CheckOptions::directed_runs),
+//                 then the engine portfolio on the property's cone of
+//                 influence; a counterexample or witness replayed on the
+//                 reference runtime and judged by the concrete evaluator (on
+//                 failure the full, unsliced encoding is tried, then
+//                 InternalError); the portfolio has re-checked the answer in
+//                 a fresh context;
+//   vacuity       (a proof) assumptions satisfiable, antecedent reachable:
+//                 first asked of the first pass's runtime traces, then of
 //                 seeded random runs of the cone on the runtime
 //                 (checker/witness_pool.hpp), then of the engines;
-//   support       the matrix elements the proof needs.
+//   support       (a proof) the matrix elements it needs.
+// Every step works within budgets of work (CheckOptions::budgets); the
+// wall clock (Limits::deadline, the cancel token) only interrupts: an
+// interrupted decision is Unknown ("time limit"), an interrupted vacuity
+// question or support search leaves the proof with a note saying so.
 #pragma once
 
-#include <chrono>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "checker/check.hpp"
 #include "checker/property_problem.hpp"
 #include "checker/prover.hpp"
-#include "checker/shrink.hpp"
+#include "checker/random_runs.hpp"
 #include "checker/result.hpp"
+#include "checker/shrink.hpp"
 #include "checker/witness_pool.hpp"
-#include "model/graph.hpp"
 #include "properties/ast.hpp"
 
 namespace cemv::checker {
 
 class PropertyChecker {
  public:
-  using Clock = std::chrono::steady_clock;
-  PropertyChecker(const model::Matrix& m, const properties::PropertyFile& file,
-                  const properties::Property& p, const CheckOptions& options, Clock::time_point deadline,
-                  WitnessPool* witnesses = nullptr);
+  PropertyChecker(const model::Matrix& m, const properties::PropertyFile& file, const properties::Property& p,
+                  const CheckOptions& options);
 
-  PropertyResult run();
+  // The verdict before vacuity: Proved and Unreachable are not final yet.
+  PropertyResult decide(const Limits& limits);
+  // For a Proved or Unreachable result of decide(): the question whether it
+  // is vacuous, answered first from `known` (runtime traces of the run),
+  // and the support of a proof.
+  bool needs_vacuity(const PropertyResult& r) const;
+  void settle_vacuity(PropertyResult& r, const WitnessPool& known, const Limits& limits) const;
+  bool needs_support(const PropertyResult& r) const;
+  void find_support(PropertyResult& r, const Limits& limits) const;
+  // The runtime runs decide() made (its directed runs, the replayed
+  // counterexample or witness), as property traces: witnesses of other
+  // properties' antecedents.
+  std::vector<properties::Trace> take_runs() { return std::move(runs_); }
 
  private:
   ProblemFactory factory(const model::Matrix& m, Goal goal, bool sliced) const;
-  ProverResult decide(const model::Matrix& m, Goal goal, bool sliced, Clock::time_point deadline) const;
+  ProverResult ask(const model::Matrix& m, Goal goal, bool sliced, const Limits& limits) const;
   // Replays `r.cex`; fills the trace fields of `out`. False when the runtime
   // does not reproduce it.
   bool confirm_trace(const ProverResult& r, bool sliced, PropertyResult& out) const;
@@ -57,22 +73,18 @@ class PropertyChecker {
     std::optional<std::string> vacuous;
     std::optional<std::string> undecided;
   };
-  Vacuity vacuity() const;
-  // An engine's witness that the antecedent can hold, run on the runtime and
-  // kept for the properties after this one.
-  void keep_witness(const ProverResult& r) const;
-  void find_support(PropertyResult& out) const;
+  Vacuity vacuity(const WitnessPool& known, const Limits& limits) const;
 
   const model::Matrix& m_;
   const properties::PropertyFile& file_;
   const properties::Property& p_;
   const CheckOptions& options_;
-  Clock::time_point deadline_;
   std::vector<model::Node> roots_;
   bool has_antecedent_ = false;
-  PreferredValue preferred_;  // the plant at rest, for readable counterexamples
+  bool sliced_ = true;         // the answer came from the property's cone (else the whole matrix)
+  PreferredValue preferred_;   // the plant at rest, for readable counterexamples
   RunSpace cone_space_;        // the inputs and commands of the cone, for random witnesses
-  WitnessPool* witnesses_;     // runtime traces of this check run (may be null)
+  mutable std::vector<properties::Trace> runs_;
 };
 
 // --standard: the candidate elements of the whole matrix that no proved

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <functional>
+#include <limits>
 #include <vector>
 
 #include "checker/prover.hpp"
@@ -25,6 +26,22 @@ enum class Goal {
 struct ProblemOptions {
   Goal goal = Goal::Property;
   bool sliced = true;  // the property's cone of influence only (docs/encoding.md "Slices")
+  // The roots to slice by instead of the property's own (sliced only; empty:
+  // the property's). A caller that asks many questions of one cone
+  // (testgen's objectives of one element) names it once.
+  std::vector<model::Node> roots;
+  // Analog inputs range over [-analog_range, analog_range]: the finite
+  // single-precision values by default, what a scenario can write
+  // (docs/scenario.md), so every trace can be replayed and handed over as a
+  // file. The test generator asks for what a transmitter delivers.
+  float analog_range = std::numeric_limits<float>::max();
+  // Per InputTable index, the only values an analog input may take (empty:
+  // any in range): the values an engineer sets (testgen/search.hpp).
+  std::vector<std::vector<float>> analog_values;
+  // The initial state is the state these cycles leave, computed by the
+  // encoding's own Evaluator, the monitor included, so that the past-time
+  // operators see them: how a test is extended.
+  std::vector<model::CycleInput> prefix;
   // Applied to every encoding before the monitor is compiled (Pono's modifiers/).
   std::function<void(encoder::Encoding&)> modify_encoding;
 };

@@ -4,16 +4,9 @@
 
 namespace cemv::checker {
 
-bool Limits::over() const {
-  if (cancel && cancel->load()) return true;
-  return std::chrono::steady_clock::now() >= deadline;
-}
-
-Limits Limits::within(std::chrono::milliseconds budget, int max_depth) {
-  Limits l;
-  l.deadline = std::chrono::steady_clock::now() + budget;
-  l.max_depth = max_depth;
-  return l;
+std::string ProverResult::reason_text() const {
+  std::string s = to_string(reason);
+  return detail.empty() ? s : s + ": " + detail;
 }
 
 std::string Value::text() const {

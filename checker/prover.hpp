@@ -5,8 +5,6 @@
 // (checker/check/) and a portfolio can move it between threads.
 #pragma once
 
-#include <atomic>
-#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -17,6 +15,8 @@
 
 #include <z3++.h>
 
+#include "checker/limits.hpp"
+#include "checker/names.hpp"
 #include "encoder/transition_system.hpp"
 
 namespace cemv::checker {
@@ -37,16 +37,6 @@ struct OwnedProblem {
   SafetyProblem problem;
 };
 using ProblemFactory = std::function<OwnedProblem(z3::context&)>;
-
-struct Limits {
-  std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
-  int max_depth = 1000;  // cycles (BMC), k (k-induction), macro steps (accelerated BMC)
-  // Set by a portfolio when another engine has answered.
-  const std::atomic<bool>* cancel = nullptr;
-
-  bool over() const;
-  static Limits within(std::chrono::milliseconds budget, int max_depth = 1000);
-};
 
 // A concrete value of one variable in one cycle.
 struct Value {
@@ -92,22 +82,29 @@ std::string to_string(Verdict v);
 // `simple_path`: the inductive step needs the k+1 states to be distinct.
 struct ProverResult {
   Verdict verdict = Verdict::Unknown;
-  std::string method;  // "bmc", "k-induction", "pdr", "invariants+induction", "accelerated-bmc"
+  Method method = Method::None;
+  bool localized = false;  // found on the localization (checker/localize.hpp), checked on the whole
   int k = 0;
   bool simple_path = false;
   Invariant invariant;
   Trace cex;
-  std::string reason;  // Unknown: "time limit", "bound reached", "memory limit", or the solver's
+  UnknownReason reason = UnknownReason::None;
+  std::string detail;  // SolverGaveUp, CannotRun: the solver's or the evaluator's words
   // Unknown from a portfolio: what each engine answered ("k-induction: bound
   // reached at k = 10; ..."), for a reader who asks why nothing decided.
   std::string engines;
-  double seconds = 0.0;
+  Work work = 0;          // resource units spent (deterministic)
+  double seconds = 0.0;   // wall time (never in a deterministic output)
+
+  std::string method_text() const { return checker::method_text(method, localized); }
+  // The reason as printed: the reason's words, and the detail after a colon.
+  std::string reason_text() const;
 };
 
 class Prover {
  public:
   virtual ~Prover() = default;
-  virtual std::string name() const = 0;
+  virtual Method method() const = 0;
   virtual ProverResult prove(const SafetyProblem& problem, const Limits& limits) = 0;
 };
 

@@ -39,7 +39,7 @@ struct Reduced {
 };
 
 // The problem's parts as the reductions rewrite them.
-struct Work {
+struct Parts {
   struct State {
     std::string name;
     expr var, init, next;
@@ -56,9 +56,9 @@ struct Work {
   expr good;
 };
 
-Work parts_of(const SafetyProblem& p) {
+Parts parts_of(const SafetyProblem& p) {
   const auto& ts = *p.ts;
-  Work w{{}, {}, {}, {}, {}, p.good};
+  Parts w{{}, {}, {}, {}, {}, p.good};
   for (const auto& sv : ts.statevars()) w.states.push_back({sv.name, sv.var, sv.init, sv.next});
   for (const auto& in : ts.inputvars()) {
     w.inputs.push_back(in.var);
@@ -82,7 +82,7 @@ expr bundle(z3::context& c, const char* name, const z3::expr_vector& terms) {
   return c.function(name, domain, c.bool_sort())(terms);
 }
 
-void substitute(Work& w, const z3::expr_vector& from, const z3::expr_vector& to) {
+void substitute(Parts& w, const z3::expr_vector& from, const z3::expr_vector& to) {
   if (from.empty()) return;
   std::vector<expr*> terms;
   for (auto& s : w.states) terms.push_back(&s.init), terms.push_back(&s.next);
@@ -136,7 +136,7 @@ namespace {
 // constants, gives back its initial value: by induction it never changes. The
 // greatest such set is found by dropping the variables that do change until
 // none does (sequential constant propagation).
-void propagate_constants(Work& w, const SafetyProblem& p) {
+void propagate_constants(Parts& w, const SafetyProblem& p) {
   z3::context& c = p.ts->ctx();
   z3::expr_vector from(c), to(c);
   // The inputs by name, once: a name compared per (forced input, input) pair
@@ -175,7 +175,7 @@ void propagate_constants(Work& w, const SafetyProblem& p) {
     }
   }
   z3::expr_vector sf(c), st(c);
-  std::vector<Work::State> kept;
+  std::vector<Parts::State> kept;
   for (std::size_t i = 0; i < w.states.size(); ++i) {
     if (constant[i]) sf.push_back(w.states[i].var), st.push_back(w.states[i].init);
     else kept.push_back(w.states[i]);
@@ -199,7 +199,7 @@ bool hold_at_zero(const std::vector<expr>& terms, z3::context& c) {
   return true;
 }
 
-void cone_of_influence(Work& w, z3::context& c) {
+void cone_of_influence(Parts& w, z3::context& c) {
   std::unordered_map<unsigned, std::size_t> state_of, input_of;
   for (std::size_t i = 0; i < w.states.size(); ++i) state_of[w.states[i].var.id()] = i;
   for (std::size_t i = 0; i < w.inputs.size(); ++i) input_of[w.inputs[i].id()] = i;
@@ -261,7 +261,7 @@ void cone_of_influence(Work& w, z3::context& c) {
     for (const auto& f : dropped_facts) dropped.add(f);
     if (dropped.check() != z3::sat) return;
   }
-  Work out{{}, {}, {}, {}, {}, w.good};
+  Parts out{{}, {}, {}, {}, {}, w.good};
   for (std::size_t i = 0; i < w.states.size(); ++i)
     if (state[i]) out.states.push_back(w.states[i]);
   for (std::size_t i = 0; i < w.inputs.size(); ++i)
@@ -279,7 +279,7 @@ void cone_of_influence(Work& w, z3::context& c) {
 }
 
 // The transition system of what is left, floats as integers or as they are.
-OwnedProblem build(const Work& w, const std::shared_ptr<void>& original, z3::context& c, bool as_integers) {
+OwnedProblem build(const Parts& w, const std::shared_ptr<void>& original, z3::context& c, bool as_integers) {
   auto owner = std::make_shared<Reduced>(Reduced{original, encoder::TransitionSystem(c)});
   encoder::TransitionSystem& r = owner->ts;
   FloatsAsIntegers rewrite(c);
@@ -331,7 +331,7 @@ OwnedProblem build(const Work& w, const std::shared_ptr<void>& original, z3::con
 OwnedProblem reduce(const OwnedProblem& original, Reduction* what) {
   const SafetyProblem& p = original.problem;
   z3::context& c = p.ts->ctx();
-  Work w = parts_of(p);
+  Parts w = parts_of(p);
   propagate_constants(w, p);
   cone_of_influence(w, c);
   bool as_integers = true;

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "checker/names.hpp"
 #include "model/vocabulary.hpp"
 
 namespace cemv::checker {
@@ -69,7 +70,8 @@ struct PropertyResult {
   PropertyVerdict verdict = PropertyVerdict::Unknown;
   std::string method;          // "k-induction", "pdr", "bmc", "invariants+induction", ...
   int depth = 0;               // k of the proof, or length of the trace in cycles
-  std::string reason;          // Unknown: "time limit", "bound reached", ...; Vacuous: why
+  UnknownReason unknown = UnknownReason::None;  // Unknown: why (its words in `reason`)
+  std::string reason;          // Unknown: "time limit", "work limit", ...; Vacuous: why
   std::string invariant;       // the proof's strengthening invariant (SMT-LIB text), if any
   std::vector<std::string> notes;  // e.g. duration rounding
   std::vector<SupportElement> support;  // Proved: the elements the proof needs
@@ -81,6 +83,7 @@ struct PropertyResult {
   std::string vcd_file;                 // the trace as a VCD (under --out; written by the CLI)
   std::string timing_table;             // readable table of the signals that matter
   double seconds = 0.0;                 // wall time (not in deterministic outputs)
+  std::uint64_t work = 0;               // Z3 resource units the decision spent (deterministic)
   std::vector<std::string> matters;     // observable keys the property reads (for tables)
 };
 

@@ -57,7 +57,7 @@ constexpr std::size_t kMaxGrowTries = 150;
 Trace shrink_trace(const SafetyProblem& problem, const Trace& cex, const PreferredValue& preferred,
                    const Limits& limits, std::size_t max_cycles) {
   const std::size_t n = cex.length();
-  if (n == 0 || n > max_cycles || limits.over()) return cex;
+  if (n == 0 || n > max_cycles || limits.interrupted()) return cex;
   const auto& ts = *problem.ts;
   z3::context& ctx = ts.ctx();
   encoder::Unroller u(ts);
@@ -97,12 +97,12 @@ Trace shrink_trace(const SafetyProblem& problem, const Trace& cex, const Preferr
   };
   try {
     Watchdog watchdog(ctx, limits);
+    WorkMeter meter(ctx, limits.work);
     // 1. Shrink: drop the literals of each unsat core until satisfiable.
     std::vector<bool> kept(literals.size(), true);
     std::optional<z3::model> model;
     for (int round = 0; round < 64 && !model; ++round) {
-      set_timeout(s, limits);
-      z3::check_result r = s.check(vector_of(kept));
+      z3::check_result r = check_within(s, meter, vector_of(kept));
       if (r == z3::sat) {
         model = s.get_model();
         break;
@@ -123,8 +123,9 @@ Trace shrink_trace(const SafetyProblem& problem, const Trace& cex, const Preferr
     // containing it cannot either): what is left is a maximal set of inputs
     // at rest, in a number of solver calls that grows with the inputs the
     // violation needs, not with the length of the trace. The tries are
-    // counted, not timed, so the result never depends on the machine's
-    // speed: a long trace keeps what the cheap part gives.
+    // counted and the checks share one budget of work, so the result never
+    // depends on the machine's speed: a long trace keeps what the cheap part
+    // gives.
     std::vector<std::size_t> open;
     for (std::size_t i = 0; i < literals.size(); ++i) {
       if (kept[i]) continue;
@@ -136,8 +137,7 @@ Trace shrink_trace(const SafetyProblem& problem, const Trace& cex, const Preferr
       if (lo >= hi || ++tries > kMaxGrowTries) return;
       std::vector<bool> trial = kept;
       for (std::size_t j = lo; j < hi; ++j) trial[open[j]] = true;
-      set_timeout(s, limits);
-      if (s.check(vector_of(trial)) == z3::sat) {
+      if (check_within(s, meter, vector_of(trial)) == z3::sat) {
         kept = std::move(trial);
         model = s.get_model();
         return;

@@ -31,9 +31,10 @@ using PreferredValue = std::function<std::optional<Value>(const std::string& inp
 PreferredValue plant_at_rest(const std::vector<std::pair<const encoder::Encoding*, const model::Matrix*>>& parts);
 
 // A trace of cex.length() cycles violating `good` in its last cycle, as close
-// to the preferred values as the core-guided search gets; `cex` itself when
-// the search does not finish within the limits or the trace is longer than
-// `max_cycles` (a long accelerated trace is already mostly held inputs).
+// to the preferred values as the core-guided search gets within
+// `limits.work`; `cex` itself when the first satisfiable check does not come
+// within it or the trace is longer than `max_cycles` (a long accelerated
+// trace is already mostly held inputs). Deterministic unless interrupted.
 Trace shrink_trace(const SafetyProblem& problem, const Trace& cex, const PreferredValue& preferred,
                    const Limits& limits, std::size_t max_cycles = 400);
 

@@ -3,21 +3,13 @@
 // (docs/checker.md). Exit 0 all proved/reachable, 1 something falsified,
 // unreachable or vacuous, 2 invalid input, 3 unknown and nothing falsified,
 // 4 internal error.
-#include <atomic>
 #include <charconv>
 #include <chrono>
-#include <condition_variable>
 #include <functional>
 #include <iostream>
-#include <map>
-#include <mutex>
-#include <optional>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <vector>
-
-#include <unistd.h>
 
 #include "checker/check.hpp"
 #include "checker/prover.hpp"
@@ -74,39 +66,14 @@ std::pair<int, int> parse_shard(const std::string& s) {
   return {i, n};
 }
 
-const char* kind_name(properties::PropertyKind k) {
-  switch (k) {
-    case properties::PropertyKind::Invariant: return "invariant";
-    case properties::PropertyKind::Never: return "never";
-    case properties::PropertyKind::Reachable: return "reachable";
-    case properties::PropertyKind::Response: return "response";
-  }
-  return "invariant";
-}
 
-// The properties this run decides, in the checker's order (files as given,
-// then the standard set; shard i of n by position): what a report must list
-// even when the run is cut short.
-std::vector<PropertyResult> planned_properties(const std::vector<properties::PropertyFile>& files,
-                                               int shard_index, int shard_count) {
-  std::vector<PropertyResult> planned;
-  std::size_t index = 0;
+// How many properties this run decides (files as given, then the standard
+// set; shard i of n by position).
+std::size_t planned_count(const std::vector<properties::PropertyFile>& files, int shard_index, int shard_count) {
+  std::size_t n = 0, index = 0;
   for (const auto& f : files)
-    for (const auto& p : f.properties) {
-      if (!checker::in_shard(index++, shard_index, shard_count)) continue;
-      PropertyResult r;
-      r.name = p.name;
-      r.description = p.description;
-      r.kind = kind_name(p.kind);
-      r.file = f.file_name;
-      r.line = p.loc.line;
-      r.column = p.loc.column;
-      r.notes = p.notes;
-      r.verdict = PropertyVerdict::Unknown;
-      r.reason = "time limit";
-      planned.push_back(std::move(r));
-    }
-  return planned;
+    for (std::size_t k = 0; k < f.properties.size(); ++k) n += checker::in_shard(index++, shard_index, shard_count);
+  return n;
 }
 
 std::vector<PropertyVerdict> verdicts_of(const checker::CheckResult& r) {
@@ -186,38 +153,6 @@ void publish(const checker::CheckResult& r, const CheckArgs& a, const std::vecto
   write_output("-", line);
 }
 
-// The hard wall-clock limit of --total-timeout. The checker gets a little less
-// time and normally returns by itself; if it has not returned when the limit
-// is up, this thread writes the result so far (the finished properties, the
-// others unknown with reason "time limit", interrupted) and ends the process.
-// Whoever reports first (the main thread after check() or this thread) is the
-// only one that writes, so an output is never written twice or interleaved.
-class Watchdog {
- public:
-  Watchdog(double seconds, std::function<void()> on_expiry)
-      : on_expiry_(std::move(on_expiry)),
-        thread_([this, seconds] {
-          std::unique_lock<std::mutex> lock(mutex_);
-          if (!cv_.wait_for(lock, std::chrono::duration<double>(seconds), [this] { return cancelled_; }))
-            on_expiry_();
-        }) {}
-  ~Watchdog() {
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      cancelled_ = true;
-    }
-    cv_.notify_all();
-    thread_.join();
-  }
-
- private:
-  std::function<void()> on_expiry_;
-  std::mutex mutex_;
-  std::condition_variable cv_;
-  bool cancelled_ = false;
-  std::thread thread_;
-};
-
 int run_check(const CheckArgs& a) {
   // Arguments and destinations first: a mistake fails in milliseconds.
   const std::vector<Destination> outputs = destinations(a);
@@ -254,49 +189,20 @@ int run_check(const CheckArgs& a) {
   options.shard_count = shard_count;
   options.out_dir = a.out_dir;
   options.standard = a.standard;
+  // --total-timeout cancels through the run's one token: every engine polls
+  // it, the work queue starts nothing after it, and the checker returns with
+  // what it decided; the rest is reported unknown ("time limit").
+  checker::CancelToken cancel(a.total_timeout_s > 0
+                                  ? checker::Clock::now() + std::chrono::duration_cast<checker::Clock::duration>(
+                                                                std::chrono::duration<double>(a.total_timeout_s))
+                                  : checker::Clock::time_point::max());
+  options.cancel = &cancel;
 
-  std::atomic<bool> reporting{false};  // set by whoever writes the report
-  std::mutex finished_mutex;
-  std::map<std::pair<std::string, std::string>, PropertyResult> finished;  // by (file, name)
   // On a terminal (and not --quiet): properties done / total, elapsed, the running ones.
-  Progress progress("cemv check", planned_properties(files, shard_index, shard_count).size(), "properties",
+  Progress progress("cemv check", planned_count(files, shard_index, shard_count), "properties",
                     !a.quiet && Progress::terminal(), std::cerr);
   options.on_start = [&](const std::string& name) { progress.started(name); };
-  options.on_result = [&](const PropertyResult& r) {
-    progress.finished(r.name);
-    std::lock_guard<std::mutex> lock(finished_mutex);
-    finished[{r.file, r.name}] = r;
-  };
-
-  std::optional<Watchdog> watchdog;
-  if (a.total_timeout_s > 0) {
-    double grace = std::min(0.5, a.total_timeout_s / 10);
-    options.total_timeout_s = a.total_timeout_s - grace;
-    watchdog.emplace(a.total_timeout_s, [&, shard_index = shard_index,
-                                         shard_count = shard_count] {
-      if (reporting.exchange(true)) return;  // the main thread is already reporting
-      progress.stop();
-      checker::CheckResult partial = skeleton;
-      partial.interrupted = true;
-      partial.properties = planned_properties(files, shard_index, shard_count);
-      {
-        std::lock_guard<std::mutex> lock(finished_mutex);
-        for (auto& p : partial.properties)
-          if (auto it = finished.find({p.file, p.name}); it != finished.end()) p = it->second;
-      }
-      int code = checker::exit_code(verdicts_of(partial));
-      try {
-        std::cerr << "cemv check: the overall time limit of " << a.total_timeout_s
-                  << " s is up; properties not decided are reported unknown\n";
-        publish(partial, a, outputs);
-      } catch (const ClosedPipe&) {
-      } catch (const std::exception& e) {
-        std::cerr << "error: " << e.what() << "\n";
-        code = 2;
-      }
-      ::_exit(code);  // the checker's threads cannot be stopped from here
-    });
-  }
+  options.on_result = [&](const PropertyResult& r) { progress.finished(r.name); };
 
   checker::CheckResult result;
   try {
@@ -306,16 +212,15 @@ int run_check(const CheckArgs& a) {
     // Inputs were checked above, so anything the checker throws is cemv's
     // fault: a re-check that refuted an answer (InternalError, whose message
     // carries both sides), or a failure of the engines themselves.
-    if (reporting.exchange(true)) for (;;) std::this_thread::sleep_for(std::chrono::hours(1));
     bool refuted = dynamic_cast<const checker::InternalError*>(&e) != nullptr;
     std::cerr << "internal error: " << (refuted ? "" : "the checker failed: ") << e.what()
               << "\n(a bug in cemv: please report it with the matrix and property files)\n";
     return 4;
   }
-  // The watchdog fired while check() was returning: it writes and exits.
-  if (reporting.exchange(true)) for (;;) std::this_thread::sleep_for(std::chrono::hours(1));
-  watchdog.reset();
   progress.stop();
+  if (result.interrupted && !a.quiet)
+    std::cerr << "cemv check: the overall time limit of " << a.total_timeout_s
+              << " s is up; properties not decided are reported unknown\n";
 
   // The checker fills these too; the CLI's values name the files as given and
   // carry the version of this binary.

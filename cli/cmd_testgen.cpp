@@ -29,11 +29,14 @@ struct TestgenArgs {
   std::string out_dir;
   int sif = 0;
   int jobs = 1;
-  double budget_s = 20.0;
-  double proof_s = 3.0;
+  // Budgets of work in millions of Z3 resource units (checker/limits.hpp):
+  // about 0.5 to 1 s each on the reference machine, the same answer on every
+  // machine.
+  double budget = 20.0;
+  double proof_budget = 3.0;
   bool mutation_report = false;
   std::string changed_from;  // OLD: only the tests the change needs
-  double diff_timeout_s = 60.0;
+  double diff_timeout_s = 0.0;
   bool quiet = false;
   bool verbose = false;
 };
@@ -44,8 +47,9 @@ int run_testgen(const TestgenArgs& a) {
   testgen::TestgenOptions o;
   if (a.sif > 0) o.sif = a.sif;
   o.jobs = a.jobs;
-  o.objective_budget_s = a.budget_s;
-  o.proof_budget_s = a.proof_s;
+  if (!(a.budget > 0) || !(a.proof_budget > 0)) throw std::invalid_argument("--budget and --proof-budget must be positive");
+  o.objective_work = static_cast<checker::Work>(a.budget * checker::kMega);
+  o.proof_work = static_cast<checker::Work>(a.proof_budget * checker::kMega);
   if (a.matrix_file != "-") {
     std::error_code ec;
     auto rel = std::filesystem::relative(std::filesystem::absolute(a.matrix_file),
@@ -123,16 +127,24 @@ void add_testgen_commands(CLI::App& app, Context& ctx) {
       ->required();
   cmd->add_option("--sif", a.sif, "only the objectives of SIF group N")->type_name("N");
   cmd->add_option("--jobs", a.jobs, "SIF groups searched in parallel")->capture_default_str();
-  cmd->add_option("--budget", a.budget_s, "search time per objective, seconds")->capture_default_str();
-  cmd->add_option("--proof-budget", a.proof_s, "infeasibility proof time per objective, seconds")
-      ->capture_default_str();
+  cmd->add_option("--budget", a.budget,
+                  "search work per objective, in millions of Z3 resource units (about 0.5-1 s each; "
+                  "the same suite on every machine)")
+      ->capture_default_str()
+      ->type_name("W");
+  cmd->add_option("--proof-budget", a.proof_budget,
+                  "infeasibility proof work per objective, in millions of Z3 resource units")
+      ->capture_default_str()
+      ->type_name("W");
   cmd->add_flag("--mutation-report", a.mutation_report,
                 "also decide, for every single-point mutant, equivalence and detection by the suite");
   cmd->add_option("--changed-from", a.changed_from,
                   "the accepted version OLD: only the tests the change needs, and a change checklist "
                   "(docs/change-acceptance.md)")
       ->type_name("OLD");
-  cmd->add_option("--diff-timeout", a.diff_timeout_s, "with --changed-from: comparison time per effect, seconds")
+  cmd->add_option("--diff-timeout", a.diff_timeout_s,
+                  "with --changed-from: wall-clock limit per effect of the comparison, seconds (0 = none; an "
+                  "effect it cuts short is undecided)")
       ->capture_default_str()
       ->type_name("S");
   cmd->add_flag("-q,--quiet", a.quiet, "print nothing but errors");

@@ -21,7 +21,7 @@ ChangeScope apply_change(const std::string& old_file, const std::string& new_fil
   r.new_signature = formats::signature(new_m);
   r.structure = diff::compare_structure(old_m, new_m);
   diff::SemanticOptions so;
-  if (timeout_s > 0) so.timeout = std::chrono::milliseconds(static_cast<long long>(timeout_s * 1000));
+  so.timeout_s = timeout_s;
   r.behaviour = diff::compare_behaviour(old_m, new_m, r.structure, so);
   const diff::RetestScope scope = diff::retest_scope(r.behaviour);
 

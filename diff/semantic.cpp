@@ -4,6 +4,7 @@
 #include <map>
 #include <optional>
 
+#include "checker/work_queue.hpp"
 #include "checker/prover.hpp"
 #include "checker/replay.hpp"
 #include "model/graph.hpp"
@@ -278,11 +279,18 @@ SemanticDiff compare_behaviour(const model::Matrix& old_m, const model::Matrix& 
   for (const auto& [n, x] : r.effect_ids) rel_to_new[x] = n;
 
   const Cones old_cones(old_m), new_cones(new_m);
+  checker::CancelToken own;
+  checker::CancelToken& cancel = options.cancel ? *options.cancel : own;
   checker::EquivalenceOptions eo;
-  eo.deadline = options.deadline;
-  eo.timeout = options.timeout;
-  // One group per effect of OLD or NEW, in OLD's numbering.
-  for (const auto& g : checker::effect_groups(old_m, rel)) {
+  eo.work = options.work;
+  eo.timeout_s = options.timeout_s;
+  eo.cancel = &cancel;
+  // One group per effect of OLD or NEW, in OLD's numbering, each in its own
+  // slot: the result does not depend on the number of workers.
+  const std::vector<checker::ObservableGroup> groups = checker::effect_groups(old_m, rel);
+  out.effects.resize(groups.size());
+  const std::size_t done = checker::WorkQueue(options.jobs, cancel).run(groups.size(), [&](std::size_t gi) {
+    const checker::ObservableGroup& g = groups[gi];
     const int id = g.roots.front().id;
     EffectBehaviour e;
     e.old_id = old_m.find_effect(id) ? id : 0;
@@ -317,8 +325,9 @@ SemanticDiff compare_behaviour(const model::Matrix& old_m, const model::Matrix& 
           if (e.outputs.back().distinction && out.relabelled)
             confirm_on_new(*e.outputs.back().distinction, rel, new_m, r, og.name);
         }
-    out.effects.push_back(std::move(e));
-  }
+    out.effects[gi] = std::move(e);
+  });
+  if (done < groups.size()) throw checker::Interrupted{};
 
   // The impact set: changed effects, their cones' causes, tags and SIF groups.
   for (const auto& e : out.effects) {

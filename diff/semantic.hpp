@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "checker/equivalence.hpp"
+#include "checker/limits.hpp"
 #include "diff/structural.hpp"
 #include "model/matrix.hpp"
 
@@ -72,8 +73,10 @@ struct RetestScope {
 RetestScope retest_scope(const SemanticDiff& d);
 
 struct SemanticOptions {
-  std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max();
-  std::chrono::milliseconds timeout{60000};  // per effect
+  checker::Work work = 20 * checker::kMega;  // each engine's budget of work per effect
+  double timeout_s = 0.0;                    // --timeout: the user's wall clock per effect (0 = none)
+  int jobs = 1;                              // effects decided in parallel (the run's one work queue)
+  checker::CancelToken* cancel = nullptr;    // the run's (a failure elsewhere, the caller's bound)
 };
 
 // Throws checker::InternalError when a distinguishing run does not replay on

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "checker/work_queue.hpp"
 #include "formats/matrix_json.hpp"
 
 namespace cemv::mutate {
@@ -67,9 +68,14 @@ MutationReport mutation_report(const model::Matrix& m, const testgen::TestSuite&
   r.refused = set.refused.size();
   std::vector<std::pair<std::string, std::string>> texts;
   for (const auto& t : suite.tests) texts.emplace_back(t.file_name, t.scenario_json);
+  checker::CancelToken cancel;
   checker::EquivalenceOptions eo;
-  eo.timeout = options.equivalence_timeout;
-  for (const auto& mu : set.mutants) {
+  eo.work = options.work;
+  eo.timeout_s = options.timeout_s;
+  eo.cancel = &cancel;
+  r.mutants.resize(set.mutants.size());
+  checker::WorkQueue(options.jobs, cancel).run(set.mutants.size(), [&](std::size_t mi) {
+    const auto& mu = set.mutants[mi];
     MutantOutcome o{mu.id, mu.op, mu.element, mu.description, MutantStatus::Undecided, {}, {}};
     const testgen::ReplayResult replay = testgen::replay_texts(mu.matrix, texts);
     bool by_expectation = false;
@@ -96,7 +102,9 @@ MutationReport mutation_report(const model::Matrix& m, const testgen::TestSuite&
                  : detected                                               ? MutantStatus::Detected
                                                                           : MutantStatus::Survived;
     }
-    switch (o.status) {
+    r.mutants[mi] = std::move(o);
+  });
+  for (const auto& o : r.mutants) switch (o.status) {
       case MutantStatus::Equivalent:
         ++r.equivalent;
         r.interface_only += o.equivalence.method == "interface-only";
@@ -105,8 +113,6 @@ MutationReport mutation_report(const model::Matrix& m, const testgen::TestSuite&
       case MutantStatus::Survived: ++r.survived; break;
       case MutantStatus::Undecided: ++r.undecided; break;
     }
-    r.mutants.push_back(std::move(o));
-  }
   return r;
 }
 

@@ -41,7 +41,9 @@ struct MutationReport {
 };
 
 struct MutationOptions {
-  std::chrono::milliseconds equivalence_timeout{60000};  // per mutant
+  checker::Work work = 20 * checker::kMega;  // each engine's budget of work per mutant
+  double timeout_s = 0.0;                    // --timeout: the user's wall clock per mutant (0 = none)
+  int jobs = 1;                              // mutants decided in parallel (the run's one work queue)
 };
 
 // Replays the suite on every mutant; decides equivalence of the mutants the

@@ -160,6 +160,18 @@ enum class PropertyKind {
               // cycle of [k, k + within_cycles]
 };
 
+// The kind's word, as results write it: "invariant", "never", "reachable",
+// "response".
+inline const char* to_string(PropertyKind k) {
+  switch (k) {
+    case PropertyKind::Invariant: return "invariant";
+    case PropertyKind::Never: return "never";
+    case PropertyKind::Reachable: return "reachable";
+    case PropertyKind::Response: return "response";
+  }
+  return "invariant";
+}
+
 struct Property {
   std::string name;            // unique in its file, e.g. "req1.overfill_closes_xv101"
   std::string description;     // free text (may be empty)

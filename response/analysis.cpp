@@ -1,13 +1,13 @@
 #include "response/analysis.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <exception>
 #include <map>
 #include <mutex>
 #include <stdexcept>
-#include <thread>
 
+#include "checker/names.hpp"
+#include "checker/work_queue.hpp"
 #include "formats/matrix_json.hpp"
 
 namespace cemv::response {
@@ -85,37 +85,40 @@ ResponseResult analyse(const model::Matrix& m, const ResponseOptions& o) {
   for (const auto& p : paths)
     if (index.emplace(p.key(), unique.size()).second) unique.push_back(&p);
   std::vector<Figures> figures(unique.size());
-  SearchOptions so{o.timeout_s, o.out_dir};
+  checker::CancelToken cancel(o.total_timeout_s > 0
+                                  ? checker::Clock::now() + std::chrono::duration_cast<checker::Clock::duration>(
+                                                                std::chrono::duration<double>(o.total_timeout_s))
+                                  : checker::Clock::time_point::max());
+  SearchOptions so;
+  so.work = o.work;
+  so.timeout_s = o.timeout_s;
+  so.cancel = &cancel;
+  so.out_dir = o.out_dir;
 
-  std::atomic<std::size_t> next{0};
-  std::mutex failure_mutex;  // also serialises the progress callbacks
-  std::exception_ptr failure;
+  std::mutex progress;  // serialises the progress callbacks
   if (o.on_plan) o.on_plan(unique.size());
   auto report = [&](const std::function<void(const std::string&)>& f, std::size_t i) {
     if (!f) return;
-    std::lock_guard<std::mutex> lock(failure_mutex);
+    std::lock_guard<std::mutex> lock(progress);
     f(unique[i]->key());
   };
-  auto worker = [&] {
-    for (std::size_t i; (i = next++) < unique.size();) {
-      try {
-        report(o.on_start, i);
-        figures[i].logic = least_response(m, *unique[i], Mode::Normal, so);
-        if (!unique[i]->voted.empty()) figures[i].degraded = least_response(m, *unique[i], Mode::Degraded, so);
-        report(o.on_done, i);
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(failure_mutex);
-        if (!failure) failure = std::current_exception();
-        next = unique.size();
-      }
+  checker::WorkQueue(o.jobs, cancel).run(unique.size(), [&](std::size_t i) {
+    report(o.on_start, i);
+    figures[i].logic = least_response(m, *unique[i], Mode::Normal, so);
+    if (!unique[i]->voted.empty()) figures[i].degraded = least_response(m, *unique[i], Mode::Degraded, so);
+    if (cancel.cancelled()) {
+      // Cut short by the run's bound: nothing it found stands.
+      figures[i] = Figures{};
+      figures[i].logic.reason = checker::to_string(checker::UnknownReason::TimeLimit);
+      if (!unique[i]->voted.empty()) figures[i].degraded = figures[i].logic;
+      return;
     }
-  };
-  const int threads = std::max(1, std::min<int>(o.jobs, static_cast<int>(unique.size())));
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
-  if (failure) std::rethrow_exception(failure);
+    report(o.on_done, i);
+  });
+  result.interrupted = cancel.cancelled();
+  for (std::size_t i = 0; i < unique.size(); ++i)
+    if (result.interrupted && figures[i].logic.kind == Figure::Kind::Unknown && figures[i].logic.reason.empty())
+      figures[i].logic.reason = checker::to_string(checker::UnknownReason::TimeLimit);
 
   for (const auto& p : paths) {
     PathResult r;

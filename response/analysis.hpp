@@ -18,7 +18,9 @@ namespace cemv::response {
 struct ResponseOptions {
   std::vector<int> sifs;      // empty = every declared group
   bool conservative = false;  // the controller's share from watchdog_ms instead of cycle_ms
-  double timeout_s = 0.0;     // per decided property
+  double timeout_s = 0.0;     // --timeout: the user's wall clock per decided property (0 = none)
+  double total_timeout_s = 0.0;  // the whole run (0 = none): paths not decided by then are unknown
+  checker::Work work = 20 * checker::kMega;  // each engine's budget of work in a probe
   int jobs = 1;               // paths decided in parallel
   std::string out_dir;        // counterexample scenarios ("" = none written)
   // The command line's progress line (serialised, from any worker thread):
@@ -57,6 +59,7 @@ struct ResponseResult {
   std::optional<std::uint32_t> watchdog_ms;
   bool conservative = false;
   std::vector<PathResult> paths;
+  bool interrupted = false;  // the run's bound (total_timeout_s) ended it: undecided paths are unknown
 };
 
 // Throws std::invalid_argument for options the matrix cannot satisfy (a SIF

@@ -6,6 +6,8 @@
 
 #include <string>
 
+#include "checker/limits.hpp"
+
 #include "model/matrix.hpp"
 #include "response/paths.hpp"
 #include "response/property.hpp"
@@ -23,7 +25,11 @@ struct Figure {
 };
 
 struct SearchOptions {
-  double timeout_s = 0.0;      // per probe; 0 = none
+  // Each engine's budget of work in a probe (checker::CheckBudgets::engine):
+  // the same budgets give the same figures on every machine.
+  checker::Work work = 20 * checker::kMega;
+  double timeout_s = 0.0;      // --timeout: the user's wall clock per probe; 0 = none
+  checker::CancelToken* cancel = nullptr;  // the run's (--total-timeout, a failure elsewhere)
   std::string out_dir;         // "" = no scenario files
 };
 

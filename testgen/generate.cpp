@@ -8,14 +8,13 @@
 // searched again. Groups are independent, so --jobs searches them in parallel
 // and the result does not depend on the number of jobs.
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <map>
 #include <mutex>
 #include <set>
-#include <thread>
 
 #include "checker/prover.hpp"
+#include "checker/work_queue.hpp"
 #include "checker/replay.hpp"
 #include "formats/matrix_json.hpp"
 #include "formats/scenario.hpp"
@@ -73,7 +72,7 @@ class GroupRun {
       // the reference: proved first, so that no search budget is spent on it.
       if (results_[i].objective.simulates && proved(i, g)) continue;
       if (room(i) && extend(i, g)) continue;
-      SearchResult r = search_.find(g, {}, options_.objective_budget_s);
+      SearchResult r = search_.find(g, {}, options_.objective_work);
       if (r.kind == SearchResult::Kind::Found && !fits(r.cycles.size())) {
         ObjectiveResult& res = results_[i];
         res.status = ObjectiveStatus::Undecided;
@@ -88,7 +87,7 @@ class GroupRun {
         // (docs/encoding.md "Slices"): the whole matrix is exact.
         Goal full = g;
         full.roots.clear();
-        SearchResult again = search_.find(full, {}, options_.objective_budget_s);
+        SearchResult again = search_.find(full, {}, options_.objective_work);
         if (again.kind == SearchResult::Kind::Found && start(i, full, again)) continue;
         throw checker::InternalError("the runtime does not reproduce the witness of objective " +
                                      results_[i].objective.id);
@@ -211,7 +210,7 @@ class GroupRun {
     Draft& d = drafts_.back();
     Goal eg = g;
     eg.roots = merge(d.roots, g.roots);
-    SearchResult r = search_.find(eg, d.inputs, options_.objective_budget_s / 2);
+    SearchResult r = search_.find(eg, d.inputs, options_.objective_work / 2);
     if (r.kind != SearchResult::Kind::Found) return false;
     std::vector<model::CycleInput> all = d.inputs;
     all.insert(all.end(), r.cycles.begin(), r.cycles.end());
@@ -260,7 +259,7 @@ class GroupRun {
     if (!prefix.empty() || keep > 0) {
       std::vector<model::CycleInput> head = prefix;
       head.insert(head.end(), r.cycles.begin(), r.cycles.begin() + static_cast<long>(keep));
-      SearchResult b = search_.find(g, head, options_.objective_budget_s / 4);
+      SearchResult b = search_.find(g, head, options_.objective_work / 4);
       if (b.kind == SearchResult::Kind::Found) {
         std::vector<model::CycleInput> cycles(r.cycles.begin(), r.cycles.begin() + static_cast<long>(keep));
         cycles.insert(cycles.end(), b.cycles.begin(), b.cycles.end());
@@ -339,25 +338,15 @@ TestSuite generate_tests(const model::Matrix& m, const TestgenOptions& options) 
   for (const auto& [rank, members] : groups) order.push_back(&members);
   std::vector<std::vector<Draft>> drafts(order.size());
   std::mutex report;
-  std::atomic<std::size_t> next{0};
-  std::exception_ptr error;
-  std::mutex error_mutex;
-  auto worker = [&] {
-    for (std::size_t g; (g = next++) < order.size();) {
-      try {
-        drafts[g] = GroupRun(m, options, file, suite.objectives, *order[g], report).run();
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(error_mutex);
-        if (!error) error = std::current_exception();
-      }
-    }
-  };
-  const int jobs = std::max(1, std::min<int>(options.jobs, static_cast<int>(order.size())));
-  std::vector<std::thread> threads;
-  for (int j = 1; j < jobs; ++j) threads.emplace_back(worker);
-  worker();
-  for (auto& t : threads) t.join();
-  if (error) std::rethrow_exception(error);
+  checker::CancelToken own;
+  TestgenOptions mine = options;
+  if (!mine.cancel) mine.cancel = &own;
+  checker::WorkQueue queue(options.jobs, *mine.cancel);
+  const std::size_t ran = queue.run(order.size(), [&](std::size_t g) {
+    drafts[g] = GroupRun(m, mine, file, suite.objectives, *order[g], report).run();
+  });
+  // A caller's cancel (a bound of its own): the suite is not complete.
+  if (ran < order.size()) throw checker::Interrupted{};
 
   // The given tests first (C001, ...), each checked at its last cycle.
   for (const GivenTest& g : options.given) {

@@ -39,12 +39,12 @@ class Searcher {
   Searcher(const model::Matrix& m, const TestgenOptions& options) : m_(m), options_(options) {}
   // A run reaching the goal after `prefix` (empty: from start-up). Never
   // Infeasible: only a proof says that.
-  SearchResult find(const Goal& g, const std::vector<model::CycleInput>& prefix, double budget_s) const;
+  SearchResult find(const Goal& g, const std::vector<model::CycleInput>& prefix, checker::Work budget) const;
   // Infeasible with the proof, or Undecided with the reason.
   SearchResult prove_unreachable(const Goal& g) const;
 
  private:
-  SearchResult find_once(const Goal& g, const std::vector<model::CycleInput>& prefix, double budget_s,
+  SearchResult find_once(const Goal& g, const std::vector<model::CycleInput>& prefix, checker::Work budget,
                          bool engineer) const;
   const model::Matrix& m_;
   const TestgenOptions& options_;

@@ -17,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "checker/limits.hpp"
 #include "model/matrix.hpp"
 #include "model/node.hpp"
 #include "model/vocabulary.hpp"
@@ -106,8 +107,13 @@ struct TestgenOptions {
   std::optional<std::set<model::Node>> elements;
   std::vector<GivenTest> given;       // tests C001, ... before the generated ones
   int jobs = 1;                       // SIF groups searched in parallel
-  double objective_budget_s = 20.0;   // search per objective (BMC, then accelerated BMC)
-  double proof_budget_s = 3.0;        // infeasibility proof per objective
+  // Budgets of work (checker/limits.hpp: Z3 resource units), so that the
+  // same matrix gives the same suite on every machine.
+  checker::Work objective_work = 20 * checker::kMega;  // search per objective (BMC, then accelerated BMC)
+  checker::Work proof_work = 3 * checker::kMega;       // infeasibility proof per objective
+  checker::Work shrink_work = 5 * checker::kMega;      // a witness made readable
+  // The run's cancel token (a failure elsewhere, or the caller's bound).
+  checker::CancelToken* cancel = nullptr;
   int max_depth = 40;                 // BMC cycles beyond an objective's horizon
   std::size_t max_test_steps = 100;   // a test is not extended beyond this many steps
   std::size_t max_test_cycles = 600000;   // nor beyond this many cycles (memory, ~4 KB a cycle)
@@ -116,7 +122,8 @@ struct TestgenOptions {
 };
 
 // Throws checker::InternalError when a test does not replay green on the
-// runtime (never a silent pass).
+// runtime (never a silent pass), checker::Interrupted when the options'
+// cancel token ends the run first.
 TestSuite generate_tests(const model::Matrix& m, const TestgenOptions& options = {});
 
 // ---- replay -----------------------------------------------------------------

@@ -3,6 +3,7 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 
 #include "checker/context_pool.hpp"
 #include "checker/engines/solving.hpp"
@@ -72,44 +73,53 @@ auto in_fresh_context(const ProblemFactory& make, F&& f) {
 
 }  // namespace
 
-void recheck_proof(const SafetyProblem& problem, const ProverResult& result) {
+void recheck_proof(const SafetyProblem& problem, const ProverResult& result, const Limits* limits) {
   if (result.verdict != Verdict::Proved) throw InternalError("recheck_proof: not a proof");
   std::vector<Obligation> obs;
   try {
     obs = obligations(problem, result);
   } catch (const z3::exception& e) {
-    throw InternalError(result.method + " proof: the invariant does not parse: " + e.msg());
+    throw InternalError(result.method_text() + " proof: the invariant does not parse: " + e.msg());
   }
   // One fresh solver for the obligations, each in its own scope: in
   // incremental mode Z3 skips the per-query preprocessing that dominated
   // re-checking the many small proofs of a standard property set.
   z3::solver s(problem.ts->ctx());
+  std::optional<Watchdog> watchdog;
+  if (limits) watchdog.emplace(problem.ts->ctx(), *limits);
   for (const auto& o : obs) {
     s.push();
     s.add(o.formula);
-    z3::check_result cr = s.check();
+    z3::check_result cr = z3::unknown;
+    try {
+      cr = s.check();
+    } catch (const z3::exception&) {
+      if (limits) stop_if_interrupted(*limits);
+      throw;
+    }
+    if (cr == z3::unknown && limits) stop_if_interrupted(*limits);
     if (cr != z3::unsat)
-      throw InternalError(result.method + " proof (k=" + std::to_string(result.k) + ") fails its re-check: " +
+      throw InternalError(result.method_text() + " proof (k=" + std::to_string(result.k) + ") fails its re-check: " +
                           o.name + " is " + (cr == z3::sat ? "sat" : "unknown (" + s.reason_unknown() + ")") +
                           "\ninvariant:\n" + result.invariant.text());
     s.pop();
   }
 }
 
-void recheck_proof(const ProblemFactory& make, const ProverResult& result) {
+void recheck_proof(const ProblemFactory& make, const ProverResult& result, const Limits* limits) {
   in_fresh_context(make, [&](const SafetyProblem& p) {
-    recheck_proof(p, result);
+    recheck_proof(p, result, limits);
     return 0;
   });
 }
 
 namespace {
-void replay_on_evaluator(const SafetyProblem& problem, const Trace& cex);
+void replay_on_evaluator(const SafetyProblem& problem, const Trace& cex, const Limits* limits);
 }  // namespace
 
-void replay_counterexample(const SafetyProblem& problem, const Trace& cex) {
+void replay_counterexample(const SafetyProblem& problem, const Trace& cex, const Limits* limits) {
   try {
-    replay_on_evaluator(problem, cex);
+    replay_on_evaluator(problem, cex, limits);
   } catch (const std::logic_error& e) {
     // An operator the Evaluator does not interpret: the trace cannot be
     // re-checked, so it must not be reported.
@@ -118,7 +128,7 @@ void replay_counterexample(const SafetyProblem& problem, const Trace& cex) {
 }
 
 namespace {
-void replay_on_evaluator(const SafetyProblem& problem, const Trace& cex) {
+void replay_on_evaluator(const SafetyProblem& problem, const Trace& cex, const Limits* limits) {
   const auto& ts = *problem.ts;
   if (cex.cycles.empty()) throw InternalError("counterexample without cycles");
   // The Evaluator runs an Encoding; a copy of the system with the property's
@@ -138,6 +148,7 @@ void replay_on_evaluator(const SafetyProblem& problem, const Trace& cex) {
   encoder::Evaluator ev(enc);
   const bool has_states = cex.state_names.size() == ts.statevars().size();
   for (std::size_t k = 0; k < cex.cycles.size(); ++k) {
+    if (limits && k % 4096 == 4095) stop_if_interrupted(*limits);
     // The engine's states (for display) must be the ones the formulas compute.
     if (has_states)
       for (std::size_t i = 0; i < ts.statevars().size(); ++i) {
@@ -166,16 +177,16 @@ void replay_on_evaluator(const SafetyProblem& problem, const Trace& cex) {
 }
 }  // namespace
 
-void replay_counterexample(const ProblemFactory& make, const Trace& cex) {
+void replay_counterexample(const ProblemFactory& make, const Trace& cex, const Limits* limits) {
   in_fresh_context(make, [&](const SafetyProblem& p) {
-    replay_counterexample(p, cex);
+    replay_counterexample(p, cex, limits);
     return 0;
   });
 }
 
-void recheck(const ProblemFactory& make, const ProverResult& result) {
-  if (result.verdict == Verdict::Proved) recheck_proof(make, result);
-  else if (result.verdict == Verdict::Falsified) replay_counterexample(make, result.cex);
+void recheck(const ProblemFactory& make, const ProverResult& result, const Limits* limits) {
+  if (result.verdict == Verdict::Proved) recheck_proof(make, result, limits);
+  else if (result.verdict == Verdict::Falsified) replay_counterexample(make, result.cex, limits);
 }
 
 std::vector<ProofObligation> proof_obligations_smtlib(const SafetyProblem& problem, const ProverResult& result) {
@@ -183,7 +194,7 @@ std::vector<ProofObligation> proof_obligations_smtlib(const SafetyProblem& probl
   Z3_set_ast_print_mode(ctx, Z3_PRINT_SMTLIB2_COMPLIANT);
   std::vector<ProofObligation> out;
   for (const auto& o : obligations(problem, result)) {
-    std::string comment = "cemv " + result.method + " proof obligation " + o.name + " (expected: unsat)";
+    std::string comment = "cemv " + result.method_text() + " proof obligation " + o.name + " (expected: unsat)";
     out.push_back({o.name, Z3_benchmark_to_smtlib_string(ctx, comment.c_str(), "ALL", "unsat", "", 0, nullptr,
                                                          o.formula)});
   }

@@ -18,16 +18,18 @@ namespace cemv::checker::check {
 // Proved: the invariant holds initially and is inductive, and `good` is
 // k-inductive relative to it (ProverResult's comment); each a fresh solver
 // call that must answer unsat.
-void recheck_proof(const SafetyProblem& problem, const ProverResult& result);
-void recheck_proof(const ProblemFactory& make, const ProverResult& result);
+// With `limits`: a check the wall clock or the cancel token interrupts throws
+// Interrupted, never InternalError.
+void recheck_proof(const SafetyProblem& problem, const ProverResult& result, const Limits* limits = nullptr);
+void recheck_proof(const ProblemFactory& make, const ProverResult& result, const Limits* limits = nullptr);
 
 // Falsified: from the initial state, the trace's inputs drive the system so
 // that `assumption` holds in every cycle and `good` is false in the last one.
-void replay_counterexample(const SafetyProblem& problem, const Trace& cex);
-void replay_counterexample(const ProblemFactory& make, const Trace& cex);
+void replay_counterexample(const SafetyProblem& problem, const Trace& cex, const Limits* limits = nullptr);
+void replay_counterexample(const ProblemFactory& make, const Trace& cex, const Limits* limits = nullptr);
 
 // Either of the two above, by verdict; Unknown needs no check.
-void recheck(const ProblemFactory& make, const ProverResult& result);
+void recheck(const ProblemFactory& make, const ProverResult& result, const Limits* limits = nullptr);
 
 // The proof obligations of a Proved result as SMT-LIB 2 scripts, each of
 // which a solver must answer unsat: invariant initiation and consecution,

@@ -128,13 +128,15 @@ std::optional<Trace> confirm(const SafetyProblem& p, const std::vector<std::vect
 }  // namespace
 
 ProverResult AcceleratedBmc::prove(const SafetyProblem& problem, const Limits& limits) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   const auto& ts = *problem.ts;
   z3::context& ctx = ts.ctx();
   ProverResult r;
-  r.method = name();
-  auto finish = [&](std::string reason) {
-    r.reason = std::move(reason);
+  r.method = method();
+  WorkMeter meter(ctx, limits.work);
+  auto finish = [&](UnknownReason reason) {
+    r.reason = reason;
+    r.work = meter.spent();
     r.seconds = seconds_since(start);
     return r;
   };
@@ -146,17 +148,16 @@ ProverResult AcceleratedBmc::prove(const SafetyProblem& problem, const Limits& l
     z3::solver s(ctx);
     s.add(m.init());
     for (int J = 0; J <= max_steps; ++J) {
-      if (limits.over()) return finish("time limit");
+      if (limits.interrupted()) return finish(UnknownReason::TimeLimit);
       if (J > 0) s.add(m.step(J - 1));
       z3::expr violated = ctx.bool_const(("macro.violated@" + std::to_string(J)).c_str());
       s.add(z3::implies(violated, m.violation(J)));
       for (int attempt = 0; attempt < kMaxRefinements; ++attempt) {
-        if (limits.over()) return finish("time limit");
-        set_timeout(s, limits);
+        if (limits.interrupted()) return finish(UnknownReason::TimeLimit);
         z3::expr_vector assume(ctx);
         assume.push_back(violated);
-        z3::check_result cr = s.check(assume);
-        if (cr == z3::unknown) return finish(unknown_reason(s.reason_unknown(), limits));
+        z3::check_result cr = check_within(s, meter, assume);
+        if (cr == z3::unknown) return finish(unknown_reason(s.reason_unknown(), limits, meter, &r.detail));
         if (cr == z3::unsat) break;
         z3::model model = s.get_model();
         std::vector<std::vector<Value>> inputs;
@@ -174,7 +175,7 @@ ProverResult AcceleratedBmc::prove(const SafetyProblem& problem, const Limits& l
           r.verdict = Verdict::Falsified;
           r.k = static_cast<int>(trace->length()) - 1;
           r.cex = std::move(*trace);
-          return finish("");
+          return finish(UnknownReason::None);
         }
         // Spurious (the stretch is not what its end points claimed): exclude
         // these lengths and ask again.
@@ -182,11 +183,12 @@ ProverResult AcceleratedBmc::prove(const SafetyProblem& problem, const Limits& l
       }
     }
   } catch (const z3::exception& e) {
-    return finish(unknown_reason(e.msg(), limits));
+    return finish(unknown_reason(e.msg(), limits, meter, &r.detail));
   } catch (const std::logic_error& e) {
-    return finish(std::string("the evaluator cannot run this system: ") + e.what());
+    r.detail = e.what();
+    return finish(UnknownReason::CannotRun);
   }
-  return finish("bound reached");
+  return finish(UnknownReason::BoundReached);
 }
 
 }  // namespace cemv::checker

@@ -19,7 +19,7 @@ class AcceleratedBmc : public Prover {
  public:
   static constexpr int kMaxMacroSteps = 8;
   static constexpr int kMaxRefinements = 8;
-  std::string name() const override { return "accelerated-bmc"; }
+  Method method() const override { return Method::AcceleratedBmc; }
   // Falsified with a confirmed counterexample of at most kMaxMacroSteps
   // macro steps (and Limits::max_depth of them); never Proved.
   ProverResult prove(const SafetyProblem& problem, const Limits& limits) override;

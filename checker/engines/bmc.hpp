@@ -10,7 +10,7 @@ namespace cemv::checker {
 
 class Bmc : public Prover {
  public:
-  std::string name() const override { return "bmc"; }
+  Method method() const override { return Method::Bmc; }
   // Falsified with a shortest counterexample of at most limits.max_depth + 1
   // cycles; Unknown "bound reached" when there is none that short.
   ProverResult prove(const SafetyProblem& problem, const Limits& limits) override;

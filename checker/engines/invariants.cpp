@@ -79,7 +79,7 @@ std::vector<Sample> simulate(const SafetyProblem& p, const MiningOptions& opt) {
   const double command_p[] = {0.3, 0.05, 0.01, 0.002};
   const int hold_max[] = {1, 8, 60, 600};
   for (int run = 0; run < opt.runs; ++run) {
-    if (opt.limits && opt.limits->over()) break;
+    if (opt.limits && opt.limits->interrupted()) break;
     ev.reset();
     const double pc = command_p[run % 4];
     const int hm = hold_max[(run / 4 + run) % 4];
@@ -139,7 +139,7 @@ class CandidateMiner {
   void add(const z3::expr& e) {
     if (out_.size() < opt_.max_candidates) out_.push_back(e);
   }
-  bool stop() const { return out_.size() >= opt_.max_candidates || (opt_.limits && opt_.limits->over()); }
+  bool stop() const { return out_.size() >= opt_.max_candidates || (opt_.limits && opt_.limits->interrupted()); }
 
   void unary() {
     for (std::size_t x : ints_) {
@@ -327,24 +327,23 @@ struct Candidate {
 // Drops, in order, the candidates false in a model, until a check is unsat.
 // Each round's "some candidate is false" sits behind a fresh literal instead
 // of a push/pop, which keeps the solver's internalised terms.
-void drop_until_unsat(z3::solver& s, std::vector<Candidate>& cands, const Limits& limits) {
+void drop_until_unsat(z3::solver& s, std::vector<Candidate>& cands, const Limits& limits, WorkMeter& meter) {
   z3::context& ctx = s.ctx();
   for (int round = 0;; ++round) {
-    if (limits.over()) throw std::runtime_error("time limit");
+    if (limits.interrupted()) throw Stopped{UnknownReason::TimeLimit};
     if (cands.empty()) return;
     z3::expr_vector some_false(ctx);
     for (const auto& c : cands) some_false.push_back(!c.decided);
     z3::expr this_round = ctx.bool_const(("houdini.round." + std::to_string(round) + "." +
                                           std::to_string(cands.size())).c_str());
     s.add(z3::implies(this_round, z3::mk_or(some_false)));
-    set_timeout(s, limits);
     z3::expr_vector assume(ctx);
     assume.push_back(this_round);
     for (const auto& c : cands)
       if (c.literal) assume.push_back(*c.literal);
-    z3::check_result r = s.check(assume);
+    z3::check_result r = check_within(s, meter, assume);
     if (r == z3::unsat) return;
-    if (r == z3::unknown) throw std::runtime_error(unknown_reason(s.reason_unknown(), limits));
+    if (r == z3::unknown) throw Stopped{unknown_reason(s.reason_unknown(), limits, meter)};
     z3::model m = s.get_model();
     std::vector<Candidate> keep;
     for (auto& c : cands)
@@ -421,7 +420,7 @@ std::vector<z3::expr> mine_candidates(const SafetyProblem& problem, const Mining
 }
 
 std::vector<z3::expr> houdini(const SafetyProblem& problem, std::vector<z3::expr> candidates,
-                              const Limits& limits) {
+                              const Limits& limits, WorkMeter& meter) {
   const auto& ts = *problem.ts;
   z3::context& ctx = ts.ctx();
   encoder::Unroller u(ts);
@@ -433,7 +432,7 @@ std::vector<z3::expr> houdini(const SafetyProblem& problem, std::vector<z3::expr
   {
     z3::solver s(ctx);
     s.add(abstract(u.at(ts.init_formula(), 0)));
-    drop_until_unsat(s, cands, limits);
+    drop_until_unsat(s, cands, limits, meter);
   }
   // Consecution: candidates of cycle 0 (each behind an activation literal)
   // and one transition; drop what the post-state violates.
@@ -445,7 +444,7 @@ std::vector<z3::expr> houdini(const SafetyProblem& problem, std::vector<z3::expr
     cands[i].literal = l;
     cands[i].decided = u.at(cands[i].term, 1);
   }
-  drop_until_unsat(s, cands, limits);
+  drop_until_unsat(s, cands, limits, meter);
   std::vector<z3::expr> kept;
   for (const auto& c : cands) kept.push_back(c.term);
   return kept;
@@ -458,21 +457,30 @@ namespace {
 // the counter relations, and only if induction still fails, the Bool clauses.
 class InvariantProver : public Prover {
  public:
-  std::string name() const override { return "invariants+induction"; }
+  Method method() const override { return Method::InvariantsInduction; }
+  // The three rounds share one budget of work.
   ProverResult prove(const SafetyProblem& problem, const Limits& limits) override {
     KInductionOptions o;
     o.simple_path = false;
     o.max_k = 1;
-    o.method = name();
+    o.method = method();
     double seconds = 0.0;
+    Work work = 0;
     ProverResult r;
     for (int round = 0; round < 3; ++round) {
       o.mine_invariants = round > 0;
       o.bool_implications = round > 1;
-      r = KInduction(o).prove(problem, limits);
+      const Work left = limits.work == 0 ? 0 : limits.work > work ? limits.work - work : 0;
+      if (limits.work != 0 && left == 0) {
+        r.reason = UnknownReason::WorkLimit;
+        break;
+      }
+      r = KInduction(o).prove(problem, limits.with_work(left));
       seconds += r.seconds;
+      work += r.work;
       r.seconds = seconds;
-      if (r.verdict != Verdict::Unknown || r.reason != "bound reached") return r;
+      r.work = work;
+      if (r.verdict != Verdict::Unknown || r.reason != UnknownReason::BoundReached) return r;
     }
     return r;
   }

@@ -32,7 +32,8 @@ struct MiningOptions {
   // Houdini round costs a solver call, so engines that need speed over
   // strength leave them out.
   bool bool_implications = true;
-  // Mining stops early (with what it has) when these run out.
+  // Mining stops early when the question is interrupted (the answer is
+  // then abandoned anyway); its runs are a fixed number, not a time.
   const Limits* limits = nullptr;
 };
 
@@ -41,10 +42,11 @@ std::vector<z3::expr> mine_candidates(const SafetyProblem& problem, const Mining
 
 // The largest subset of `candidates` that holds initially and is inductive
 // (under the constraints and the assumption of the cycle). Candidates are
-// dropped in a fixed order, so the answer is deterministic. Throws
-// std::runtime_error("time limit") when the limits run out.
+// dropped in a fixed order, so the answer is deterministic. Its checks are
+// charged to `meter`; throws Stopped when the meter or the limits end it.
+class WorkMeter;
 std::vector<z3::expr> houdini(const SafetyProblem& problem, std::vector<z3::expr> candidates,
-                              const Limits& limits);
+                              const Limits& limits, WorkMeter& meter);
 
 // "invariants+induction": the encoder's lemmas and the mined candidates,
 // filtered by Houdini, then `good` by induction relative to them (k <= 1).

@@ -35,7 +35,8 @@ std::optional<std::pair<int, int>> repeated_state(const encoder::TransitionSyste
 
 }  // namespace
 
-std::vector<z3::expr> KInduction::strengthening(const SafetyProblem& problem, const Limits& limits) const {
+std::vector<z3::expr> KInduction::strengthening(const SafetyProblem& problem, const Limits& limits,
+                                               WorkMeter& meter) const {
   std::vector<z3::expr> candidates;
   std::unordered_set<unsigned> seen;
   auto add = [&](const z3::expr& e) {
@@ -50,24 +51,29 @@ std::vector<z3::expr> KInduction::strengthening(const SafetyProblem& problem, co
     for (const auto& c : mine_candidates(problem, mining)) add(c);
   }
   if (candidates.empty()) return candidates;
-  return houdini(problem, std::move(candidates), limits);
+  return houdini(problem, std::move(candidates), limits, meter);
 }
 
 ProverResult KInduction::prove(const SafetyProblem& problem, const Limits& limits) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   const auto& ts = *problem.ts;
   z3::context& ctx = ts.ctx();
   ProverResult r;
   r.method = options_.method;
-  auto finish = [&](Verdict v, int k, std::string reason) {
+  // One budget for the strengthening and the induction: the meter counts
+  // the context's work from here, Houdini's checks included.
+  WorkMeter meter(ctx, limits.work);
+  auto finish = [&](Verdict v, int k, UnknownReason reason) {
     r.verdict = v;
     r.k = k;
-    r.reason = std::move(reason);
+    r.reason = reason;
+    r.work = meter.spent();
     r.seconds = seconds_since(start);
     return r;
   };
   try {
-    std::vector<z3::expr> inv = strengthening(problem, limits);
+    std::vector<z3::expr> inv = strengthening(problem, limits, meter);
+    if (limits.interrupted()) return finish(Verdict::Unknown, 0, UnknownReason::TimeLimit);
     for (const auto& c : inv) r.invariant.clauses.push_back(to_smtlib(c));
     z3::expr S = ctx.bool_val(true);
     if (!inv.empty()) {
@@ -84,21 +90,21 @@ ProverResult KInduction::prove(const SafetyProblem& problem, const Limits& limit
     base.add(u.at(ts.init_formula(), 0));
     step.add(u.at(S, 0));
     for (int k = 0; k <= max_k; ++k) {
-      if (limits.over()) return finish(Verdict::Unknown, k, "time limit");
+      if (limits.interrupted()) return finish(Verdict::Unknown, k, UnknownReason::TimeLimit);
       // Base case: no violation in cycle k (cycles before it were checked).
       base.add(u.at(facts, k));
       z3::expr bad = ctx.bool_const(("kind.base.violated@" + std::to_string(k)).c_str());
       base.add(z3::implies(bad, !u.at(problem.good, k)));
-      set_timeout(base, limits);
       z3::expr_vector assume(ctx);
       assume.push_back(bad);
-      z3::check_result cr = base.check(assume);
+      z3::check_result cr = check_within(base, meter, assume);
       if (cr == z3::sat) {
         r.cex = trace_from_model(ts, u, base.get_model(), k);
         r.invariant = {};
-        return finish(Verdict::Falsified, k, "");
+        return finish(Verdict::Falsified, k, UnknownReason::None);
       }
-      if (cr == z3::unknown) return finish(Verdict::Unknown, k, unknown_reason(base.reason_unknown(), limits));
+      if (cr == z3::unknown)
+        return finish(Verdict::Unknown, k, unknown_reason(base.reason_unknown(), limits, meter, &r.detail));
       base.add(u.at(problem.good, k));
       base.add(u.at(trans, k));
 
@@ -107,12 +113,12 @@ ProverResult KInduction::prove(const SafetyProblem& problem, const Limits& limit
       z3::expr step_bad = ctx.bool_const(("kind.step.violated@" + std::to_string(k)).c_str());
       step.add(z3::implies(step_bad, !u.at(problem.good, k)));
       for (;;) {
-        set_timeout(step, limits);
         z3::expr_vector a(ctx);
         a.push_back(step_bad);
-        cr = step.check(a);
-        if (cr == z3::unsat) return finish(Verdict::Proved, k, "");
-        if (cr == z3::unknown) return finish(Verdict::Unknown, k, unknown_reason(step.reason_unknown(), limits));
+        cr = check_within(step, meter, a);
+        if (cr == z3::unsat) return finish(Verdict::Proved, k, UnknownReason::None);
+        if (cr == z3::unknown)
+          return finish(Verdict::Unknown, k, unknown_reason(step.reason_unknown(), limits, meter, &r.detail));
         if (!options_.simple_path) break;
         auto pair = repeated_state(ts, u, step.get_model(), k);
         if (!pair) break;
@@ -123,11 +129,11 @@ ProverResult KInduction::prove(const SafetyProblem& problem, const Limits& limit
       step.add(u.at(trans, k));
       step.add(u.at(S, k + 1));
     }
-    return finish(Verdict::Unknown, max_k, "bound reached");
+    return finish(Verdict::Unknown, max_k, UnknownReason::BoundReached);
+  } catch (const Stopped& e) {
+    return finish(Verdict::Unknown, 0, e.reason);
   } catch (const z3::exception& e) {
-    return finish(Verdict::Unknown, 0, unknown_reason(e.msg(), limits));
-  } catch (const std::runtime_error& e) {
-    return finish(Verdict::Unknown, 0, unknown_reason(e.what(), limits));
+    return finish(Verdict::Unknown, 0, unknown_reason(e.msg(), limits, meter, &r.detail));
   }
 }
 

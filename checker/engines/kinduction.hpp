@@ -17,18 +17,19 @@ struct KInductionOptions {
   bool bool_implications = false;  // MiningOptions::bool_implications
   bool simple_path = true;
   int max_k = -1;               // -1: Limits::max_depth
-  std::string method = "k-induction";
+  Method method = Method::KInduction;
 };
 
 class KInduction : public Prover {
  public:
   explicit KInduction(KInductionOptions options = {}) : options_(std::move(options)) {}
-  std::string name() const override { return options_.method; }
+  Method method() const override { return options_.method; }
   ProverResult prove(const SafetyProblem& problem, const Limits& limits) override;
 
  private:
   // The strengthening invariant: lemmas (and mined candidates) that Houdini keeps.
-  std::vector<z3::expr> strengthening(const SafetyProblem& problem, const Limits& limits) const;
+  // Throws Stopped when the limits end the search.
+  std::vector<z3::expr> strengthening(const SafetyProblem& problem, const Limits& limits, WorkMeter& meter) const;
   KInductionOptions options_;
 };
 

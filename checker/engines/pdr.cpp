@@ -20,11 +20,12 @@ void conjuncts(const z3::expr& e, std::vector<z3::expr>& out) {
 }  // namespace
 
 ProverResult Pdr::prove(const SafetyProblem& problem, const Limits& limits) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   const auto& ts = *problem.ts;
   z3::context& ctx = ts.ctx();
   ProverResult r;
-  r.method = name();
+  r.method = method();
+  WorkMeter meter(ctx, limits.work);
   try {
     z3::fixedpoint fp(ctx);
     // Declared after the fixedpoint, so destroyed (clearing the interrupt)
@@ -32,9 +33,6 @@ ProverResult Pdr::prove(const SafetyProblem& problem, const Limits& limits) {
     Watchdog watchdog(ctx, limits);
     z3::params p(ctx);
     p.set("engine", "spacer");
-    auto left = std::chrono::duration_cast<std::chrono::milliseconds>(limits.deadline - start).count();
-    if (limits.deadline != std::chrono::steady_clock::time_point::max() && left < 4000000000LL)
-      p.set("timeout", static_cast<unsigned>(left < 1 ? 1 : left));
     fp.set(p);
 
     z3::sort_vector domain(ctx);
@@ -59,7 +57,9 @@ ProverResult Pdr::prove(const SafetyProblem& problem, const Limits& limits) {
     fp.add_rule(step_rule, ctx.str_symbol("pdr.step"));
     fp.add_rule(bad_rule, ctx.str_symbol("pdr.bad"));
     z3::expr query = bad();
-    z3::check_result cr = fp.query(query);
+    // A fixedpoint query takes no `rlimit` of its own: the context's, which
+    // the meter sets, bounds it.
+    z3::check_result cr = meter.arm() ? fp.query(query) : z3::unknown;
     if (cr == z3::unsat) {
       z3::func_decl inv_decl = inv;
       z3::expr cover = fp.get_cover_delta(-1, inv_decl);
@@ -71,9 +71,11 @@ ProverResult Pdr::prove(const SafetyProblem& problem, const Limits& limits) {
       r.verdict = Verdict::Proved;
       r.k = 0;
     } else if (cr == z3::sat) {
-      // Spacer knows a counterexample exists; BMC finds a shortest one.
-      Limits rest = limits;
-      rest.max_depth = std::max(limits.max_depth, 100000);
+      // Spacer knows a counterexample exists; BMC finds a shortest one,
+      // within what is left of the budget.
+      const Work spent = meter.spent();
+      Limits rest = limits.with_depth(std::max(limits.max_depth, 100000));
+      if (limits.work != 0) rest.work = limits.work > spent ? limits.work - spent : 1;
       ProverResult b = Bmc().prove(problem, rest);
       if (b.verdict == Verdict::Falsified) {
         r.verdict = Verdict::Falsified;
@@ -81,13 +83,15 @@ ProverResult Pdr::prove(const SafetyProblem& problem, const Limits& limits) {
         r.cex = std::move(b.cex);
       } else {
         r.reason = b.reason;
+        r.detail = b.detail;
       }
     } else {
-      r.reason = unknown_reason(fp.reason_unknown(), limits);
+      r.reason = unknown_reason(fp.reason_unknown(), limits, meter, &r.detail);
     }
   } catch (const z3::exception& e) {
-    r.reason = unknown_reason(e.msg(), limits);
+    r.reason = unknown_reason(e.msg(), limits, meter, &r.detail);
   }
+  r.work = meter.spent();
   r.seconds = seconds_since(start);
   return r;
 }

@@ -14,7 +14,7 @@ namespace cemv::checker {
 
 class Pdr : public Prover {
  public:
-  std::string name() const override { return "pdr"; }
+  Method method() const override { return Method::Pdr; }
   ProverResult prove(const SafetyProblem& problem, const Limits& limits) override;
 };
 

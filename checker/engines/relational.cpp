@@ -66,14 +66,15 @@ class UfAbstraction {
 
 class RelationalInduction : public Prover {
  public:
-  std::string name() const override { return "relational-induction"; }
+  Method method() const override { return Method::RelationalInduction; }
 
   ProverResult prove(const SafetyProblem& problem, const Limits& limits) override {
-    const auto start = std::chrono::steady_clock::now();
+    const auto start = Clock::now();
     ProverResult r;
-    r.method = name();
+    r.method = method();
     const auto& ts = *problem.ts;
     z3::context& ctx = ts.ctx();
+    WorkMeter meter(ctx, limits.work);
     try {
       Watchdog watchdog(ctx, limits);
       encoder::Unroller u(ts);
@@ -84,7 +85,7 @@ class RelationalInduction : public Prover {
       {
         z3::solver s(ctx);
         s.add(abstract(u.at(ts.init_formula(), 0)));
-        keep_valid(s, cands, u, abstract, 0, limits);
+        keep_valid(s, cands, u, abstract, 0, limits, meter);
       }
       // Consecution: drop what a transition from the candidates breaks.
       const z3::expr facts = abstract(u.at(ts.constraint_formula() && problem.assumption, 0));
@@ -92,13 +93,13 @@ class RelationalInduction : public Prover {
       s.add(facts);
       s.add(abstract(u.at(ts.trans_formula(), 0)));
       for (;;) {
-        if (limits.over()) return unknown(r, "time limit", start);
+        if (limits.interrupted()) return unknown(r, UnknownReason::TimeLimit, start);
         std::vector<z3::expr> before = cands;
         z3::expr_vector now(ctx);
         for (const auto& c : cands) now.push_back(abstract(u.at(c, 0)));
         s.push();
         if (!now.empty()) s.add(z3::mk_and(now));
-        keep_valid(s, cands, u, abstract, 1, limits);
+        keep_valid(s, cands, u, abstract, 1, limits, meter);
         s.pop();
         if (cands.size() == before.size()) break;
       }
@@ -107,24 +108,24 @@ class RelationalInduction : public Prover {
       g.add(facts);
       for (const auto& c : cands) g.add(abstract(u.at(c, 0)));
       g.add(!abstract(u.at(problem.good, 0)));
-      set_timeout(g, limits);
-      z3::check_result cr = g.check();
-      if (cr == z3::unknown) return unknown(r, unknown_reason(g.reason_unknown(), limits), start);
-      if (cr == z3::sat) return unknown(r, "bound reached", start);
+      z3::check_result cr = check_within(g, meter);
+      if (cr == z3::unknown) return unknown(r, unknown_reason(g.reason_unknown(), limits, meter, &r.detail), start);
+      if (cr == z3::sat) return unknown(r, UnknownReason::BoundReached, start);
       r.verdict = Verdict::Proved;
       r.k = 0;
       for (const auto& c : cands) r.invariant.clauses.push_back(to_smtlib(c));
-    } catch (const std::runtime_error& e) {
-      return unknown(r, e.what(), start);
+    } catch (const Stopped& e) {
+      return unknown(r, e.reason, start);
     } catch (const z3::exception& e) {
-      return unknown(r, unknown_reason(e.msg(), limits), start);
+      return unknown(r, unknown_reason(e.msg(), limits, meter, &r.detail), start);
     }
+    r.work = meter.spent();
     r.seconds = seconds_since(start);
     return r;
   }
 
  private:
-  static ProverResult unknown(ProverResult& r, const std::string& why, std::chrono::steady_clock::time_point start) {
+  static ProverResult unknown(ProverResult& r, UnknownReason why, Clock::time_point start) {
     r.verdict = Verdict::Unknown;
     r.reason = why;
     r.invariant = {};
@@ -135,11 +136,11 @@ class RelationalInduction : public Prover {
   // Drops every candidate (at cycle k) that a model of `s` violates, until
   // the rest hold in every model.
   static void keep_valid(z3::solver& s, std::vector<z3::expr>& cands, encoder::Unroller& u, UfAbstraction& abstract,
-                         int k, const Limits& limits) {
+                         int k, const Limits& limits, WorkMeter& meter) {
     z3::context& ctx = s.ctx();
     for (;;) {
       if (cands.empty()) return;
-      if (limits.over()) throw std::runtime_error("time limit");
+      if (limits.interrupted()) throw Stopped{UnknownReason::TimeLimit};
       std::vector<z3::expr> at;
       z3::expr_vector some_false(ctx);
       for (const auto& c : cands) {
@@ -148,16 +149,15 @@ class RelationalInduction : public Prover {
       }
       s.push();
       s.add(z3::mk_or(some_false));
-      set_timeout(s, limits);
-      z3::check_result r = s.check();
+      z3::check_result r = check_within(s, meter);
       if (r == z3::unsat) {
         s.pop();
         return;
       }
       if (r == z3::unknown) {
-        std::string why = unknown_reason(s.reason_unknown(), limits);
+        UnknownReason why = unknown_reason(s.reason_unknown(), limits, meter);
         s.pop();
-        throw std::runtime_error(why);
+        throw Stopped{why};
       }
       z3::model m = s.get_model();
       std::vector<z3::expr> keep;

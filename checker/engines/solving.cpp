@@ -35,7 +35,7 @@ void Watchdog::watch() {
   std::unique_lock<std::mutex> lock(mutex_);
   while (!done_) {
     wake_.wait_for(lock, std::chrono::milliseconds(10));
-    if (!done_ && limits_.over()) {
+    if (!done_ && limits_.interrupted()) {
       discard_when_released(ctx_);
       ctx_.interrupt();
       fired_ = true;
@@ -43,22 +43,29 @@ void Watchdog::watch() {
   }
 }
 
-void set_timeout(z3::solver& s, const Limits& limits) {
-  auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
-      limits.deadline - std::chrono::steady_clock::now());
-  long long ms = left.count();
-  if (limits.deadline == std::chrono::steady_clock::time_point::max() || ms > 4000000000LL) return;
-  z3::params p(s.ctx());
-  p.set("timeout", static_cast<unsigned>(ms < 1 ? 1 : ms));
-  s.set(p);
+z3::check_result check_within(z3::solver& s, WorkMeter& meter) {
+  if (!meter.arm()) return z3::unknown;
+  return s.check();
 }
 
-std::string unknown_reason(const std::string& z3_reason, const Limits& limits) {
-  if (limits.over()) return "time limit";
-  if (z3_reason.find("memory") != std::string::npos) return "memory limit";
-  if (z3_reason.find("timeout") != std::string::npos || z3_reason.find("canceled") != std::string::npos)
-    return "time limit";
-  return z3_reason.empty() ? "solver gave up" : z3_reason;
+z3::check_result check_within(z3::solver& s, WorkMeter& meter, const z3::expr_vector& assumptions) {
+  if (!meter.arm()) return z3::unknown;
+  return s.check(assumptions);
+}
+
+UnknownReason unknown_reason(const std::string& z3_reason, const Limits& limits, std::string* detail) {
+  if (limits.interrupted()) return UnknownReason::TimeLimit;
+  if (z3_reason.find("memory") != std::string::npos) return UnknownReason::MemoryLimit;
+  if (z3_reason.find("resource") != std::string::npos) return UnknownReason::WorkLimit;
+  if (detail) *detail = z3_reason;
+  return UnknownReason::SolverGaveUp;
+}
+
+UnknownReason unknown_reason(const std::string& z3_reason, const Limits& limits, const WorkMeter& meter,
+                             std::string* detail) {
+  if (limits.interrupted()) return UnknownReason::TimeLimit;
+  if (meter.exhausted()) return UnknownReason::WorkLimit;
+  return unknown_reason(z3_reason, limits, detail);
 }
 
 Value value_in(const z3::model& m, const z3::expr& e) {

@@ -1,7 +1,8 @@
-// What every engine needs around a Z3 solver: the wall-clock limit enforced
-// both by Z3's own `timeout` and by a watchdog that interrupts the context (a
-// `timeout` alone does not stop every tactic), values and traces read from a
-// model, and invariants moved between contexts as SMT-LIB text.
+// What every engine needs around a Z3 solver: checks within the engine's
+// budget of work (checker/limits.hpp), a watchdog that interrupts the context
+// when the user's wall clock or the run's cancel token says so, values and
+// traces read from a model, and invariants moved between contexts as SMT-LIB
+// text.
 #pragma once
 
 #include <condition_variable>
@@ -17,7 +18,7 @@
 
 namespace cemv::checker {
 
-// Interrupts `ctx` once the deadline passes or the cancel flag is set, and
+// Interrupts `ctx` once the deadline passes or the cancel token is set, and
 // again every few milliseconds until destroyed, so a solver call that starts
 // late is stopped too. Destroy it before the Z3 objects the engine made (a
 // fixedpoint in particular): it clears the cancellation on the way out.
@@ -39,11 +40,25 @@ class Watchdog {
   std::thread thread_;
 };
 
-// The remaining time as the solver's `timeout` parameter (ms, at least 1).
-void set_timeout(z3::solver& s, const Limits& limits);
-// Why a check returned unknown: "time limit" once the deadline (or a cancel)
-// has passed, "memory limit" for Z3's memory-out, else Z3's own reason.
-std::string unknown_reason(const std::string& z3_reason, const Limits& limits);
+// One solver check within the meter's budget; unknown, without a call, when
+// nothing is left.
+z3::check_result check_within(z3::solver& s, WorkMeter& meter);
+z3::check_result check_within(z3::solver& s, WorkMeter& meter, const z3::expr_vector& assumptions);
+
+// Why a check returned unknown: TimeLimit once the question is interrupted
+// (wall clock, cancel), WorkLimit once the meter's budget is spent,
+// MemoryLimit for Z3's memory-out, else SolverGaveUp with Z3's words in
+// `detail`.
+UnknownReason unknown_reason(const std::string& z3_reason, const Limits& limits, const WorkMeter& meter,
+                             std::string* detail = nullptr);
+// The same where no meter ran (an exception outside a check).
+UnknownReason unknown_reason(const std::string& z3_reason, const Limits& limits, std::string* detail = nullptr);
+
+// Thrown by an engine's inner loop (Houdini, mining) when its limits end the
+// question; the engine turns it into its Unknown.
+struct Stopped {
+  UnknownReason reason;
+};
 
 // The concrete value of `e` (Bool, Int or Float32 term) in `m`.
 Value value_in(const z3::model& m, const z3::expr& e);

@@ -16,11 +16,14 @@ using namespace cemv::checker;
 
 namespace {
 
-void measure(const std::string& engine, const fixtures::NamedProblem& p, int seconds, int max_depth) {
+void measure(Method engine, const fixtures::NamedProblem& p, int seconds, int max_depth) {
   z3::context ctx;
   OwnedProblem o = p.make(ctx);
   auto t0 = std::chrono::steady_clock::now();
-  ProverResult r = make_prover(engine)->prove(o.problem, Limits::within(std::chrono::seconds(seconds), max_depth));
+  Limits l;
+  l.deadline = Clock::now() + std::chrono::seconds(seconds);
+  l.max_depth = max_depth;
+  ProverResult r = make_prover(engine)->prove(o.problem, l);
   double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::string checked = "-";
   if (r.verdict != Verdict::Unknown) {
@@ -29,17 +32,19 @@ void measure(const std::string& engine, const fixtures::NamedProblem& p, int sec
     checked = std::to_string(std::chrono::duration<double>(std::chrono::steady_clock::now() - c0).count());
   }
   std::printf("| %-44s | %-20s | %-9s | %-13s | k=%-6d | cex %6zu | %8.3f s | recheck %s s |\n", p.name.c_str(),
-              engine.c_str(), to_string(r.verdict).c_str(), r.reason.c_str(), r.k, r.cex.length(), s,
+              to_string(engine), to_string(r.verdict).c_str(), r.reason_text().c_str(), r.k, r.cex.length(), s,
               checked.c_str());
   std::fflush(stdout);
 }
 
 void portfolio(const fixtures::NamedProblem& p, int seconds) {
   auto t0 = std::chrono::steady_clock::now();
-  ProverResult r = Portfolio(p.make).run(Limits::within(std::chrono::seconds(seconds), 1000));
+  Limits l;
+  l.deadline = Clock::now() + std::chrono::seconds(seconds);
+  ProverResult r = Portfolio(p.make).run(l);
   double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::printf("| %-44s | %-20s | %-9s | %-13s | k=%-6d | cex %6zu | %8.3f s | (in portfolio) |\n", p.name.c_str(),
-              ("portfolio:" + r.method).c_str(), to_string(r.verdict).c_str(), r.reason.c_str(), r.k,
+              ("portfolio:" + r.method_text()).c_str(), to_string(r.verdict).c_str(), r.reason_text().c_str(), r.k,
               r.cex.length(), s);
   std::fflush(stdout);
 }
@@ -51,13 +56,13 @@ int main(int argc, char** argv) {
   auto holds = fixtures::override_instance_monitor(18000, Verdict::Proved);
   auto tight = fixtures::override_instance_monitor(17999, Verdict::Falsified);
   auto restart = fixtures::override_monitor(18000, Verdict::Falsified);
-  measure("invariants+induction", holds, 60, 1000);
-  measure("k-induction", holds, 60, 10);
-  measure("accelerated-bmc", tight, 60, 1000);
-  measure("accelerated-bmc", restart, 60, 1000);
+  measure(Method::InvariantsInduction, holds, 60, 1000);
+  measure(Method::KInduction, holds, 60, 10);
+  measure(Method::AcceleratedBmc, tight, 60, 1000);
+  measure(Method::AcceleratedBmc, restart, 60, 1000);
   portfolio(holds, 60);
   portfolio(tight, 60);
-  measure("bmc", tight, slow, 18001);
-  measure("pdr", holds, slow, 1000);
+  measure(Method::Bmc, tight, slow, 18001);
+  measure(Method::Pdr, holds, slow, 1000);
   return 0;
 }

@@ -1,5 +1,5 @@
-// cemv_checker_probe MATRIX PROPS SECONDS [NAME...]: every engine alone on
-// every property (or the named ones), each with SECONDS of wall clock, on the
+// cemv_checker_probe MATRIX PROPS WORK [NAME...]: every engine alone on
+// every property (or the named ones), each with WORK million Z3 resource units, on the
 // property's cone of influence; then the portfolio. The table tells which
 // engine decides which property, and how fast: what the portfolio's schedule
 // and docs/performance.md are based on. Built with the tests, not run by ctest.
@@ -49,10 +49,11 @@ int main(int argc, char** argv) {
   }
   properties::PropertyFile f = std::string(argv[2]) == "standard" ? properties::standard_properties(m)
                                                                    : properties::load_properties(argv[2], m);
-  const int seconds = std::atoi(argv[3]);
+  const double mega = std::atof(argv[3]);
+  const Work work = static_cast<Work>(mega * kMega);
   if (std::getenv("PROBE_CHECK")) {  // check_properties as the benchmark runs it, one line per property
     CheckOptions o;
-    o.property_timeout_s = seconds;
+    o.budgets.engine = work;
     o.support = false;
     o.standard = true;
     o.on_result = [](const PropertyResult& r) {
@@ -66,7 +67,8 @@ int main(int argc, char** argv) {
     return 0;
   }
   std::set<std::string> only(argv + 4, argv + argc);
-  const std::vector<std::string> engines{"bmc", "k-induction", "invariants+induction", "pdr", "accelerated-bmc"};
+  const std::vector<Method> engines{Method::Bmc, Method::KInduction, Method::InvariantsInduction, Method::Pdr,
+                                    Method::AcceleratedBmc};
   for (const auto& p : f.properties) {
     if (!only.empty() && !only.count(p.name)) continue;
     ProblemFactory make = property_problem(m, f, p);
@@ -101,23 +103,26 @@ int main(int argc, char** argv) {
       z3::context ctx;
       OwnedProblem o = make(ctx);
       auto t0 = std::chrono::steady_clock::now();
-      ProverResult r = make_prover(e, 10)->prove(o.problem, Limits::within(std::chrono::seconds(seconds), 1000));
+      ProverResult r = make_prover(e, 10)->prove(o.problem, Limits{}.with_work(work));
       double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      std::printf("| %-34s | %-20s | %-9s | k=%-4d | %-14s | %7.3f s |\n", p.name.c_str(), e.c_str(),
-                  to_string(r.verdict).c_str(), r.k, r.reason.c_str(), s);
+      std::printf("| %-34s | %-20s | %-9s | k=%-4d | %-14s | %7.3f s | %llu work |\n", p.name.c_str(), to_string(e),
+                  to_string(r.verdict).c_str(), r.k, r.reason_text().c_str(), s,
+                  static_cast<unsigned long long>(r.work));
       std::fflush(stdout);
     }
     auto t0 = std::chrono::steady_clock::now();
     ProverResult r;
     try {
-      r = Portfolio(make).run(Limits::within(std::chrono::seconds(seconds), 1000));
+      PortfolioOptions po;
+      po.engine_work = work;
+      r = Portfolio(make, po).run(Limits{});
     } catch (const std::exception& e) {
       std::printf("| %-34s | portfolio failed: %s |\n", p.name.c_str(), e.what());
       continue;
     }
     double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::printf("| %-34s | %-20s | %-9s | k=%-4d | %-14s | %7.3f s |\n", p.name.c_str(),
-                ("portfolio:" + r.method).c_str(), to_string(r.verdict).c_str(), r.k, r.reason.c_str(), s);
+                ("portfolio:" + r.method_text()).c_str(), to_string(r.verdict).c_str(), r.k, r.reason_text().c_str(), s);
     std::fflush(stdout);
   }
 }

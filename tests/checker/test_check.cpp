@@ -22,20 +22,20 @@ namespace {
 ProverResult solve(Prover& prover, const fixtures::NamedProblem& p) {
   z3::context ctx;
   OwnedProblem o = p.make(ctx);
-  return prover.prove(o.problem, Limits::within(std::chrono::seconds(30), 30));
+  return prover.prove(o.problem, Limits{}.with_work(60 * kMega).with_depth(30));
 }
 
 TEST(Recheck, AcceptsTheHippsOverrideProof) {
   auto p = fixtures::override_instance_monitor(18000, Verdict::Proved);
   ProverResult r = solve(*make_invariant_prover(), p);
-  ASSERT_EQ(r.verdict, Verdict::Proved) << r.reason;
+  ASSERT_EQ(r.verdict, Verdict::Proved) << r.reason_text();
   EXPECT_NO_THROW(check::recheck_proof(p.make, r));
 }
 
 TEST(Recheck, RejectsAProofWhoseInvariantIsWeakened) {
   auto p = fixtures::override_instance_monitor(18000, Verdict::Proved);
   ProverResult r = solve(*make_invariant_prover(), p);
-  ASSERT_EQ(r.verdict, Verdict::Proved) << r.reason;
+  ASSERT_EQ(r.verdict, Verdict::Proved) << r.reason_text();
   // Drop the relation between the monitor and the override timer.
   std::vector<std::string> kept;
   for (const auto& c : r.invariant.clauses)
@@ -48,7 +48,7 @@ TEST(Recheck, RejectsAProofWhoseInvariantIsWeakened) {
 TEST(Recheck, RejectsAnInvariantThatIsNotInductive) {
   auto p = fixtures::guarded_counter(3);
   ProverResult r = solve(*make_invariant_prover(), p);
-  ASSERT_EQ(r.verdict, Verdict::Proved) << r.reason;
+  ASSERT_EQ(r.verdict, Verdict::Proved) << r.reason_text();
   r.invariant.clauses.push_back("(<= x 1)");  // true initially, not preserved
   EXPECT_THROW(check::recheck_proof(p.make, r), InternalError);
 }
@@ -57,7 +57,7 @@ TEST(Recheck, RejectsAProofOfAFalseProperty) {
   auto p = fixtures::guarded_counter(2);
   ProverResult forged;
   forged.verdict = Verdict::Proved;
-  forged.method = "forged";
+  forged.method = Method::KInduction;
   forged.k = 2;
   EXPECT_THROW(check::recheck_proof(p.make, forged), InternalError);
 }
@@ -70,7 +70,7 @@ TEST(Recheck, SimplePathProofOfTheLasso) {
   plain.mine_invariants = false;
   KInduction with_simple_path(plain);
   ProverResult r = solve(with_simple_path, p);
-  ASSERT_EQ(r.verdict, Verdict::Proved) << r.reason;
+  ASSERT_EQ(r.verdict, Verdict::Proved) << r.reason_text();
   EXPECT_TRUE(r.simple_path);
   EXPECT_EQ(r.k, 2);
   EXPECT_NO_THROW(check::recheck_proof(p.make, r));
@@ -81,7 +81,7 @@ TEST(Recheck, SimplePathProofOfTheLasso) {
   KInduction without(plain);
   ProverResult u = solve(without, p);
   EXPECT_EQ(u.verdict, Verdict::Unknown);
-  EXPECT_EQ(u.reason, "bound reached");
+  EXPECT_EQ(u.reason, UnknownReason::BoundReached);
 }
 
 TEST(Replay, AcceptsABmcCounterexample) {
@@ -165,8 +165,8 @@ TEST(SmtlibExport, Cvc5ConfirmsTheProofObligations) {
   for (auto& item : items) {
     z3::context ctx;
     OwnedProblem o = item.problem.make(ctx);
-    ProverResult r = item.prover->prove(o.problem, Limits::within(std::chrono::seconds(30), 10));
-    ASSERT_EQ(r.verdict, Verdict::Proved) << item.problem.name << " " << r.reason;
+    ProverResult r = item.prover->prove(o.problem, Limits{}.with_work(60 * kMega).with_depth(10));
+    ASSERT_EQ(r.verdict, Verdict::Proved) << item.problem.name << " " << r.reason_text();
     auto obligations = check::proof_obligations_smtlib(o.problem, r);
     ASSERT_GE(obligations.size(), 3u);
     for (const auto& ob : obligations) {

@@ -32,7 +32,7 @@ struct EngineCase {
   bool proves;          // can answer Proved
   int max_cex_cycles;   // finds every counterexample up to this length (base case / BMC)
   bool finds_deep_cex;  // finds the counterexamples thousands of cycles long
-  bool times_out_deep;  // cannot decide the 18,000-cycle timer problems in time
+  bool times_out_deep;  // cannot decide the 18,000-cycle timer problems within its budget
 };
 
 std::vector<EngineCase> engines() {
@@ -93,20 +93,22 @@ TEST_P(Engines, AnswerIsExpectedOrUndecidedByDesign) {
   OwnedProblem owned = c.problem.make(ctx);
   auto prover = c.engine.make();
   const bool undecided = c.problem.deep && c.engine.times_out_deep;
-  Limits limits = Limits::within(std::chrono::seconds(undecided ? 3 : 30), std::min(c.engine.max_cex_cycles - 1, 30));
+  Limits limits;
+  limits.work = (undecided ? 3 : 60) * kMega;
+  limits.max_depth = std::min(c.engine.max_cex_cycles - 1, 30);
   ProverResult r = prover->prove(owned.problem, limits);
-  SCOPED_TRACE(r.method + " " + to_string(r.verdict) + " k=" + std::to_string(r.k) + " " + r.reason);
+  SCOPED_TRACE(r.method_text() + " " + to_string(r.verdict) + " k=" + std::to_string(r.k) + " " + r.reason_text());
   bool can = c.problem.expected == Verdict::Proved ? c.engine.proves
                                                    : c.problem.cex_length <= c.engine.max_cex_cycles ||
                                                          (c.problem.deep && c.engine.finds_deep_cex);
   if (undecided) {
     ASSERT_EQ(r.verdict, Verdict::Unknown);
-    EXPECT_EQ(r.reason, "time limit");
+    EXPECT_EQ(r.reason, UnknownReason::WorkLimit);
   } else if (can) {
     ASSERT_EQ(r.verdict, c.problem.expected);
   } else {
     ASSERT_EQ(r.verdict, Verdict::Unknown);
-    EXPECT_EQ(r.reason, "bound reached");
+    EXPECT_EQ(r.reason, UnknownReason::BoundReached);
   }
   // Only the BMC-based searches promise a shortest counterexample.
   const bool shortest = c.engine.name != "accelerated_bmc";
@@ -133,10 +135,10 @@ INSTANTIATE_TEST_SUITE_P(EnginesTimesModels, Engines, ::testing::ValuesIn(cases(
 
 namespace {
 
-// The watchdog cancels the solver when the deadline passes, also while BMC
-// reads the model of a satisfiable depth (on a whole generated matrix that
-// takes longer than the check). A Falsified must always carry its
-// counterexample: with deadlines spread over a full run, every answer is
+// The watchdog interrupts the solver when the user's deadline passes, also
+// while BMC reads the model of a satisfiable depth (on a whole generated
+// matrix that takes longer than the check). A Falsified must always carry
+// its counterexample: with deadlines spread over a full run, every answer is
 // either Falsified with k + 1 cycles or Unknown "time limit". (BMC once
 // returned Falsified with an empty trace there, which the test generator
 // took for a witness the runtime did not reproduce: bench_testgen on the
@@ -152,11 +154,14 @@ TEST(BmcDeadline, FalsifiedAlwaysCarriesItsTrace) {
     std::shared_ptr<encoder::Encoding> enc = encoder::encode(ctx, m, {});
     const z3::expr good = !*enc->ts.term("effect[1].active");
     const auto t0 = std::chrono::steady_clock::now();
-    ProverResult r = Bmc{}.prove(SafetyProblem{&enc->ts, good, ctx.bool_val(true)}, Limits::within(budget, 3));
+    Limits l;
+    l.max_depth = 3;
+    l.deadline = t0 + budget;
+    ProverResult r = Bmc{}.prove(SafetyProblem{&enc->ts, good, ctx.bool_val(true)}, l);
     return std::pair{r, std::chrono::duration_cast<std::chrono::milliseconds>(std::chrono::steady_clock::now() - t0)};
   };
   const auto [full, took] = run(std::chrono::milliseconds(120000));
-  ASSERT_EQ(full.verdict, Verdict::Falsified) << full.reason;
+  ASSERT_EQ(full.verdict, Verdict::Falsified) << full.reason_text();
   for (int i = 1; i <= 8; ++i) {
     const auto [r, t] = run(took * i / 8);
     SCOPED_TRACE("deadline " + std::to_string((took * i / 8).count()) + " ms");
@@ -165,9 +170,30 @@ TEST(BmcDeadline, FalsifiedAlwaysCarriesItsTrace) {
       EXPECT_GE(r.cex.length(), 1u);
     } else {
       EXPECT_EQ(r.verdict, Verdict::Unknown);
-      EXPECT_EQ(r.reason, "time limit");
+      EXPECT_EQ(r.reason, UnknownReason::TimeLimit);
     }
   }
+}
+
+// A budget of work ends a search at the same point on every run: the
+// same depth reached, the same resource count spent.
+TEST(BmcBudget, TheSameBudgetStopsAtTheSameDepth) {
+  testsupport::MatrixOptions o;
+  o.min_causes = o.max_causes = 24;
+  o.min_effects = o.max_effects = 24;
+  o.intersections = 96;
+  const model::Matrix m = testsupport::random_matrix(7, o);
+  auto run = [&](Work budget) {
+    z3::context ctx;
+    std::shared_ptr<encoder::Encoding> enc = encoder::encode(ctx, m, {});
+    const z3::expr never = ctx.bool_val(true);
+    return Bmc{}.prove(SafetyProblem{&enc->ts, never, ctx.bool_val(true)}, Limits{}.with_work(budget).with_depth(200));
+  };
+  const ProverResult a = run(kMega / 5), b = run(kMega / 5);
+  ASSERT_EQ(a.verdict, Verdict::Unknown);
+  EXPECT_EQ(a.reason, UnknownReason::WorkLimit);
+  EXPECT_EQ(a.k, b.k);
+  EXPECT_EQ(a.work, b.work);
 }
 
 }  // namespace

@@ -54,14 +54,13 @@ const std::vector<model::Node> kCause1AndEffect1{{model::Node::Kind::Cause, 1}, 
 
 // The portfolio on a fixture's property, localized to cause 1 and effect 1
 // first; every problem counts as wide, so `engines` are its wide engines.
-ProverResult localized_portfolio(const Fixture& f, std::size_t property, std::vector<std::string> engines) {
+ProverResult localized_portfolio(const Fixture& f, std::size_t property, std::vector<Method> engines) {
   PortfolioOptions o;
   o.quick_k = -1;
-  o.in_order_max_states = 0;
+  o.wide_states = 0;
   o.wide_engines = std::move(engines);
   o.localize_keep = keep_elements(kCause1AndEffect1);
-  return Portfolio(property_problem(f.m, f.file, f.file.properties.at(property)), o)
-      .run(Limits::within(std::chrono::seconds(60)));
+  return Portfolio(property_problem(f.m, f.file, f.file.properties.at(property)), o).run(Limits{});
 }
 
 TEST(Localize, FreesTheStateOfOtherElementsOnly) {
@@ -84,13 +83,14 @@ TEST(Localize, ProofOnTheLocalizationReChecksOnTheWholeProblem) {
   OwnedProblem whole = f.make(0)(ctx);
   auto local = localize(whole, keep_elements(kCause1AndEffect1));
   ASSERT_TRUE(local.has_value());
-  ProverResult r = Pdr{}.prove(local->problem, Limits::within(std::chrono::seconds(60)));
-  ASSERT_EQ(r.verdict, Verdict::Proved) << r.reason;
+  ProverResult r = Pdr{}.prove(local->problem, Limits{}.with_work(60 * kMega));
+  ASSERT_EQ(r.verdict, Verdict::Proved) << r.reason_text();
   EXPECT_NO_THROW(check::recheck_proof(f.make(0), r));
   // Through the portfolio: the localized answer, re-checked there.
-  ProverResult p = localized_portfolio(f, 0, {"bmc"});
-  EXPECT_EQ(p.verdict, Verdict::Proved) << p.reason;
-  EXPECT_NE(p.method.find(", localized"), std::string::npos) << p.method;
+  ProverResult p = localized_portfolio(f, 0, {Method::Bmc});
+  EXPECT_EQ(p.verdict, Verdict::Proved) << p.reason_text();
+  EXPECT_TRUE(p.localized) << p.method_text();
+  EXPECT_NE(p.method_text().find(", localized"), std::string::npos) << p.method_text();
 }
 
 TEST(Localize, SpuriousCounterexampleIsNotConcretizedAndTheWholeProblemDecides) {
@@ -100,13 +100,12 @@ TEST(Localize, SpuriousCounterexampleIsNotConcretizedAndTheWholeProblemDecides) 
   // Cause 2's on-delay counter freed: cause 2 may be active as soon as S2 trips.
   auto local = localize(whole, keep_elements(kCause1AndEffect1));
   ASSERT_TRUE(local.has_value());
-  Limits limits = Limits::within(std::chrono::seconds(60), 20);
-  ProverResult r = Bmc{}.prove(local->problem, limits);
-  ASSERT_EQ(r.verdict, Verdict::Falsified) << r.reason;
+  ProverResult r = Bmc{}.prove(local->problem, Limits{}.with_depth(20));
+  ASSERT_EQ(r.verdict, Verdict::Falsified) << r.reason_text();
   EXPECT_FALSE(concretize(whole.problem, r.cex).has_value());
-  ProverResult p = localized_portfolio(f, 1, {"pdr", "k-induction"});
-  EXPECT_EQ(p.verdict, Verdict::Proved) << p.reason;
-  EXPECT_EQ(p.method.find("localized"), std::string::npos) << p.method;
+  ProverResult p = localized_portfolio(f, 1, {Method::Pdr, Method::KInduction});
+  EXPECT_EQ(p.verdict, Verdict::Proved) << p.reason_text();
+  EXPECT_FALSE(p.localized) << p.method_text();
 }
 
 TEST(Localize, RealCounterexampleOfTheLocalizationIsConcretized) {
@@ -121,8 +120,8 @@ TEST(Localize, RealCounterexampleOfTheLocalizationIsConcretized) {
   OwnedProblem whole = reducing(property_problem(f.m, file, file.properties.at(2)))(ctx);
   auto local = localize(whole, keep_elements({{model::Node::Kind::Cause, 1}}));
   ASSERT_TRUE(local.has_value());
-  ProverResult r = Bmc{}.prove(local->problem, Limits::within(std::chrono::seconds(60), 20));
-  ASSERT_EQ(r.verdict, Verdict::Falsified) << r.reason;
+  ProverResult r = Bmc{}.prove(local->problem, Limits{}.with_depth(20));
+  ASSERT_EQ(r.verdict, Verdict::Falsified) << r.reason_text();
   auto t = concretize(whole.problem, r.cex);
   ASSERT_EQ(r.cex.length(), 1u);
   ASSERT_TRUE(t.has_value());

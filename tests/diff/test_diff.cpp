@@ -59,7 +59,6 @@ Compared compare(const model::Matrix& a, const model::Matrix& b) {
   Compared c;
   c.structure = diff::compare_structure(a, b);
   diff::SemanticOptions o;
-  o.timeout = std::chrono::milliseconds(120000);
   c.behaviour = diff::compare_behaviour(a, b, c.structure, o);
   return c;
 }

@@ -54,7 +54,6 @@ TEST(MutationReport, ReferenceObjectiveAndInterfaceOnlyMutants) {
   }
 
   mutate::MutationOptions mo;
-  mo.equivalence_timeout = std::chrono::milliseconds(30000);
   const mutate::MutationReport report = mutate::mutation_report(m, suite, mo);
   auto find = [&](const std::string& id) {
     const auto it = std::find_if(report.mutants.begin(), report.mutants.end(), [&](const auto& o) { return o.id == id; });

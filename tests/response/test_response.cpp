@@ -83,7 +83,6 @@ class RemoveScratchWhenPassed : public ::testing::Environment {
 response::ResponseResult analyse(const model::Matrix& m, const std::filesystem::path& out, bool conservative = false) {
   response::ResponseOptions o;
   o.out_dir = out.string();
-  o.timeout_s = 120;
   o.conservative = conservative;
   return response::analyse(m, o);
 }
@@ -725,10 +724,10 @@ TEST(Response, InvariantEngineProvesTheBoundInOneStep) {
         response::response_property_text(m, path, response::Mode::Normal, t, "probe"), m, "probe");
     z3::context ctx;
     auto problem = checker::reduce(checker::property_problem(m, file, file.properties.at(0))(ctx));
-    auto r = checker::make_prover("invariants+induction")
-                 ->prove(problem.problem, checker::Limits::within(std::chrono::seconds(120)));
+    auto r = checker::make_prover(checker::Method::InvariantsInduction)
+                 ->prove(problem.problem, checker::Limits{}.with_work(60 * checker::kMega));
     if (t == 30) {
-      EXPECT_EQ(r.verdict, checker::Verdict::Proved) << r.reason;
+      EXPECT_EQ(r.verdict, checker::Verdict::Proved) << r.reason_text();
       EXPECT_LE(r.k, 1);
     } else {
       EXPECT_NE(r.verdict, checker::Verdict::Proved);
@@ -755,7 +754,9 @@ TEST(Response, WideConeIsProvedOnItsLocalization) {
     if (p.effect == 23 && p.causes == std::vector<int>{124}) path = p;
   ASSERT_EQ(path.effect, 23);
   auto dir = scratch("wide_cone");
-  const Figure f = response::least_response(m, path, response::Mode::Normal, {60, dir.string()});
+  response::SearchOptions so;
+  so.out_dir = dir.string();
+  const Figure f = response::least_response(m, path, response::Mode::Normal, so);
   ASSERT_EQ(f.kind, Figure::Kind::Exact) << f.reason;
   EXPECT_EQ(f.cycles, 13);
   EXPECT_EQ(f.method, "pdr, localized");
@@ -779,7 +780,6 @@ TEST(Response, WideConeIsProvedOnItsLocalization) {
 TEST(Response, ProgressSeesEveryPathOnce) {
   auto m = formats::load_matrix(std::filesystem::path(CEMV_SOURCE_DIR) / "examples/tank-overfill/matrix.json");
   response::ResponseOptions o;
-  o.timeout_s = 120;
   o.jobs = 2;
   std::size_t planned = 0;
   std::vector<std::string> started, done;
@@ -813,7 +813,6 @@ TEST(Response, RandomMatricesAreDecidedAndTheirCounterexamplesReplay) {
     auto dir = scratch("random_" + std::to_string(seed));
     response::ResponseOptions o;
     o.out_dir = dir.string();
-    o.timeout_s = 20;
     o.jobs = 2;
     const auto r = response::analyse(m, o);
     for (const auto& p : r.paths) {

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# watchdog.sh CEMV MATRIX PROPS TMPDIR: a checker that never returns is ended
+# watchdog.sh CEMV MATRIX PROPS TMPDIR: a checker that only its cancel token ends is ended
 # by --total-timeout on time; the JSON report is complete and valid, says
 # `interrupted`, keeps the verdicts already found and reports the rest unknown
 # with reason "time limit"; the exit status is that of those verdicts.

@@ -35,7 +35,15 @@ PropertyResult decide(const properties::PropertyFile& f, const properties::Prope
   r.seconds = 0.001;
   if (has(p.name, "internal")) throw InternalError("replayed trace does not violate '" + p.name + "'");
   if (has(p.name, "crash")) throw std::runtime_error("solver exception: out of memory");
-  if (has(p.name, "hang")) std::this_thread::sleep_for(std::chrono::hours(1));
+  // Like every engine, a property that never ends by itself polls the
+  // run's cancel token: --total-timeout ends it.
+  if (has(p.name, "hang")) {
+    while (!(o.cancel && o.cancel->cancelled())) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    r.verdict = PropertyVerdict::Unknown;
+    r.unknown = UnknownReason::TimeLimit;
+    r.reason = "time limit";
+    return r;
+  }
   if (has(p.name, "nap")) std::this_thread::sleep_for(std::chrono::milliseconds(200));
   if (has(p.name, "falsified") || (has(p.name, "reachable") && !has(p.name, "unreachable"))) {
     r.verdict = has(p.name, "falsified") ? PropertyVerdict::Falsified : PropertyVerdict::Reachable;
@@ -78,9 +86,23 @@ CheckResult check_properties(const model::Matrix& m, const std::vector<propertie
   for (const auto& f : files)
     for (const auto& p : f.properties)
       if (in_shard(index++, options.shard_index, options.shard_count)) {
+        if (options.cancel && options.cancel->cancelled()) {
+          PropertyResult r;
+          r.name = p.name;
+          r.file = f.file_name;
+          r.line = p.loc.line;
+          r.column = p.loc.column;
+          r.kind = properties::to_string(p.kind);
+          r.verdict = PropertyVerdict::Unknown;
+          r.unknown = UnknownReason::TimeLimit;
+          r.reason = "time limit";
+          result.properties.push_back(r);
+          continue;
+        }
         result.properties.push_back(decide(f, p, options));
         if (options.on_result) options.on_result(result.properties.back());
       }
+  result.interrupted = options.cancel && options.cancel->cancelled();
   return result;
 }
 

@@ -1,0 +1,37 @@
+#include "checker/limits.hpp"
+
+#include <string>
+
+namespace cemv::checker {
+
+Work resource_count(z3::context& ctx) {
+  z3::solver s(ctx);
+  z3::stats st = s.statistics();
+  for (unsigned i = 0; i < st.size(); ++i)
+    if (st.key(i) == "rlimit count")
+      return st.is_uint(i) ? st.uint_value(i) : static_cast<Work>(st.double_value(i));
+  return 0;
+}
+
+WorkMeter::WorkMeter(z3::context& ctx, Work budget) : ctx_(ctx), budget_(budget), start_(resource_count(ctx)) {}
+
+WorkMeter::~WorkMeter() { Z3_update_param_value(ctx_, "rlimit", "0"); }
+
+Work WorkMeter::spent() const { return resource_count(ctx_) - start_; }
+
+bool WorkMeter::arm() {
+  if (budget_ == 0) {
+    Z3_update_param_value(ctx_, "rlimit", "0");
+    return true;
+  }
+  const Work used = spent();
+  if (used >= budget_) return false;
+  // The limit is relative to the count when a check starts (Z3's
+  // scoped_rlimit), and an unsigned int.
+  Work left = budget_ - used;
+  if (left > 4000000000ULL) left = 4000000000ULL;
+  Z3_update_param_value(ctx_, "rlimit", std::to_string(left).c_str());
+  return true;
+}
+
+}  // namespace cemv::checker

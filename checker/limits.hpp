@@ -1,0 +1,109 @@
+// What bounds a question to an engine: work, never seconds, so that an
+// answer does not depend on the machine or its load (docs/checker.md,
+// "Budgets"). Work is counted in Z3's own deterministic effort measure (its
+// resource limit, `rlimit`), depth in cycles or k. The wall clock bounds only
+// what the user asked it to bound (--timeout, --total-timeout): when it runs
+// out, the open question is abandoned and reported unknown ("time limit"),
+// never answered differently.
+#pragma once
+
+#include <atomic>
+#include <chrono>
+#include <cstdint>
+
+#include <z3++.h>
+
+namespace cemv::checker {
+
+using Clock = std::chrono::steady_clock;
+
+// Z3 resource units. One million is about 0.5 to 1 s of solver time on the
+// reference machine (docs/performance.md); the figure varies with the problem,
+// the count does not.
+using Work = std::uint64_t;
+constexpr Work kMega = 1000000;
+
+// The one cancel token of a run (one work queue, checker/work_queue.hpp): set
+// when a worker fails, when the run's wall-clock bound (--total-timeout) is
+// reached, or by the caller. Every engine polls it through Limits.
+class CancelToken {
+ public:
+  CancelToken() = default;
+  explicit CancelToken(Clock::time_point deadline) : deadline_(deadline) {}
+  CancelToken(const CancelToken&) = delete;
+  CancelToken& operator=(const CancelToken&) = delete;
+
+  void cancel() { cancelled_ = true; }
+  // Cancelled, or the run's deadline has passed.
+  bool cancelled() const { return cancelled_.load() || (deadline_ != Clock::time_point::max() && Clock::now() >= deadline_); }
+  Clock::time_point deadline() const { return deadline_; }
+
+ private:
+  std::atomic<bool> cancelled_{false};
+  Clock::time_point deadline_ = Clock::time_point::max();
+};
+
+struct Limits {
+  // Work this call may spend (0: no bound of its own; an engine then stops
+  // at its depth bound only).
+  Work work = 0;
+  int max_depth = 1000;  // cycles (BMC), k (k-induction), macro steps (accelerated BMC)
+  // The user's wall-clock bound of this question (--timeout).
+  Clock::time_point deadline = Clock::time_point::max();
+  const CancelToken* cancel = nullptr;
+
+  // The question was interrupted: the wall clock or the cancel token. Its
+  // answer, whatever an engine had, is abandoned.
+  bool interrupted() const {
+    return (cancel && cancel->cancelled()) || (deadline != Clock::time_point::max() && Clock::now() >= deadline);
+  }
+  // The same limits with another work budget or depth.
+  Limits with_work(Work w) const {
+    Limits l = *this;
+    l.work = w;
+    return l;
+  }
+  Limits with_depth(int d) const {
+    Limits l = *this;
+    l.max_depth = d;
+    return l;
+  }
+};
+
+// Thrown where an interrupted question cannot end with an answer of its own
+// (a re-check, a replay, a search over many engines): the question is then
+// Unknown ("time limit").
+struct Interrupted {};
+
+// Throws Interrupted when `limits` say the question is interrupted.
+inline void stop_if_interrupted(const Limits& limits) {
+  if (limits.interrupted()) throw Interrupted{};
+}
+
+// The work an engine has spent against its budget. Every solver check and
+// fixedpoint query of the engine is armed first: the context's resource limit
+// is set to what is left, so that Z3 stops exactly there on every machine.
+class WorkMeter {
+ public:
+  WorkMeter(z3::context& ctx, Work budget);
+  // Leaves the context without a resource limit, for whoever checks next.
+  ~WorkMeter();
+  WorkMeter(const WorkMeter&) = delete;
+  WorkMeter& operator=(const WorkMeter&) = delete;
+  // Sets the context's resource limit to the work left (or none). False when
+  // nothing is left: the caller stops with UnknownReason::WorkLimit.
+  bool arm();
+  Work spent() const;
+  bool exhausted() const { return budget_ != 0 && spent() >= budget_; }
+  Work budget() const { return budget_; }
+
+ private:
+  z3::context& ctx_;
+  Work budget_;
+  Work start_;
+};
+
+// Z3's count of resource units spent in `ctx` so far.
+Work resource_count(z3::context& ctx);
+
+}  // namespace cemv::checker

@@ -1,0 +1,42 @@
+#include "checker/work_queue.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace cemv::checker {
+
+std::size_t WorkQueue::run(std::size_t n, const std::function<void(std::size_t)>& task) {
+  std::atomic<std::size_t> next{0};
+  std::atomic<std::size_t> finished{0};
+  std::mutex mutex;
+  std::exception_ptr failure;
+  auto worker = [&] {
+    for (;;) {
+      if (cancel_.cancelled()) return;
+      const std::size_t i = next++;
+      if (i >= n) return;
+      try {
+        task(i);
+        ++finished;
+      } catch (...) {
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!failure) failure = std::current_exception();
+        cancel_.cancel();
+        return;
+      }
+    }
+  };
+  const int threads = static_cast<int>(std::min<std::size_t>(static_cast<std::size_t>(jobs_), std::max<std::size_t>(n, 1)));
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
+  return finished;
+}
+
+}  // namespace cemv::checker
