@@ -10,6 +10,7 @@
 #include <mutex>
 #include <optional>
 
+#include "checker/cone_group.hpp"
 #include "checker/property_checker.hpp"
 #include "checker/work_queue.hpp"
 #include "formats/matrix_json.hpp"
@@ -95,17 +96,28 @@ CheckResult check_properties(const model::Matrix& m, const std::vector<propertie
   };
   WorkQueue queue(options.jobs, cancel);
 
-  // 1. Decide.
-  queue.run(jobs.size(), [&](std::size_t i) {
-    Job& j = jobs[i];
-    if (options.on_start) {
-      std::lock_guard<std::mutex> lock(report_mutex);
-      options.on_start(j.property->name);
+  // 1. Decide, a cone group at a time (checker/cone_group.hpp): the group's
+  // shared questions first, then each member's own checker.
+  std::vector<GroupMember> members;
+  for (const auto& j : jobs) members.push_back({j.file, j.property});
+  const std::vector<std::vector<std::size_t>> groups = cone_groups(m, members);
+  queue.run(groups.size(), [&](std::size_t g) {
+    std::vector<GroupMember> group;
+    for (std::size_t i : groups[g]) group.push_back(members[i]);
+    Limits shared;
+    shared.cancel = &cancel;
+    std::vector<EarlyAnswer> early = ConeGroup(m, group, options).decide(shared);
+    for (std::size_t k = 0; k < groups[g].size(); ++k) {
+      Job& j = jobs[groups[g][k]];
+      if (options.on_start) {
+        std::lock_guard<std::mutex> lock(report_mutex);
+        options.on_start(j.property->name);
+      }
+      j.checker = std::make_unique<PropertyChecker>(m, *j.file, *j.property, options, std::move(early[k]));
+      j.result = j.checker->decide(j.clock.limits(cancel));
+      j.clock.used_s += j.result->seconds;
+      if (!j.checker->needs_vacuity(*j.result) && !j.checker->needs_support(*j.result)) report(j);
     }
-    j.checker = std::make_unique<PropertyChecker>(m, *j.file, *j.property, options);
-    j.result = j.checker->decide(j.clock.limits(cancel));
-    j.clock.used_s += j.result->seconds;
-    if (!j.checker->needs_vacuity(*j.result) && !j.checker->needs_support(*j.result)) report(j);
   });
 
   // 2. Vacuity, answered first from every run of the first pass.
@@ -113,22 +125,28 @@ CheckResult check_properties(const model::Matrix& m, const std::vector<propertie
   for (auto& j : jobs)
     if (j.checker)
       for (auto& t : j.checker->take_runs()) known.add(std::move(t));
-  std::vector<Job*> open;
-  for (auto& j : jobs)
-    if (j.result && !j.done) open.push_back(&j);
-  queue.run(open.size(), [&](std::size_t i) {
-    Job& j = *open[i];
-    const double before = j.result->seconds;
-    j.checker->settle_vacuity(*j.result, known, j.clock.limits(cancel));
-    j.vacuity_settled = true;
-    j.clock.used_s += j.result->seconds - before;
-    if (!j.checker->needs_support(*j.result)) report(j);
+  // A cone group at a time again, its members in order, sharing what they
+  // find (checker/cone_group.hpp).
+  std::vector<std::vector<Job*>> open(groups.size());
+  for (std::size_t g = 0; g < groups.size(); ++g)
+    for (std::size_t i : groups[g])
+      if (jobs[i].result && !jobs[i].done) open[g].push_back(&jobs[i]);
+  queue.run(open.size(), [&](std::size_t g) {
+    WitnessPool group;
+    for (Job* j : open[g]) {
+      const double before = j->result->seconds;
+      j->checker->settle_vacuity(*j->result, known, group, j->clock.limits(cancel));
+      j->vacuity_settled = true;
+      j->clock.used_s += j->result->seconds - before;
+      if (!j->checker->needs_support(*j->result)) report(*j);
+    }
   });
 
   // 3. Support.
   std::vector<Job*> proofs;
-  for (auto* j : open)
-    if (!j->done && j->checker->needs_support(*j->result)) proofs.push_back(j);
+  for (const auto& members : open)
+    for (Job* j : members)
+      if (!j->done && j->checker->needs_support(*j->result)) proofs.push_back(j);
   queue.run(proofs.size(), [&](std::size_t i) {
     Job& j = *proofs[i];
     j.checker->find_support(*j.result, j.clock.limits(cancel));

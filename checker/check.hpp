@@ -33,7 +33,7 @@ namespace cemv::checker {
 struct CheckBudgets {
   Work engine = 20 * kMega;   // each engine of a decision (PDR and the accelerated unrolling twice)
   Work quick = 2 * kMega;     // the quick k-induction before the engines
-  Work shrink = 10 * kMega;   // making a counterexample readable
+  Work shrink = kMega;        // the solver's pass of making a counterexample readable (checker/shrink.hpp)
   Work vacuity = 4 * kMega;   // each engine of a vacuity question
   Work support = 2 * kMega;   // each engine of a support trial
 };

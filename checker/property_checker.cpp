@@ -21,6 +21,7 @@
 #include "model/text.hpp"
 #include "properties/evaluator.hpp"
 #include "properties/monitor.hpp"
+#include "properties/shape.hpp"
 
 namespace cemv::checker {
 
@@ -157,6 +158,15 @@ bool remap_inputs(properties::PropertyFile& f, properties::Property& p, const mo
 }  // namespace
 
 PropertyChecker::PropertyChecker(const model::Matrix& m, const properties::PropertyFile& file,
+                                 const properties::Property& p, const CheckOptions& options, EarlyAnswer early)
+    : m_(m), file_(file), p_(p), options_(options), roots_(properties::property_roots(p, file.assumptions, m)),
+      early_(std::move(early)) {
+  has_antecedent_ = early_.facts.has_antecedent;
+  preferred_ = early_.facts.preferred;
+  cone_space_ = early_.facts.space;
+}
+
+PropertyChecker::PropertyChecker(const model::Matrix& m, const properties::PropertyFile& file,
                                  const properties::Property& p, const CheckOptions& options)
     : m_(m), file_(file), p_(p), options_(options), roots_(properties::property_roots(p, file.assumptions, m)) {
   // Whether the monitor has an antecedent (a trigger, the left side of an
@@ -203,17 +213,36 @@ ProverResult PropertyChecker::ask(const model::Matrix& m, Goal goal, bool sliced
     if (!options_.engines.empty()) o.engines = options_.engines;
     o.wide_engines = options_.engines_when_wide;
     if (options_.max_k >= 0) o.max_k = options_.max_k;
-    if (!options_.localize_to.empty()) o.localize_keep = keep_elements(options_.localize_to);
+    // Localized to the elements the property names, unless the caller names
+    // others: a proof about one effect's own timers (an output delay held
+    // back) needs the state of that effect, not of the hundreds of state
+    // variables of its cone (checker/localize.hpp; the proof is re-checked
+    // on the whole cone).
+    o.localize_keep = keep_elements(options_.localize_to.empty() ? roots_ : options_.localize_to);
     if (options_.shrink_max_cycles >= 0) o.shrink_max_cycles = static_cast<std::size_t>(options_.shrink_max_cycles);
   }
   // Only the property's own counterexample is shown; the witness that an
   // antecedent can hold needs no readable form.
   if (goal != Goal::Property) o.shrink_work = 0;
   // An antecedent is expected to be reachable, usually within a few delays,
-  // and so is what a cover asks for: BMC finds that before the induction
-  // engines' set-up.
-  if (goal == Goal::Antecedent || (goal == Goal::Property && p_.kind == PropertyKind::Reachable))
-    o.quick_bmc_depth = o.bmc_depth;
+  // and so is what a cover asks for: BMC first, then the accelerated
+  // unrolling for a witness that holds a timer (an 18,000-cycle override),
+  // and only then the engines that prove it unreachable.
+  // A witness that cannot come before a cycle beyond BMC's depth (a `held`
+  // of 18,000 cycles) is the accelerated unrolling's alone.
+  const bool witness_expected =
+      goal == Goal::Antecedent || (goal == Goal::Property && p_.kind == PropertyKind::Reachable);
+  if (witness_expected && (goal != Goal::Property || options_.engines.empty())) {
+    const properties::Expr* a = properties::antecedent_of(p_);
+    if (a && properties::earliest_cycle(*a) > o.bmc_depth)
+      o.engines = {Method::AcceleratedBmc, Method::KInduction, Method::InvariantsInduction, Method::Pdr};
+    else
+      o.engines = {Method::Bmc, Method::AcceleratedBmc, Method::KInduction, Method::InvariantsInduction, Method::Pdr};
+    // A witness on the elements the question names, the rest of the cone
+    // free, counts when its inputs reach the same on the whole cone.
+    o.localize_keep = keep_elements(options_.localize_to.empty() ? roots_ : options_.localize_to);
+    o.localized_engines = {Method::Bmc, Method::AcceleratedBmc};
+  }
   return Portfolio(factory(m, goal, sliced), o).run(limits);
 }
 
@@ -235,36 +264,63 @@ bool PropertyChecker::confirm_trace(const ProverResult& r, bool sliced, Property
   return true;
 }
 
+bool PropertyChecker::answered_by_run(const std::vector<model::CycleInput>& inputs, Method method,
+                                      bool agree_or_throw, PropertyResult& out) const {
+  ConcreteTrace runtime_trace = run_on_runtime(m_, inputs);
+  runs_.push_back(as_property_trace(runtime_trace));
+  Judgement j = judge(m_, file_, p_, runtime_trace);
+  if (!j.violated) return false;
+  // The runtime and the concrete evaluator found it; the encoding and the
+  // monitor must agree, as for an engine's trace the other way round.
+  std::vector<model::CycleInput> prefix(inputs.begin(), inputs.begin() + j.cycle + 1);
+  PooledContext ctx;
+  OwnedProblem op = factory(m_, Goal::Property, true)(ctx);
+  const auto& enc = *std::static_pointer_cast<encoder::Encoding>(op.owner);
+  // A command the slice has no input for acts on an element outside the
+  // cone, or on something the encoding does not model: left out of the
+  // replay, and if the replay then disagrees, the run is left to the
+  // engines rather than taken for a disagreement of runtime and encoding.
+  std::size_t dropped = 0;
+  std::optional<Trace> t = encoded_trace(prefix, enc, *op.problem.ts, &dropped);
+  if (!t) return false;  // inputs the encoding does not map: leave it to the engines
+  try {
+    check::replay_counterexample(op.problem, *t);
+  } catch (const InternalError& e) {
+    if (dropped > 0 || !agree_or_throw) return false;
+    throw InternalError("the runtime " + std::string(p_.kind == PropertyKind::Reachable ? "witnesses" : "violates") +
+                        " property " + p_.name + " (" + file_.file_name + ") in cycle " + std::to_string(j.cycle + 1) +
+                        " of a " + to_string(method) + ", the encoding does not: " + e.what() + "\n" +
+                        describe_disagreement(m_, runtime_trace, run_on_encoding(enc, m_, prefix)));
+  }
+  report_trace(std::move(runtime_trace), j.cycle, out);
+  out.method = to_string(method);
+  return true;
+}
+
 bool PropertyChecker::directed_counterexample(PropertyResult& out) const {
   if (p_.kind == PropertyKind::Reachable) return false;
-  for (const auto& inputs : options_.directed_runs) {
-    ConcreteTrace runtime_trace = run_on_runtime(m_, inputs);
-    runs_.push_back(as_property_trace(runtime_trace));
-    Judgement j = judge(m_, file_, p_, runtime_trace);
-    if (!j.violated) continue;
-    // The runtime and the concrete evaluator found it; the encoding and the
-    // monitor must agree, as for an engine's trace the other way round.
-    std::vector<model::CycleInput> prefix(inputs.begin(), inputs.begin() + j.cycle + 1);
-    PooledContext ctx;
-    OwnedProblem op = factory(m_, Goal::Property, true)(ctx);
-    const auto& enc = *std::static_pointer_cast<encoder::Encoding>(op.owner);
-    // A command the slice has no input for acts on an element outside the
-    // cone, or on something the encoding does not model: left out of the
-    // replay, and if the replay then disagrees, the run is left to the
-    // engines rather than taken for a disagreement of runtime and encoding.
-    std::size_t dropped = 0;
-    std::optional<Trace> t = encoded_trace(prefix, enc, *op.problem.ts, &dropped);
-    if (!t) continue;  // inputs the encoding does not map: leave it to the engines
-    try {
-      check::replay_counterexample(op.problem, *t);
-    } catch (const InternalError& e) {
-      if (dropped > 0) continue;
-      throw InternalError("the runtime violates property " + p_.name + " (" + file_.file_name + ") in cycle " +
-                          std::to_string(j.cycle + 1) + " of a directed run, the encoding does not: " + e.what() +
-                          "\n" + describe_disagreement(m_, runtime_trace, run_on_encoding(enc, m_, prefix)));
-    }
-    report_trace(std::move(runtime_trace), j.cycle, out);
-    out.method = to_string(Method::DirectedRun);
+  for (const auto& inputs : options_.directed_runs)
+    if (answered_by_run(inputs, Method::DirectedRun, true, out)) return true;
+  return false;
+}
+
+bool PropertyChecker::early_answer(PropertyResult& out) {
+  if (early_.proof) {
+    // Proved by the group on its shared encoding, and re-checked there in a
+    // fresh context (checker/cone_group.hpp).
+    const ProverResult& r = *early_.proof;
+    sliced_ = true;
+    out.method = r.method_text();
+    out.depth = r.k;
+    out.work = r.work;
+    out.invariant = r.invariant.text();
+    out.verdict = p_.kind == PropertyKind::Reachable ? PropertyVerdict::Unreachable : PropertyVerdict::Proved;
+    return true;
+  }
+  // A run of the group's (a random run, a shallow BMC witness): a run of the
+  // group's slice that the runtime does not reproduce is left to the engines.
+  if (!early_.run.empty() && answered_by_run(early_.run, early_.run_method, false, out)) {
+    out.verdict = p_.kind == PropertyKind::Reachable ? PropertyVerdict::Reachable : PropertyVerdict::Falsified;
     return true;
   }
   return false;
@@ -296,17 +352,33 @@ void PropertyChecker::report_trace(ConcreteTrace runtime_trace, int violation_cy
   out.trace = std::move(runtime_trace);
 }
 
-PropertyChecker::Vacuity PropertyChecker::vacuity(const WitnessPool& known, const Limits& limits) const {
+PropertyChecker::Vacuity PropertyChecker::vacuity(const WitnessPool& known, WitnessPool& group,
+                                                  const Limits& limits) const {
   Vacuity v;
   // A witness that the antecedent can hold is a run in which the assumptions
   // hold too: most properties need no more than that one question.
   if (known.witnesses(m_, p_, file_.assumptions, has_antecedent_)) return v;
+  if (group.witnesses(m_, p_, file_.assumptions, has_antecedent_)) return v;
+  // Random runs last a few hundred cycles: an antecedent that cannot hold
+  // that early is left to the engines.
+  const properties::Expr* antecedent = properties::antecedent_of(p_);
   WitnessPool mine;
-  if (mine.search(m_, p_, file_.assumptions, has_antecedent_, cone_space_, kRandomWitnessRuns)) return v;
+  if (!early_.runs_tried &&
+      (!antecedent || properties::earliest_cycle(*antecedent) < static_cast<long long>(WitnessPool::kMaxRunCycles)) &&
+      mine.search(m_, p_, file_.assumptions, has_antecedent_, cone_space_, kRandomWitnessRuns))
+    return v;
   std::optional<ProverResult> t;
   if (has_antecedent_) {
     t = ask(m_, Goal::Antecedent, true, limits);
-    if (t->verdict == Verdict::Falsified) return v;
+    if (t->verdict == Verdict::Falsified) {
+      // Kept for the group's other members: their antecedents are often
+      // this one with another cause (an XooN's members).
+      PooledContext ctx;
+      OwnedProblem op = factory(m_, Goal::Antecedent, true)(ctx);
+      const auto& enc = *std::static_pointer_cast<encoder::Encoding>(op.owner);
+      group.add(as_property_trace(run_on_runtime(m_, cycle_inputs(t->cex, enc, m_))));
+      return v;
+    }
   }
   // Plain BMC to depth 0 answers "bound reached" exactly when no first cycle
   // satisfies the assumptions; any other unknown leaves the question open.
@@ -333,10 +405,11 @@ bool PropertyChecker::needs_vacuity(const PropertyResult& r) const {
   return options_.vacuity && (r.verdict == PropertyVerdict::Proved || r.verdict == PropertyVerdict::Unreachable);
 }
 
-void PropertyChecker::settle_vacuity(PropertyResult& r, const WitnessPool& known, const Limits& limits) const {
-  if (!needs_vacuity(r)) return;
+void PropertyChecker::settle_vacuity(PropertyResult& r, const WitnessPool& known, WitnessPool& group,
+                                     const Limits& limits) const {
+  if (!needs_vacuity(r) || early_.vacuity_witnessed) return;
   const auto start = Clock::now();
-  Vacuity v = vacuity(known, limits);
+  Vacuity v = vacuity(known, group, limits);
   r.seconds += seconds_since(start);
   if (v.vacuous) {
     r.verdict = PropertyVerdict::Vacuous;
@@ -427,6 +500,7 @@ PropertyResult PropertyChecker::decide(const Limits& limits) {
     return cut;
   };
   try {
+    if (early_answer(out)) return finish(out.verdict);
     if (directed_counterexample(out)) return finish(PropertyVerdict::Falsified);
     if (options_.directed_runs_only) {
       out.unknown = UnknownReason::NoDirectedRun;

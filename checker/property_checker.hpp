@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "checker/check.hpp"
+#include "checker/cone_group.hpp"
 #include "checker/property_problem.hpp"
 #include "checker/prover.hpp"
 #include "checker/random_runs.hpp"
@@ -40,6 +41,10 @@ class PropertyChecker {
  public:
   PropertyChecker(const model::Matrix& m, const properties::PropertyFile& file, const properties::Property& p,
                   const CheckOptions& options);
+  // With what the property's cone group found (checker/cone_group.hpp): its
+  // facts of the cone, and the group's answer, which decide() takes first.
+  PropertyChecker(const model::Matrix& m, const properties::PropertyFile& file, const properties::Property& p,
+                  const CheckOptions& options, EarlyAnswer early);
 
   // The verdict before vacuity: Proved and Unreachable are not final yet.
   PropertyResult decide(const Limits& limits);
@@ -47,7 +52,9 @@ class PropertyChecker {
   // is vacuous, answered first from `known` (runtime traces of the run),
   // and the support of a proof.
   bool needs_vacuity(const PropertyResult& r) const;
-  void settle_vacuity(PropertyResult& r, const WitnessPool& known, const Limits& limits) const;
+  // `group`: the witnesses found for the other members of the property's
+  // cone group, asked after `known` and given what this one finds.
+  void settle_vacuity(PropertyResult& r, const WitnessPool& known, WitnessPool& group, const Limits& limits) const;
   bool needs_support(const PropertyResult& r) const;
   void find_support(PropertyResult& r, const Limits& limits) const;
   // The runtime runs decide() made (its directed runs, the replayed
@@ -64,6 +71,15 @@ class PropertyChecker {
   // CheckOptions::directed_runs: the first that the runtime and the encoding
   // both show violating the property, reported; false when none does.
   bool directed_counterexample(PropertyResult& out) const;
+  // A run that shows the property's answer (a violation, or a cover's
+  // witness), replayed on the runtime and judged there, then replayed on the
+  // property's own encoding, where the monitor must agree; false when it
+  // does not show it. `agree_or_throw`: a disagreement of runtime and
+  // encoding is an InternalError (else the run is left to the engines).
+  bool answered_by_run(const std::vector<model::CycleInput>& inputs, Method method, bool agree_or_throw,
+                       PropertyResult& out) const;
+  // The group's answer, when it has one.
+  bool early_answer(PropertyResult& out);
   // A confirmed violation of the runtime, cut after its first violating
   // cycle, as `out`'s trace, timing table and scenario file.
   void report_trace(ConcreteTrace runtime_trace, int violation_cycle, PropertyResult& out) const;
@@ -73,7 +89,7 @@ class PropertyChecker {
     std::optional<std::string> vacuous;
     std::optional<std::string> undecided;
   };
-  Vacuity vacuity(const WitnessPool& known, const Limits& limits) const;
+  Vacuity vacuity(const WitnessPool& known, WitnessPool& group, const Limits& limits) const;
 
   const model::Matrix& m_;
   const properties::PropertyFile& file_;
@@ -84,6 +100,7 @@ class PropertyChecker {
   bool sliced_ = true;         // the answer came from the property's cone (else the whole matrix)
   PreferredValue preferred_;   // the plant at rest, for readable counterexamples
   RunSpace cone_space_;        // the inputs and commands of the cone, for random witnesses
+  EarlyAnswer early_;
   mutable std::vector<properties::Trace> runs_;
 };
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <set>
 
 namespace cemv::checker {
@@ -129,6 +130,83 @@ std::vector<model::Command> all_commands(const model::Matrix& m) {
 
 }  // namespace
 
+namespace {
+
+// The changes that trip cause `c`: every tag it votes with beyond its limit
+// (C.3: a DTT tag at FALSE, an ETT tag at TRUE; an analog tag past its limit
+// by twice the hysteresis), in good quality; empty when one of its tags is
+// not among `have` (a reference trips with its element, not with a value).
+std::vector<RunSegment::Change> trip_of(const model::Cause& c, const std::set<std::string>& have) {
+  std::vector<RunSegment::Change> trip;
+  for (const auto& t : c.tags) {
+    if (model::parse_internal_ref(t.name)) continue;
+    if (!have.count(model::tag_key(t.name))) return {};
+    float value = t.ett ? 1.0f : 0.0f;
+    if (c.input == model::InputKind::Analog && c.analog) {
+      const auto& a = *c.analog;
+      const float margin = std::max(1.0f, a.hysteresis);
+      value = a.limit_type == model::LimitType::High ? a.limit + 2 * margin : a.limit - 2 * margin;
+    }
+    trip.push_back({t.name, {value, false}});
+  }
+  return trip;
+}
+
+}  // namespace
+
+std::vector<RunSegment::Change> cause_trip(const model::Cause& c, const std::vector<std::string>& tags) {
+  std::set<std::string> have;
+  for (const auto& t : tags) have.insert(model::tag_key(t));
+  return trip_of(c, have);
+}
+
+std::vector<std::vector<RunSegment::Change>> cause_trips(const model::Matrix& m, const std::vector<std::string>& tags) {
+  std::set<std::string> have;
+  for (const auto& t : tags) have.insert(model::tag_key(t));
+  std::map<int, std::vector<RunSegment::Change>> by_cause;
+  std::vector<std::vector<RunSegment::Change>> out;
+  for (const auto& c : m.causes) {
+    if (c.function == model::CauseFunction::Comment) continue;
+    std::vector<RunSegment::Change> trip = trip_of(c, have);
+    if (trip.empty()) continue;
+    by_cause[c.id] = trip;
+    out.push_back(std::move(trip));
+  }
+  // Every cause of an effect's XooN assignment at once: X of them active
+  // together, which trips of one cause at a time seldom reach.
+  for (const auto& e : m.effects) {
+    std::vector<RunSegment::Change> all;
+    std::size_t causes = 0;
+    bool complete = true;
+    for (const auto* i : m.intersections_of_effect(e.id)) {
+      if (!i->xoon) continue;
+      auto it = by_cause.find(i->cause);
+      if (it == by_cause.end()) {
+        complete = false;
+        break;
+      }
+      all.insert(all.end(), it->second.begin(), it->second.end());
+      ++causes;
+    }
+    if (complete && causes >= 2) out.push_back(std::move(all));
+  }
+  return out;
+}
+
+std::vector<std::vector<RunSegment::Change>> rests_of(const model::Matrix& m,
+                                                      const std::vector<std::vector<RunSegment::Change>>& trips) {
+  const model::InputTable table(m);
+  const model::CycleInput defaults = model::default_cycle_input(m);
+  std::vector<std::vector<RunSegment::Change>> out;
+  for (const auto& trip : trips) {
+    std::vector<RunSegment::Change> rest;
+    for (const auto& c : trip)
+      if (auto i = table.find(c.tag)) rest.push_back({c.tag, {defaults.tags[*i].value, false}});
+    out.push_back(std::move(rest));
+  }
+  return out;
+}
+
 RunSpace run_space(const model::Matrix& m, const model::Matrix* other, const std::vector<std::string>& tags,
                    const std::vector<model::Command>& commands) {
   RunSpace s;
@@ -158,6 +236,17 @@ Run RandomRuns::next(std::size_t segments, std::size_t max_cycles) {
   std::size_t left = max_cycles;
   for (std::size_t s = 0; s < segments && left > 0; ++s) {
     RunSegment seg;
+    if (!space_.trips.empty() && draw(3) == 0) {
+      const std::size_t k = draw(space_.trips.size());
+      const bool rest = k < space_.rests.size() && draw(2) == 0;
+      seg.changes = rest ? space_.rests[k] : space_.trips[k];
+      const std::size_t fitting = static_cast<std::size_t>(
+          std::upper_bound(space_.holds.begin(), space_.holds.end(), left) - space_.holds.begin());
+      seg.cycles = fitting == 0 ? left : space_.holds[fitting - 1];
+      left -= seg.cycles;
+      run.push_back(std::move(seg));
+      continue;
+    }
     const bool command = !space_.commands.empty() && (space_.tags.empty() || draw(3) == 0);
     const std::size_t changes = space_.tags.empty() ? 0 : (command ? draw(2) : 1 + draw(2));
     for (std::size_t c = 0; c < changes; ++c) {

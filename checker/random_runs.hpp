@@ -54,7 +54,29 @@ struct RunSpace {
   std::vector<Tag> tags;
   std::vector<model::Command> commands;
   std::vector<std::size_t> holds;  // cycles a segment may last, ascending
+  // Segments that trip one cause, or every cause of an effect's XooN
+  // assignment (E.2): every tag they vote with beyond its limit (or at its
+  // trip level), in good quality, held for the longest duration that fits.
+  // Empty: none drawn. A question about a cause's activity, or an XooN of
+  // causes, is reached by runs that trip causes whole, where changing one
+  // tag at a time rarely trips two.
+  std::vector<std::vector<RunSegment::Change>> trips;
+  // The same tags back at rest (the scenario defaults, good quality), one
+  // list per trip: a latch released, then reset, is a run that trips, rests
+  // and resets.
+  std::vector<std::vector<RunSegment::Change>> rests;
 };
+
+// The trip segments of the causes of `m` whose tags are all among `tags`,
+// and of the XooN assignments whose causes all are (RunSpace::trips).
+std::vector<std::vector<RunSegment::Change>> cause_trips(const model::Matrix& m, const std::vector<std::string>& tags);
+// The changes that trip cause `c` when all its tags are among `tags` (a
+// trip segment of RunSpace::trips); empty otherwise.
+std::vector<RunSegment::Change> cause_trip(const model::Cause& c, const std::vector<std::string>& tags);
+// Each trip's tags back at their scenario defaults, in good quality
+// (RunSpace::rests).
+std::vector<std::vector<RunSegment::Change>> rests_of(const model::Matrix& m,
+                                                      const std::vector<std::vector<RunSegment::Change>>& trips);
 
 // The space of `m` (and of `other`, when given: its tag values and durations
 // join, so a run can tell a changed limit or duration apart). Only the tags

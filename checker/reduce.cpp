@@ -54,11 +54,14 @@ struct Parts {
   std::vector<Fact> facts;
   std::vector<std::pair<std::string, expr>> lemmas;
   expr good;
+  // Further terms the caller asks about (the goods and antecedents of a cone
+  // group's members), reduced with `good` and kept in the cone.
+  std::vector<expr> extra;
 };
 
 Parts parts_of(const SafetyProblem& p) {
   const auto& ts = *p.ts;
-  Parts w{{}, {}, {}, {}, {}, p.good};
+  Parts w{{}, {}, {}, {}, {}, p.good, {}};
   for (const auto& sv : ts.statevars()) w.states.push_back({sv.name, sv.var, sv.init, sv.next});
   for (const auto& in : ts.inputvars()) {
     w.inputs.push_back(in.var);
@@ -89,6 +92,7 @@ void substitute(Parts& w, const z3::expr_vector& from, const z3::expr_vector& to
   for (auto& f : w.facts) terms.push_back(&f.term);
   for (auto& l : w.lemmas) terms.push_back(&l.second);
   terms.push_back(&w.good);
+  for (auto& e : w.extra) terms.push_back(&e);
   z3::context& c = w.good.ctx();
   z3::expr_vector args(c);
   for (expr* t : terms) args.push_back(*t);
@@ -232,6 +236,7 @@ void cone_of_influence(Parts& w, z3::context& c) {
     for (unsigned v : vars) add(v);
   };
   reach(w.good);
+  for (const auto& e : w.extra) reach(e);
   for (bool more = true; more;) {
     while (!work.empty()) {
       unsigned v = work.back();
@@ -261,7 +266,7 @@ void cone_of_influence(Parts& w, z3::context& c) {
     for (const auto& f : dropped_facts) dropped.add(f);
     if (dropped.check() != z3::sat) return;
   }
-  Parts out{{}, {}, {}, {}, {}, w.good};
+  Parts out{{}, {}, {}, {}, {}, w.good, w.extra};
   for (std::size_t i = 0; i < w.states.size(); ++i)
     if (state[i]) out.states.push_back(w.states[i]);
   for (std::size_t i = 0; i < w.inputs.size(); ++i)
@@ -279,7 +284,8 @@ void cone_of_influence(Parts& w, z3::context& c) {
 }
 
 // The transition system of what is left, floats as integers or as they are.
-OwnedProblem build(const Parts& w, const std::shared_ptr<void>& original, z3::context& c, bool as_integers) {
+OwnedProblem build(const Parts& w, const std::shared_ptr<void>& original, z3::context& c, bool as_integers,
+                   std::vector<expr>& extra) {
   auto owner = std::make_shared<Reduced>(Reduced{original, encoder::TransitionSystem(c)});
   encoder::TransitionSystem& r = owner->ts;
   FloatsAsIntegers rewrite(c);
@@ -322,6 +328,8 @@ OwnedProblem build(const Parts& w, const std::shared_ptr<void>& original, z3::co
     }
   }
   expr good = map(w.good);
+  extra.clear();
+  for (const auto& e : w.extra) extra.push_back(map(e));
   r.check_complete();
   return OwnedProblem{owner, SafetyProblem{&owner->ts, good, assumption}};
 }
@@ -329,18 +337,24 @@ OwnedProblem build(const Parts& w, const std::shared_ptr<void>& original, z3::co
 }  // namespace
 
 OwnedProblem reduce(const OwnedProblem& original, Reduction* what) {
+  std::vector<expr> none;
+  return reduce_with(original, none, what);
+}
+
+OwnedProblem reduce_with(const OwnedProblem& original, std::vector<z3::expr>& terms, Reduction* what) {
   const SafetyProblem& p = original.problem;
   z3::context& c = p.ts->ctx();
   Parts w = parts_of(p);
+  w.extra = terms;
   propagate_constants(w, p);
   cone_of_influence(w, c);
   bool as_integers = true;
   std::optional<OwnedProblem> built;
   try {
-    built = build(w, original.owner, c, true);
+    built = build(w, original.owner, c, true, terms);
   } catch (const Unsupported&) {
     as_integers = false;
-    built = build(w, original.owner, c, false);
+    built = build(w, original.owner, c, false, terms);
   }
   OwnedProblem out = std::move(*built);
   if (what) {

@@ -49,6 +49,10 @@ std::vector<std::pair<std::string, bool>> forced_inputs(const SafetyProblem& p);
 
 // The reduced problem; its owner keeps the original's owner alive.
 OwnedProblem reduce(const OwnedProblem& original, Reduction* what = nullptr);
+// The same, with `terms` over the original's variables (the goods and
+// antecedents of a cone group's members, under the problem's assumption)
+// kept in the cone and replaced by their reduced forms.
+OwnedProblem reduce_with(const OwnedProblem& original, std::vector<z3::expr>& terms, Reduction* what = nullptr);
 
 // A factory of reduced problems.
 ProblemFactory reducing(ProblemFactory make);

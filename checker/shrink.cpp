@@ -8,11 +8,93 @@
 
 #include "checker/engines/solving.hpp"
 #include "checker/reduce.hpp"
+#include "encoder/encode.hpp"
+#include "encoder/evaluate.hpp"
 #include "encoder/unroller.hpp"
 
 namespace cemv::checker {
 
 namespace {
+
+// `rest` in the representation of `v`: a float the reduction made an ordered
+// integer (checker/reduce.hpp) as its key, an integer given for a float as
+// that float.
+Value in_kind_of(const Value& v, const Value& rest) {
+  Value out = v;
+  if (v.is_float) out.f = rest.is_float ? rest.f : static_cast<float>(rest.i);
+  else out.i = rest.is_float ? float_key(rest.f) : rest.i;
+  return out;
+}
+
+// A trace judged on the encoding's own Evaluator: does it still violate
+// `good` in its last cycle (and in no earlier one), with the constraints and
+// the assumption in every cycle? A replay costs microseconds a cycle, a
+// solver call on the unrolling a good part of a second.
+class ConcreteJudge {
+ public:
+  explicit ConcreteJudge(const SafetyProblem& p) : enc_(p.ts->ctx()) {
+    enc_.ts = *p.ts;
+    enc_.ts.name_term("shrink.good", p.good);
+    enc_.ts.name_term("shrink.facts", p.assumption && p.ts->constraint_formula());
+    ev_.emplace(enc_);
+  }
+  bool violates(const Trace& t) {
+    ev_->reset();
+    std::vector<encoder::Evaluator::Value> in;
+    for (std::size_t k = 0; k < t.cycles.size(); ++k) {
+      in.clear();
+      for (const auto& v : t.cycles[k].inputs) in.push_back({v.i, v.f});
+      ev_->step_raw(in);
+      if (!ev_->value("shrink.facts")) return false;
+      const bool good = ev_->value("shrink.good") != 0;
+      if (good != (k + 1 < t.cycles.size())) return false;
+    }
+    return !t.cycles.empty();
+  }
+
+ private:
+  encoder::Encoding enc_;
+  std::optional<encoder::Evaluator> ev_;
+};
+
+// The concrete pass: inputs put back at their preferred value wherever the
+// violation still happens, first a whole input over every cycle, then runs
+// of cycles halved down to single cycles. Deterministic (a fixed order), no
+// solver: what is left for the solver's search is what the violation may
+// need.
+Trace rest_concretely(const SafetyProblem& problem, Trace t, const PreferredValue& preferred,
+                      const Limits& limits) {
+  ConcreteJudge judge(problem);
+  if (!judge.violates(t)) return t;
+  const std::size_t n = t.cycles.size();
+  for (std::size_t i = 0; i < t.input_names.size(); ++i) {
+    std::optional<Value> rest = preferred(t.input_names[i]);
+    if (!rest) continue;
+    auto try_rest = [&](std::size_t lo, std::size_t hi) {
+      Trace trial = t;
+      bool changed = false;
+      for (std::size_t k = lo; k < hi; ++k) {
+        const Value v = in_kind_of(t.cycles[k].inputs[i], *rest);
+        if (v == t.cycles[k].inputs[i]) continue;
+        trial.cycles[k].inputs[i] = v;
+        changed = true;
+      }
+      if (!changed) return true;
+      if (!judge.violates(trial)) return false;
+      t = std::move(trial);
+      return true;
+    };
+    auto split = [&](auto&& self, std::size_t lo, std::size_t hi) -> void {
+      if (lo >= hi || try_rest(lo, hi) || hi - lo == 1) return;
+      const std::size_t mid = lo + (hi - lo) / 2;
+      self(self, lo, mid);
+      self(self, mid, hi);
+    };
+    stop_if_interrupted(limits);
+    split(split, 0, n);
+  }
+  return t;
+}
 
 z3::expr constant_of(const encoder::TransitionSystem& ts, const z3::expr& var, const Value& v) {
   z3::context& ctx = ts.ctx();
@@ -58,6 +140,15 @@ Trace shrink_trace(const SafetyProblem& problem, const Trace& cex, const Preferr
                    const Limits& limits, std::size_t max_cycles) {
   const std::size_t n = cex.length();
   if (n == 0 || n > max_cycles || limits.interrupted()) return cex;
+  // Most inputs play no part: the concrete pass puts them at rest at once,
+  // and the solver's search below starts from its trace, with only the
+  // rest to decide. An evaluator that cannot run the system (an operator it
+  // does not interpret) leaves that all to the solver.
+  Trace start = cex;
+  try {
+    start = rest_concretely(problem, cex, preferred, limits);
+  } catch (const std::logic_error&) {
+  }
   const auto& ts = *problem.ts;
   z3::context& ctx = ts.ctx();
   encoder::Unroller u(ts);
@@ -78,7 +169,7 @@ Trace shrink_trace(const SafetyProblem& problem, const Trace& cex, const Preferr
 
   // One literal per (cycle, input with a preferred value), in a fixed order,
   // standing for "this input keeps its preferred value in this cycle".
-  std::vector<z3::expr> literals, meaning;
+  std::vector<z3::expr> literals;
   for (int k = 0; k <= last; ++k)
     for (const auto& in : ts.inputvars()) {
       std::optional<Value> v = preferred(in.name);
@@ -87,7 +178,6 @@ Trace shrink_trace(const SafetyProblem& problem, const Trace& cex, const Preferr
       z3::expr at_rest = u.var_at(in.var, k) == constant_of(ts, in.var, *v);
       s.add(z3::implies(lit, at_rest));
       literals.push_back(lit);
-      meaning.push_back(at_rest);
     }
   auto vector_of = [&](const std::vector<bool>& on, std::optional<std::size_t> extra = std::nullopt) {
     z3::expr_vector out(ctx);
@@ -98,26 +188,23 @@ Trace shrink_trace(const SafetyProblem& problem, const Trace& cex, const Preferr
   try {
     Watchdog watchdog(ctx, limits);
     WorkMeter meter(ctx, limits.work);
-    // 1. Shrink: drop the literals of each unsat core until satisfiable.
-    std::vector<bool> kept(literals.size(), true);
+    // 1. Start: the literals the concrete pass's trace keeps at rest, a
+    // satisfiable set (that trace is a model of it).
+    std::vector<bool> kept(literals.size(), false);
     std::optional<z3::model> model;
-    for (int round = 0; round < 64 && !model; ++round) {
-      z3::check_result r = check_within(s, meter, vector_of(kept));
-      if (r == z3::sat) {
-        model = s.get_model();
-        break;
-      }
-      if (r != z3::unsat) return cex;
-      z3::expr_vector core = s.unsat_core();
-      if (core.size() == 0) return cex;
-      std::unordered_set<unsigned> drop;
-      for (unsigned i = 0; i < core.size(); ++i) drop.insert(core[i].id());
-      for (std::size_t i = 0; i < literals.size(); ++i)
-        if (drop.count(literals[i].id())) kept[i] = false;
+    {
+      std::size_t l = 0;
+      for (int k = 0; k <= last; ++k)
+        for (std::size_t in = 0; in < ts.inputvars().size(); ++in) {
+          std::optional<Value> v = preferred(ts.inputvars()[in].name);
+          if (!v) continue;
+          const Value& got = start.cycles[static_cast<std::size_t>(k)].inputs[in];
+          kept[l++] = in_kind_of(got, *v) == got;
+        }
     }
-    if (!model) return cex;
-    // 2. Grow: a core drops more than the violation needs. Take back every
-    // dropped literal the model already satisfies; then the others, a whole
+    // 2. Grow: the concrete pass only put inputs back one by one; the
+    // solver may find other values for what the violation needs that let
+    // more inputs rest. Take back every dropped literal; then the others, a whole
     // run of them at once and, when that fails, each half in turn, down to
     // single literals (what a single literal cannot take back, a larger set
     // containing it cannot either): what is left is a maximal set of inputs
@@ -127,11 +214,8 @@ Trace shrink_trace(const SafetyProblem& problem, const Trace& cex, const Preferr
     // depends on the machine's speed: a long trace keeps what the cheap part
     // gives.
     std::vector<std::size_t> open;
-    for (std::size_t i = 0; i < literals.size(); ++i) {
-      if (kept[i]) continue;
-      if (model->eval(meaning[i], true).is_true()) kept[i] = true;
-      else open.push_back(i);
-    }
+    for (std::size_t i = 0; i < literals.size(); ++i)
+      if (!kept[i]) open.push_back(i);
     std::size_t tries = 0;
     auto take_back = [&](auto&& self, std::size_t lo, std::size_t hi) -> void {
       if (lo >= hi || ++tries > kMaxGrowTries) return;
@@ -148,12 +232,11 @@ Trace shrink_trace(const SafetyProblem& problem, const Trace& cex, const Preferr
       self(self, mid, hi);
     };
     take_back(take_back, 0, open.size());
-    return trace_from_model(ts, u, *model, last);
+    if (model) return trace_from_model(ts, u, *model, last);
   } catch (const z3::exception&) {
-    // A limit or a solver failure: the engine's own (already re-checked)
-    // trace stands.
+    // A limit or a solver failure: the concrete pass's trace stands.
   }
-  return cex;
+  return start;
 }
 
 }  // namespace cemv::checker

@@ -3,10 +3,13 @@
 // commands that play no part in the violation. shrink_trace looks for a trace
 // of the same length, violating in the same last cycle, in which as many
 // inputs as possible keep a preferred value (the plant at rest: scenario
-// defaults, good quality, no command). It asks the solver with one assumption
-// literal per (cycle, input) and drops the literals of each unsat core until
-// the query is satisfiable: a few solver calls, and what remains differs from
-// the plant at rest only where the violation needs it.
+// defaults, good quality, no command). First concretely, on the encoding's
+// own evaluator: each input put back at rest over every cycle, then over
+// halves of the cycles, down to single cycles, wherever the violation still
+// happens (microseconds a try). Then the solver, with one assumption literal
+// per (cycle, input), takes back what it can of the rest: other values of
+// what the violation needs may let more inputs rest. What remains differs
+// from the plant at rest only where the violation needs it.
 #pragma once
 
 #include <functional>
@@ -31,10 +34,10 @@ using PreferredValue = std::function<std::optional<Value>(const std::string& inp
 PreferredValue plant_at_rest(const std::vector<std::pair<const encoder::Encoding*, const model::Matrix*>>& parts);
 
 // A trace of cex.length() cycles violating `good` in its last cycle, as close
-// to the preferred values as the core-guided search gets within
-// `limits.work`; `cex` itself when the first satisfiable check does not come
-// within it or the trace is longer than `max_cycles` (a long accelerated
-// trace is already mostly held inputs). Deterministic unless interrupted.
+// to the preferred values as the two passes get, the solver's within
+// `limits.work`; `cex` itself when the trace is longer than `max_cycles` (a
+// long accelerated trace is already mostly held inputs). Deterministic;
+// throws Interrupted when the limits' wall clock or cancel token end it.
 Trace shrink_trace(const SafetyProblem& problem, const Trace& cex, const PreferredValue& preferred,
                    const Limits& limits, std::size_t max_cycles = 400);
 

@@ -42,7 +42,7 @@ bool WitnessPool::search(const model::Matrix& m, const properties::Property& p,
   // durations), short enough that a question no run answers costs little:
   // hours of soft bypass are left to the engines.
   constexpr std::size_t kSegments = 16;
-  constexpr std::size_t kMaxCycles = 600;
+  constexpr std::size_t kMaxCycles = kMaxRunCycles;
   RandomRuns gen(space, 0x77a1e55ULL);
   const properties::Evaluator evaluator(m);
   const model::CycleInput start = model::default_cycle_input(m);

@@ -29,6 +29,8 @@ namespace cemv::checker {
 
 class WitnessPool {
  public:
+  // The longest random run search() tries.
+  static constexpr std::size_t kMaxRunCycles = 600;
   // Thread-safe. Traces beyond the pool's capacity are not kept.
   void add(properties::Trace trace);
   // Whether some kept trace judges `p` on at least one cycle (its assumptions

@@ -111,7 +111,7 @@ struct TestgenOptions {
   // same matrix gives the same suite on every machine.
   checker::Work objective_work = 20 * checker::kMega;  // search per objective (BMC, then accelerated BMC)
   checker::Work proof_work = 3 * checker::kMega;       // infeasibility proof per objective
-  checker::Work shrink_work = 5 * checker::kMega;      // a witness made readable
+  checker::Work shrink_work = checker::kMega;          // a witness made readable (the solver's pass)
   // The run's cancel token (a failure elsewhere, or the caller's bound).
   checker::CancelToken* cancel = nullptr;
   int max_depth = 40;                 // BMC cycles beyond an objective's horizon

@@ -70,7 +70,7 @@ ProverResult Portfolio::decide(const Limits& limits, Clock::time_point start) {
   if (!answer && options_.localize_keep) answer = localized_attempt(owned, wide, limits);
   if (!answer) {
     const auto& order = wide && !options_.wide_engines.empty() ? options_.wide_engines : options_.engines;
-    ProverResult r = one_after_another(order, owned.problem, limits, options_.engine_work);
+    ProverResult r = one_after_another(order, owned.problem, limits, options_.engine_work, options_.rounds);
     if (r.verdict == Verdict::Unknown) {
       r.seconds = seconds_since(start);
       return limits.interrupted() ? interrupted_result(start) : r;
@@ -130,7 +130,8 @@ std::optional<ProverResult> Portfolio::localized_attempt(const OwnedProblem& who
   // on a small cone of long timers (the compressor's 12 state variables, 9
   // localized) PDR is slower than the ordered engines on the whole.
   if (!wide && 2 * local->problem.ts->statevars().size() > whole.problem.ts->statevars().size()) return std::nullopt;
-  ProverResult r = one_after_another(options_.localized_engines, local->problem, limits, options_.localized_work);
+  ProverResult r = one_after_another(options_.localized_engines, local->problem, limits, options_.localized_work,
+                                     options_.localized_rounds);
   if (r.verdict == Verdict::Proved && r.k <= 1 && !r.simple_path) {
     r.localized = true;
     return r;  // re-checked on the whole problem by confirmed()
@@ -150,27 +151,40 @@ Work Portfolio::work_of(Method engine, Work each) const {
 }
 
 ProverResult Portfolio::one_after_another(const std::vector<Method>& order, const SafetyProblem& problem,
-                                          const Limits& limits, Work each) const {
+                                          const Limits& limits, Work each, const std::vector<double>& rounds) const {
+  for (Method engine : order) make_prover(engine);  // a method that is no engine fails before any work
   ProverResult r;
   r.method = Method::Portfolio;
+  std::vector<ProverResult> last(order.size());
+  std::vector<bool> done(order.size(), false);  // ended at its bound: asking again gives the same answer
+  for (std::size_t round = 0; round < rounds.size(); ++round) {
+    const bool final_round = round + 1 == rounds.size();
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      if (done[i] || limits.interrupted()) continue;
+      const Method engine = order[i];
+      const Work budget = work_of(engine, each);
+      Limits mine = limits.with_work(budget == 0 ? 0 : std::max<Work>(1, static_cast<Work>(budget * rounds[round])));
+      if (engine == Method::Bmc) mine.max_depth = std::min(mine.max_depth, options_.bmc_depth);
+      ProverResult one = make_prover(engine, options_.max_k)->prove(problem, mine);
+      r.work += one.work;
+      if (one.verdict != Verdict::Unknown) {
+        one.work = r.work;
+        // The induction engines' base case is bounded model checking, depth
+        // by depth: a counterexample found there is BMC's, a shortest one.
+        if (one.verdict == Verdict::Falsified && engine != Method::AcceleratedBmc && engine != Method::Pdr)
+          one.method = Method::Bmc;
+        return one;
+      }
+      done[i] = final_round || budget == 0 || one.reason != UnknownReason::WorkLimit;
+      last[i] = std::move(one);
+    }
+  }
   // Nobody decided: the most telling reason is a limit some engine hit;
   // "bound reached" only when every engine reached its bound.
   r.reason = UnknownReason::BoundReached;
-  for (Method engine : order) {
-    if (limits.interrupted()) break;
-    Limits mine = limits.with_work(work_of(engine, each));
-    if (engine == Method::Bmc) mine.max_depth = std::min(mine.max_depth, options_.bmc_depth);
-    ProverResult one = make_prover(engine, options_.max_k)->prove(problem, mine);
-    r.work += one.work;
-    if (one.verdict != Verdict::Unknown) {
-      one.work = r.work;
-      // The induction engines' base case is bounded model checking, depth
-      // by depth: a counterexample found there is BMC's, a shortest one.
-      if (one.verdict == Verdict::Falsified && engine != Method::AcceleratedBmc && engine != Method::Pdr)
-        one.method = Method::Bmc;
-      return one;
-    }
-    r.engines += (r.engines.empty() ? "" : "; ") + std::string(to_string(engine)) + ": " + one.reason_text() +
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    const ProverResult& one = last[i];
+    r.engines += (r.engines.empty() ? "" : "; ") + std::string(to_string(order[i])) + ": " + one.reason_text() +
                  " at k = " + std::to_string(one.k);
     if (one.reason != UnknownReason::BoundReached && r.reason == UnknownReason::BoundReached) {
       r.reason = one.reason;

@@ -38,6 +38,12 @@ struct PortfolioOptions {
   // Each engine's budget of work. PDR and the accelerated unrolling get
   // twice as much: they answer what the others cannot.
   Work engine_work = 20 * kMega;
+  // The engines are asked in rounds, each with this fraction of its budget:
+  // a cheap answer of a later engine (PDR's proof of an output delay, the
+  // accelerated unrolling's long witness) comes before an earlier engine has
+  // spent its whole budget. An engine that ended at its depth bound, not at
+  // its budget, is not asked again. Fractions ascending, the last 1.
+  std::vector<double> rounds{0.125, 1.0};
   int max_k = 10;        // k-induction's bound
   // BMC's depth. A counterexample that short is BMC's, a shortest one; a
   // longer one is the accelerated unrolling's (complete for every length, as
@@ -48,9 +54,10 @@ struct PortfolioOptions {
   // What a counterexample's inputs should read where the violation does not
   // need otherwise (by input name); empty = 0, FALSE, 0.0 for every input.
   PreferredValue preferred;
-  // The work the readable counterexample may take (0: none, the engine's
-  // trace as it is).
-  Work shrink_work = 10 * kMega;
+  // The work the solver's pass of the readable counterexample may take
+  // (0: no readable form, the engine's trace as it is). The concrete pass
+  // before it does most of the work at little cost (checker/shrink.hpp).
+  Work shrink_work = kMega;
   // Longer counterexamples are not made readable: they come from the
   // accelerated unrolling, whose inputs are already held over macro steps,
   // and the core-guided search over a hundred cycles costs more than the
@@ -87,6 +94,9 @@ struct PortfolioOptions {
   KeepState localize_keep;
   std::vector<Method> localized_engines{Method::Pdr, Method::InvariantsInduction};
   Work localized_work = 10 * kMega;
+  // The localized problem is small: its first engine (PDR) mostly answers
+  // within a quarter of its budget.
+  std::vector<double> localized_rounds{0.25, 1.0};
 };
 
 // A prover by its method; throws std::invalid_argument for a method that is
@@ -107,7 +117,7 @@ class Portfolio {
   ProverResult quick_k_induction(const SafetyProblem& problem, const Limits& limits) const;
   std::optional<ProverResult> localized_attempt(const OwnedProblem& whole, bool wide, const Limits& limits) const;
   ProverResult one_after_another(const std::vector<Method>& engines, const SafetyProblem& problem,
-                                 const Limits& limits, Work each) const;
+                                 const Limits& limits, Work each, const std::vector<double>& rounds) const;
   Work work_of(Method engine, Work each) const;
   ProverResult confirmed(OwnedProblem& reduced, ProverResult answer, const Limits& limits, Clock::time_point start) const;
   ProblemFactory make_;
