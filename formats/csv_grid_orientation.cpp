@@ -165,6 +165,14 @@ OrientationDecision decide_orientation(const Sheet& sheet, const Shape& shape,
 
   OrientationDecision decision;
   if (requested != CsvOrientation::Auto) {
+    // The corner labels are the sheet's own words for its axes: read against
+    // all of them, every cause would become an effect. Id patterns are only
+    // letters, and a given orientation may overrule them.
+    if (!labels.says.empty() && !labels.says.count(requested))
+      throw LoadError({{where_of(source, id_line),
+                        describe("the corner labels", labels) + "; --orientation " + name_of(requested) +
+                            " would read every cause as an effect and every effect as a cause; drop "
+                            "--orientation, or correct the labels (docs/csv.md \"Orientation\")"}});
     decision.orientation = requested;
     decision.evidence = "as given by --orientation";
     if (says.count(requested == CsvOrientation::CausesAsRows ? CsvOrientation::EffectsAsRows

@@ -3,6 +3,7 @@
 // its id row. Like the Safety Matrix's own import (6.6), a sheet that does not
 // match is refused; nothing is guessed.
 #include <algorithm>
+#include <map>
 #include <regex>
 
 #include "formats/csv_grid.hpp"
@@ -59,6 +60,37 @@ bool corner_label_like(const std::string& text) {
 }
 
 namespace {
+
+// The pattern of an id, its digit runs as '#' (TMA-D-40 -> TMA-D-#): only
+// texts with letters and digits that are no mark.
+std::optional<std::string> id_pattern(const std::string& t) {
+  if (t.empty() || parse_mark(t)) return std::nullopt;
+  std::string pattern;
+  bool letter = false, digit = false;
+  for (char ch : t) {
+    if (ch >= '0' && ch <= '9') {
+      if (pattern.empty() || pattern.back() != '#') pattern += '#';
+      digit = true;
+    } else {
+      letter = letter || (ch >= 'A' && ch <= 'Z') || (ch >= 'a' && ch <= 'z');
+      pattern += ch;
+    }
+  }
+  if (!letter || !digit) return std::nullopt;
+  return pattern;
+}
+
+// At least two cells, and more than half of the non-empty ones, are ids of one pattern.
+bool ids_of_one_pattern(const std::vector<std::string>& cells) {
+  std::map<std::string, int> patterns;
+  int filled = 0, best = 0;
+  for (const auto& t : cells) {
+    if (t.empty()) continue;
+    ++filled;
+    if (auto p = id_pattern(t)) best = std::max(best, ++patterns[*p]);
+  }
+  return best >= 2 && 2 * best > filled;
+}
 
 struct Cells {
   int marks = 0;
@@ -125,6 +157,31 @@ class ShapeFinder {
     return labels > 0 && other <= 1;
   }
 
+  // A row (from column c0 on) or a column (from row r0 on, label rows left
+  // out) of ids sharing one pattern, such as TMA-D-<n>: a header, never data,
+  // even with a lone mark among the ids (the corner `N` of the LSST table as
+  // first published).
+  bool id_row(std::size_t r, std::size_t c0) const {
+    std::vector<std::string> cells;
+    for (std::size_t i = c0; i < rows_[r].fields.size(); ++i) cells.push_back(cell_text(rows_[r], i));
+    return ids_of_one_pattern(cells);
+  }
+  bool id_column(std::size_t col, std::size_t r0, std::size_t c0) const {
+    std::vector<std::string> cells;
+    for (std::size_t r = r0; r < rows_.size(); ++r)
+      if (!cached_label_row(r, c0)) cells.push_back(cell_text(rows_[r], col));
+    return ids_of_one_pattern(cells);
+  }
+  // Column col is part of the corner block: a corner label stands in it on a
+  // header row that also holds descriptions or ids (LSST: 'Causes/Detection'
+  // over the effect ids of the table as first published). A label on a row of
+  // labels only (an `EFFECTS` band over the effect columns) says nothing of it.
+  bool labelled_in_header(std::size_t col, std::size_t r0, std::size_t c0) const {
+    for (std::size_t r = 0; r < r0 && r < rows_.size(); ++r)
+      if (corner_label_like(cell_text(rows_[r], col)) && !label_row(r, c0)) return true;
+    return false;
+  }
+
   enum class Round { NoGrid, Moved, Settled };
 
   // One round: the header rows from the current label columns (the last row with
@@ -134,7 +191,7 @@ class ShapeFinder {
     const std::size_t old_r0 = r0, old_c0 = c0;
     std::optional<std::size_t> marked_row;
     for (std::size_t r = 1; r < rows_.size() && !marked_row; ++r)
-      if (row_cells(r, c0).marks > 0 && !label_row(r, c0)) marked_row = r;
+      if (row_cells(r, c0).marks > 0 && !label_row(r, c0) && !id_row(r, c0)) marked_row = r;
     if (!marked_row) return Round::NoGrid;
     std::optional<std::size_t> id_row;
     for (std::size_t r = 0; r < *marked_row; ++r)
@@ -145,14 +202,18 @@ class ShapeFinder {
 
     std::optional<std::size_t> marked_column;
     for (std::size_t col = 1; col < width_ && !marked_column; ++col)
-      if (column_cells(col, r0, c0).marks > 0 && !label_column(col, r0)) marked_column = col;
+      if (column_cells(col, r0, c0).marks > 0 && !label_column(col, r0) && !id_column(col, r0, c0))
+        marked_column = col;
     if (!marked_column) return Round::NoGrid;
     // Left of the first marked column, a column with an id in the id row is still
-    // an element (one never marked, or holding only stray values).
+    // an element (one never marked, or holding only stray values), unless it is
+    // a column of the corner block: one of ids, or one with a corner label in
+    // the header.
     c0 = *marked_column;
     while (c0 > 1) {
       const std::string id = cell_text(rows_[*id_row], c0 - 1);
       if (id.empty() || corner_label_like(id)) break;
+      if (id_column(c0 - 1, r0, c0) || labelled_in_header(c0 - 1, r0, c0)) break;
       --c0;
     }
     while (c0 < width_ && label_column(c0, r0)) ++c0;
