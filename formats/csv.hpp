@@ -17,16 +17,13 @@
 #include <vector>
 
 #include "formats/diagnostics.hpp"
+#include "formats/sheet_layout.hpp"
 #include "model/matrix.hpp"
 
 namespace cemv::formats {
 
 inline constexpr const char* kCsvLayout = "cemv-csv/1";
 
-// Which axis of a grid holds the causes (docs/csv.md "Orientation"). Auto
-// decides from the corner labels and the id patterns, and refuses when they
-// are missing or disagree.
-enum class CsvOrientation { Auto, CausesAsRows, EffectsAsRows };
 
 // ---- RFC 4180 reading -------------------------------------------------------
 
