@@ -2,6 +2,7 @@
 #include "formats/sheet_layout.hpp"
 
 #include <algorithm>
+#include <map>
 #include <set>
 #include <utility>
 
@@ -154,7 +155,7 @@ class LayoutParser {
       error(path, "the places of the attributes need the orientation (\"causes-as-rows\" or \"effects-as-rows\")");
     // Without an orientation (an error above), letters are taken too.
     const bool columns = o == CsvOrientation::Auto || (o == CsvOrientation::CausesAsRows) == cause;
-    std::set<int> used;
+    std::map<int, SheetAttribute> used;  // an id may share its place (a tag or a description that is the id)
     for (const auto& [key, value] : j.items()) {
       const std::string at = member_path(path, key);
       const AttributeName* a = nullptr;
@@ -171,8 +172,12 @@ class LayoutParser {
       else values.push_back(value);
       for (const auto& v : values) {
         const int p = position(v, at, columns);
-        if (p && !used.insert(p).second) error(at, "the same place as another attribute");
-        if (p) out.push_back({a->attribute, p});
+        if (!p) continue;
+        auto [other, fresh] = used.emplace(p, a->attribute);
+        if (!fresh && other->second != SheetAttribute::Id && a->attribute != SheetAttribute::Id)
+          error(at, "the same place as another attribute");
+        if (!fresh && a->attribute != SheetAttribute::Id) other->second = a->attribute;
+        out.push_back({a->attribute, p});
       }
     }
     return out;
