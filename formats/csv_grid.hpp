@@ -127,6 +127,10 @@ struct Shape {
   const Slot* column_slot(SheetAttribute a) const;
 };
 
+// Whether the sheet has the shape of a grid (header rows of ids above rows of
+// marks), without reading it: how a workbook's matrix sheet is found.
+bool has_grid_shape(const Sheet& sheet);
+
 // Finds the shape (the places the layout gives, if any, else from the sheet)
 // and what each label column and header row holds; refuses (LoadError naming
 // the line) a sheet that is not a grid, and a description row that does not

@@ -123,8 +123,8 @@ class AxisReader {
       out_.element_of[l.index] = kDeletedLine;
       std::string what = where(l);
       std::string id = l.text(SheetAttribute::Id), text = l.text(SheetAttribute::Description);
-      std::string named = id.empty() ? "" : in_quotes(id);
-      if (!text.empty()) join_to(named, " ", in_quotes(truncate_utf8(text, 40)));
+      std::string named = id.empty() ? "" : "id " + in_quotes(id);
+      if (!text.empty()) join_to(named, ": ", in_quotes(text));
       out_.deleted.push_back(what + " (" + (named.empty() ? "" : named + ", ") + why + ")");
       open_group(l, kDeletedLine);
       return;

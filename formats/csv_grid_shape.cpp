@@ -334,6 +334,18 @@ Fixed fixed_by(const Sheet& sheet, const SheetLayout& layout, const std::string&
 
 }  // namespace
 
+bool has_grid_shape(const Sheet& sheet) {
+  if (sheet.rows.size() < 2) return false;
+  ShapeFinder finder(sheet);
+  std::size_t r0 = 1, c0 = finder.width() >= 3 ? 2 : 1;
+  auto round = ShapeFinder::Round::Moved;
+  for (int k = 0; k < 6 && round == ShapeFinder::Round::Moved; ++k) round = finder.settle(r0, c0);
+  if (round == ShapeFinder::Round::NoGrid || r0 >= sheet.rows.size()) return false;
+  for (std::size_t r = 0; r < r0; ++r)
+    if (finder.row_cells(r, c0).non_blank() > 0 && !finder.label_row(r, c0)) return true;
+  return false;
+}
+
 Shape find_shape(const Sheet& sheet, const std::string& source, const SheetLayout& layout) {
   const auto& rows = sheet.rows;
   auto refuse = [&](int line, const std::string& what) {
