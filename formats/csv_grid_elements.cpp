@@ -117,7 +117,7 @@ class AxisReader {
   }
 
   void start(const Line& l) {
-    if (rows_ && l.label_text.empty() && !l.data) return;  // an empty row
+    if (l.label_text.empty() && !l.data) return;  // an empty row or column
     std::string why;
     if (deleted(l, why)) {
       out_.element_of[l.index] = kDeletedLine;
@@ -134,10 +134,11 @@ class AxisReader {
     // Remarks`) is text, not an element, even in the id column.
     const bool one_text = l.label_text.find(' ') != std::string::npos &&
                           std::count_if(l.cells.begin(), l.cells.end(), [](const SlotCell& c) { return !c.text.empty(); }) <= 1;
-    if ((id.empty() || one_text) && rows_ && !l.data) {
-      warn(l.line, sheet_.column_of(0),
-           "text row without " + std::string(kind_ == std::string("cause") ? "a cause" : "an effect") +
-               " id or intersections ignored: " + in_quotes(l.label_text));
+    if (!l.data && ((rows_ && id.empty()) || one_text)) {
+      warn(l.line, rows_ ? sheet_.column_of(0) : l.column,
+           std::string(rows_ ? "text row" : "text column") + " without " +
+               (kind_ == std::string("cause") ? "a cause" : "an effect") + " id or intersections ignored: " +
+               in_quotes(l.label_text));
       return;
     }
     const int limit = kind_ == std::string("cause") ? model::kMaxCauses : model::kMaxEffects;
@@ -458,7 +459,10 @@ std::vector<Line> column_lines(const Sheet& sheet, const Shape& shape) {
     l.position = l.column = sheet.column_of(i);
     l.line = sheet.rows[shape.id_row].line;
     for (const Slot& slot : shape.column_slots) l.cells.push_back(slot_cell(sheet, slot, slot.index, i));
-    l.data = true;
+    for (std::size_t r = 0; r < shape.first_data_row; ++r)
+      if (auto t = cell_text(sheet.rows[r], i); !t.empty()) join_to(l.label_text, " ", t);
+    for (std::size_t r = shape.first_data_row; r < sheet.rows.size() && !l.data; ++r)
+      l.data = !cell_text(sheet.rows[r], i).empty();
     l.span = span_of(sheet, l, false);
     lines.push_back(std::move(l));
   }

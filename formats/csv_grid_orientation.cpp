@@ -107,6 +107,14 @@ Evidence corner_labels(const Sheet& sheet, const Shape& shape) {
       item(t, r, col, (kind == Kind::Causes) != names_columns);
     }
   }
+  // A band of labels beside the data rows (`CAUSES` merged down the causes)
+  // names them.
+  for (std::size_t col = 0; col < shape.first_data_column; ++col) {
+    if (std::find(shape.label_columns.begin(), shape.label_columns.end(), col) != shape.label_columns.end()) continue;
+    for (std::size_t r = shape.first_data_row; r < sheet.rows.size(); ++r)
+      if (const Kind kind = kind_of(cell_text(sheet.rows[r], col)); kind != Kind::None)
+        item(cell_text(sheet.rows[r], col), r, col, kind == Kind::Causes);
+  }
   return ev;
 }
 

@@ -154,12 +154,17 @@ class ShapeFinder {
     return labels > 0 && other <= 1;
   }
   bool label_column(std::size_t col, std::size_t r0) const {
-    int labels = 0, other = 0;
+    int labels = 0, other = 0, band = 0, beside = 0;
     for (std::size_t r = 0; r < rows_.size(); ++r) {
       const std::string t = cell_text(rows_[r], col);
+      if (r >= r0 && !t.empty()) {
+        ++beside;
+        band += corner_label_like(t) ? 1 : 0;
+      }
       if (r < r0 && corner_label_like(t)) ++labels;
       else if (!t.empty()) other += parse_mark(t) ? 1 : 2;
     }
+    if (band == 1 && beside == 1) return true;  // `EFFECTS` merged beside the effect rows
     return labels > 0 && other <= 1;
   }
 

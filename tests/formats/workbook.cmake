@@ -1,6 +1,7 @@
 # Workbooks (6.6, docs/workbook.md): ODS and XLSX, the six tables, limits.
 add_executable(test_formats_workbook ${CMAKE_CURRENT_LIST_DIR}/test_workbook.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/test_workbook_malformed.cpp ${CMAKE_CURRENT_LIST_DIR}/test_workbook_formats.cpp)
+  ${CMAKE_CURRENT_LIST_DIR}/test_workbook_malformed.cpp ${CMAKE_CURRENT_LIST_DIR}/test_workbook_formats.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/test_workbook_vendor.cpp)
 target_link_libraries(test_formats_workbook PRIVATE cemv_formats cemv_testsupport GTest::gtest_main pugixml::pugixml)
 target_compile_definitions(test_formats_workbook PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 gtest_discover_tests(test_formats_workbook DISCOVERY_MODE PRE_TEST)
