@@ -63,6 +63,12 @@ struct Group {
   SlotCell voting_cell;
 };
 
+std::string upper(std::string s) {
+  for (auto& c : s)
+    if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
+  return s;
+}
+
 class AxisReader {
  public:
   AxisReader(const Sheet& sheet, const Shape& shape, bool rows, AxisContext ctx)
@@ -83,6 +89,7 @@ class AxisReader {
   }
 
  private:
+  bool cause() const { return ctx_.kind == ElementKind::Cause; }
   std::string where(const Line& l) const {
     return (rows_ ? "row " : "column ") + std::to_string(l.position);
   }
@@ -137,11 +144,11 @@ class AxisReader {
     if (!l.data && ((rows_ && id.empty()) || one_text)) {
       warn(l.line, rows_ ? sheet_.column_of(0) : l.column,
            std::string(rows_ ? "text row" : "text column") + " without " +
-               (kind_ == std::string("cause") ? "a cause" : "an effect") + " id or intersections ignored: " +
+               (cause() ? "a cause" : "an effect") + " id or intersections ignored: " +
                in_quotes(l.label_text));
       return;
     }
-    const int limit = kind_ == std::string("cause") ? model::kMaxCauses : model::kMaxEffects;
+    const int limit = cause() ? model::kMaxCauses : model::kMaxEffects;
     if (out_.elements.size() == static_cast<std::size_t>(limit))
       throw LoadError({{where_of(ctx_.source, l.line),
                         "more than " + std::to_string(limit) + " " + kind_ + " " + (rows_ ? "rows" : "columns") +
@@ -240,7 +247,7 @@ class AxisReader {
     g.first = l;
     g.expected = l.span;
     g.by_merge = l.span > 1;
-    if (const SlotCell* v = l.cell(SheetAttribute::Voting); v && !v->text.empty() && kind_ == std::string("cause")) {
+    if (const SlotCell* v = l.cell(SheetAttribute::Voting); v && !v->text.empty() && cause()) {
       std::string problem;
       g.voting = parse_voting(v->text, problem);
       g.voting_cell = *v;
@@ -303,12 +310,6 @@ class AxisReader {
   AxisElements out_;
   std::optional<Group> group_;
 
- public:
-  static std::string upper(std::string s) {
-    for (auto& c : s)
-      if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
-    return s;
-  }
 };
 
 void AxisReader::close_group() {
@@ -319,7 +320,7 @@ void AxisReader::close_group() {
   SheetElement& e = out_.elements[static_cast<std::size_t>(g.element)];
   const int tags = std::max<int>(1, static_cast<int>(e.tags.size()));
   const std::string lines = g.lines > 1 ? span_text(e.first_line, e.last_line) : where(g.first);
-  if (kind_ != std::string("cause")) {
+  if (!cause()) {
     if (tags > model::kMaxEffectTags)
       error(e.line, e.column, "the effect has " + std::to_string(tags) + " tags (" + lines + "); an effect has at most " +
                                   std::to_string(model::kMaxEffectTags) + " (3.4)");
