@@ -7,6 +7,7 @@
 #include "cli/commands.hpp"
 #include "cli/matrix_input.hpp"
 #include "cli/output.hpp"
+#include "cli/sheet_layout_options.hpp"
 #include "formats/csv.hpp"
 #include "formats/matrix_json.hpp"
 #include "model/names.hpp"
@@ -67,6 +68,7 @@ void add_csv_commands(CLI::App& app, Context& ctx) {
     std::string name;
     std::string orientation = "auto";
     bool strict = false;
+    SheetLayoutOptions sheet;
   };
   auto im = std::make_shared<ImportOptions>();
   auto* imp = app.add_subcommand(
@@ -86,6 +88,7 @@ void add_csv_commands(CLI::App& app, Context& ctx) {
                   "they are missing or disagree), causes-as-rows or effects-as-rows")
       ->check(CLI::IsMember({"auto", "causes-as-rows", "effects-as-rows"}));
   imp->add_flag("--strict", im->strict, "Every import warning is an error (exit 2), for CI");
+  add_sheet_layout_options(imp, im->sheet);
   add_quiet_flag(imp, ctx);
   imp->callback([im, imp, &ctx] {
     // 6.1.2: a matrix name has at most 16 characters, as the help text says
@@ -97,12 +100,14 @@ void add_csv_commands(CLI::App& app, Context& ctx) {
                   std::to_string(kMaxImportedName) + " (6.1.2)";
       if (problem) throw std::invalid_argument("import-csv: --name " + model::in_quotes(im->name) + ": " + *problem);
     }
-    const bool grid_only = imp->count("--separator") + imp->count("--name") > 0 ||
+    const bool grid_only = imp->count("--separator") + imp->count("--name") + imp->count("--sheet-layout") +
+                                   imp->count("--save-layout") > 0 ||
                            (imp->count("--orientation") > 0 && im->orientation != "auto");
     if (im->layout == "records" && grid_only)
       throw std::invalid_argument("import-csv: --separator, --name and --orientation apply to grids, not to "
-                                  "--layout records");
+                                  "--layout records (so do --sheet-layout and --save-layout)");
     check_writable(im->output);
+    check_sheet_layout_output(im->sheet);
     formats::CsvImportOptions options;
     options.layout = im->layout == "records" ? formats::CsvLayoutKind::Records
                      : im->layout == "grid"  ? formats::CsvLayoutKind::Grid
@@ -111,6 +116,7 @@ void add_csv_commands(CLI::App& app, Context& ctx) {
     options.orientation = orientation_of(im->orientation);
     options.strict = im->strict;
     if (!im->separator.empty()) options.separator = im->separator == "tab" ? '\t' : im->separator[0];
+    options.sheet_layout = load_sheet_layout(im->sheet);
     const std::string name = input_name(im->input);
     const std::string text = read_input(im->input);
     formats::CsvImportResult result;
@@ -128,6 +134,7 @@ void add_csv_commands(CLI::App& app, Context& ctx) {
       if (!result.summary.empty()) std::cerr << name << ": note: " << result.summary << "\n";
     }
     write_output(im->output, formats::to_canonical_json(result.matrix));
+    if (result.layout == formats::CsvLayoutKind::Grid) report_layout_used(name, result.layout_used, im->sheet, ctx.quiet);
     ctx.exit_code = 0;
   });
 }

@@ -10,6 +10,7 @@
 #include "cli/commands.hpp"
 #include "cli/matrix_input.hpp"
 #include "cli/output.hpp"
+#include "cli/sheet_layout_options.hpp"
 #include "diff/structural.hpp"
 #include "formats/matrix_json.hpp"
 #include "formats/workbook.hpp"
@@ -42,27 +43,36 @@ void add_workbook_commands(CLI::App& app, Context& ctx) {
     std::string input;
     std::string output = "-";
     std::string into;
+    std::string sheet;
+    SheetLayoutOptions layout;
   };
   auto im = std::make_shared<ImportOptions>();
   auto* imp = app.add_subcommand(
       "import-workbook",
-      "Read an ODS or XLSX workbook (the six tables of 6.6.2, or a C&E grid on its first sheet) and write a "
+      "Read an ODS or XLSX workbook (the six tables of 6.6.2, or a C&E grid on one of its sheets) and write a "
       "cemv-matrix/1 file; warnings on stderr");
   imp->add_option("FILE", im->input, "Workbook (.ods or .xlsx, told by its content; '-' = standard input)")->required();
   imp->add_option("-o,--output", im->output, "Write the matrix here instead of stdout");
   imp->add_option("--into", im->into,
                   "The matrix before the import (6.6.3): list what the workbook changes in it (the structural "
                   "comparison of cemv diff)");
+  imp->add_option("--sheet", im->sheet,
+                  "Grid: the sheet that holds the matrix, by name or number (default: the one sheet with a C&E grid)");
+  add_sheet_layout_options(imp, im->layout);
   add_quiet_flag(imp, ctx);
   imp->callback([im, &ctx] {
     check_writable(im->output);
+    check_sheet_layout_output(im->layout);
     std::optional<model::Matrix> old;
     if (!im->into.empty()) old = load_matrix_input(im->into);
     const std::string name = input_name(im->input);
     const std::string bytes = read_input(im->input);
     formats::WorkbookImportResult result;
+    formats::WorkbookImportOptions options;
+    options.sheet = im->sheet;
+    options.sheet_layout = load_sheet_layout(im->layout);
     try {
-      result = formats::import_workbook(bytes, name);
+      result = formats::import_workbook(bytes, name, options);
     } catch (const formats::LoadError& e) {
       throw e.in_file(name);
     }
@@ -71,6 +81,7 @@ void add_workbook_commands(CLI::App& app, Context& ctx) {
       std::cerr << name << ": note: " << result.summary << "\n";
     }
     write_output(im->output, formats::to_canonical_json(result.matrix));
+    if (result.layout_used) report_layout_used(name, *result.layout_used, im->layout, ctx.quiet);
     if (old && !ctx.quiet) {
       const diff::StructuralDiff d = diff::compare_structure(*old, result.matrix);
       std::cerr << name << ": note: matrix comparison (6.6.3), source " << name << ", reference " << input_name(im->into)

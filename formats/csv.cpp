@@ -920,6 +920,9 @@ CsvImportResult import_csv(std::string_view text, const std::string& source_name
     layout = find_schema(first) ? CsvLayoutKind::Records : CsvLayoutKind::Grid;
   }
   if (layout == CsvLayoutKind::Records) {
+    if (options.sheet_layout)
+      throw LoadError({{source_name, "a layout description (cemv-sheet-layout/1) is for a C&E grid; the file is "
+                                     "the record layout cemv-csv/1, which says where everything is"}});
     auto records = parse_csv(text, ',', true, source_name);
     RecordImporter importer(records, source_name);
     Matrix m = importer.run();
