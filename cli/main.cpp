@@ -67,7 +67,8 @@ std::optional<std::string> unknown_option(const CLI::App& app) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"cemv: verification and acceptance tests for safety cause & effect matrices"};
+  // Named, so that help and the man page say `cemv`, not the path it was started by.
+  CLI::App app{"cemv: verification and acceptance tests for safety cause & effect matrices", "cemv"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("cemv ") + cemv::cli::build_version());
   cemv::cli::Context ctx;
