@@ -5,10 +5,6 @@
 # Depends computed from the binary's shared libraries by dpkg-shlibdeps, its
 # version the exact build (cmake/build_version.cmake).
 include(GNUInstallDirs)
-# `cmake --install` and cpack install what was built and build nothing
-# (`make package` builds first): a package made from a built tree, as the
-# test of the package does while other tests run, starts no compiler.
-set(CMAKE_SKIP_INSTALL_ALL_DEPENDENCY ON)
 
 install(TARGETS cemv RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(PROGRAMS ${PROJECT_SOURCE_DIR}/ci/cemv-gate DESTINATION ${CMAKE_INSTALL_BINDIR})
