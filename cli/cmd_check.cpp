@@ -324,6 +324,9 @@ int run_check(const CheckArgs& a) {
   checker::CheckResult result;
   try {
     result = cache ? check_with_cache(*cache, m, files, options) : checker::check_properties(m, files, options);
+  } catch (const OutputError&) {
+    progress.stop();  // the cache's files: a failed write, exit 2
+    throw;
   } catch (const std::exception& e) {
     progress.stop();
     // Inputs were checked above, so anything the checker throws is cemv's
@@ -348,6 +351,7 @@ int run_check(const CheckArgs& a) {
   result.property_files = skeleton.property_files;
   result.standard = skeleton.standard;
   result.shard = skeleton.shard;
+  if (cache) cache->store(files, result);
 #ifdef CEMV_WITH_VERIFICATION
   add_counterexample_cells(m, files, result);
 #endif

@@ -253,7 +253,6 @@ checker::CheckResult check_with_cache(const ResultCache& cache, const model::Mat
         if (s.key == e.key) return true;
     return false;
   });
-  cache.store(files, out);
   return out;
 }
 

@@ -60,8 +60,8 @@ class ResultCache {
 // checker::check_properties through the cache: the stored results of shard
 // i of n are reported (on_result is called for each first), only the rest is
 // decided, and the result lists every property of the shard in the
-// checker's order; the decided verdicts are stored. The elements a cached
-// proof needs are taken off `unsupported`.
+// checker's order (store() then keeps what it decided). The elements a
+// cached proof needs are taken off `unsupported`.
 checker::CheckResult check_with_cache(const ResultCache& cache, const model::Matrix& m,
                                       const std::vector<properties::PropertyFile>& files,
                                       checker::CheckOptions options);

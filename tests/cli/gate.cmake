@@ -45,6 +45,8 @@ cemv_cli_test(NAME gate_cache_double EXIT 0 MATCH "cache: 3 verdicts reused, out
   COMMAND bash ${_g}/cache.sh ${_d} ${_tank} ${_g}/cache_double.props ${_tmp}/cache_double)
 cemv_cli_test(NAME gate_cache_real_with_counterexamples EXIT 0 MATCH "cache: 8 verdicts reused, outputs identical"
   COMMAND bash ${_g}/cache.sh ${_c} ${_burner}/matrix.json ${_burner}/requirements.props ${_tmp}/cache_real out)
+cemv_cli_test(NAME gate_cache_unwritable_exit_2 EXIT 2 MATCH "^error: /proc/no/such: cannot create the folder"
+  COMMAND ${_d} check ${_tank} tests/cli/check_cases/proved.props --cache /proc/no/such)
 
 # -q still prints one line per negative or unknown verdict: place and name.
 add_test(NAME gate_quiet_names_each_failure WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
