@@ -5,6 +5,11 @@
 # Depends computed from the binary's shared libraries by dpkg-shlibdeps, its
 # version the exact build (cmake/build_version.cmake).
 include(GNUInstallDirs)
+# Installing and packaging build nothing: `make package` and
+# scripts/build-package build first. So cpack on a built tree (the package
+# test, while other tests run) never compiles or relinks, and a package's
+# version is always the one of the binary it holds, both from the last build.
+set(CMAKE_SKIP_INSTALL_ALL_DEPENDENCY ON)
 
 install(TARGETS cemv RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(PROGRAMS ${PROJECT_SOURCE_DIR}/ci/cemv-gate DESTINATION ${CMAKE_INSTALL_BINDIR})

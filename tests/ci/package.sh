@@ -8,8 +8,8 @@
 #  - every shared library the binary needs (its NEEDED entries) belongs to a
 #    package its Depends declares, and every library it loads resolves;
 #  - the man pages hold every command.
-# On a built tree (make test builds first) cpack's build step finds nothing
-# to do: a few seconds.
+# Builds nothing (cmake/package.cmake: packaging does not depend on the
+# build): a few seconds on a built tree.
 set -uo pipefail
 build=$(cd "$1" && pwd) tmp=$2
 fail() { echo "package.sh: $*" >&2; exit 1; }
