@@ -85,6 +85,14 @@ struct PropertyResult {
   double seconds = 0.0;                 // wall time (not in deterministic outputs)
   std::uint64_t work = 0;               // Z3 resource units the decision spent (deterministic)
   std::vector<std::string> matters;     // observable keys the property reads (for tables)
+  // Filled by the command line, not the checker (cemv check --expect,
+  // --baseline, --cache; docs/checker.md "Gating"):
+  std::string expected;       // the verdict a gate expects ("" = none: proved/reachable pass)
+  std::string expected_from;  // where that expectation comes from: "# expect:", "baseline FILE"
+  bool cached = false;        // the verdict was taken from the result cache (--cache)
+  // Falsified: the matrix cells the counterexample needs (deleting one makes
+  // the run pass), as support keys ("intersection[3,2]"); SARIF points at them.
+  std::vector<std::string> counterexample_support;
 };
 
 struct CheckResult {

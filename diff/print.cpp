@@ -4,12 +4,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "diff/print_words.hpp"
+
 namespace cemv::diff {
 
-namespace {
-
 using checker::EquivalenceVerdict;
-using json = nlohmann::ordered_json;
 
 std::string value_text(model::FieldType t, int v) {
   if (t == model::FieldType::Voting) return model::to_string(static_cast<model::Voting>(v));
@@ -56,6 +55,10 @@ std::string scenario_of(const DiffReport& r, const std::string& group) {
     if (g == group) return f;
   return "";
 }
+
+namespace {
+
+using json = nlohmann::ordered_json;
 
 std::string join_ints(const std::set<int>& s, const char* prefix) {
   std::string out;

@@ -493,13 +493,17 @@ void read_matrix(Reader& r, const InJson& root, Matrix& m) {
     r.error("", "the top level must be a JSON object (a cemv-matrix/1 document), got " + Reader::describe(root));
     return;
   }
-  // A different format would drown the real problem in unknown keys.
+  // A different format would drown the real problem in unknown keys, and a
+  // file that is no matrix at all (a path in a scenario may name any file)
+  // gets no word of its content quoted: only a cemv format's name is.
   if (!root.contains("format")) {
     r.error("format", "required key is missing (expected '" + std::string(kMatrixFormat) + "')");
+    if (!root.contains("causes") && !root.contains("effects")) return;
   } else {
     const auto& f = root["format"];
     if (!f.is_string() || f.get_ref<const std::string&>() != kMatrixFormat) {
-      r.error("format", (f.is_string() ? in_quotes(f.get_ref<const std::string&>()) : Reader::describe(f)) +
+      const bool ours = f.is_string() && f.get_ref<const std::string&>().rfind("cemv-", 0) == 0;
+      r.error("format", (ours ? in_quotes(f.get_ref<const std::string&>()) : f.is_string() ? std::string("the value") : Reader::describe(f)) +
                             " is not a supported format; expected '" + kMatrixFormat + "'");
       return;
     }
@@ -930,6 +934,32 @@ std::string canonical_text(const Matrix& m) {
 
 }  // namespace
 
+// A text that is not JSON and does not even start like a JSON object: one
+// issue that names none of its bytes (it may be any file a path in an input
+// names), with the command that reads it when it is a spreadsheet.
+static std::optional<LoadIssue> not_a_json_object(std::string_view text, const std::string& source_name) {
+  const std::size_t first = text.find_first_not_of(" \t\r\n");
+  if (first != std::string_view::npos && text[first] == '{') return std::nullopt;
+  auto ends_with = [&](std::string_view suffix) {
+    if (source_name.size() < suffix.size()) return false;
+    for (std::size_t i = 0; i < suffix.size(); ++i)
+      if (std::tolower(static_cast<unsigned char>(source_name[source_name.size() - suffix.size() + i])) != suffix[i])
+        return false;
+    return true;
+  };
+  const std::string_view first_line = text.substr(0, text.find('\n'));
+  std::string what = "syntax error: not a JSON object (a cemv-matrix/1 file is one, docs/format.md)";
+  if (text.substr(0, 4) == std::string_view("PK\x03\x04", 4) || ends_with(".ods") || ends_with(".xlsx"))
+    what = "not a cemv-matrix/1 file but a zip archive, as ODS and XLSX workbooks are: convert a workbook with "
+           "`cemv import-workbook FILE -o matrix.json` (docs/workbook.md)";
+  else if (ends_with(".csv") || ends_with(".tsv") || first_line.find_first_of(",;\t") != std::string_view::npos)
+    what = "not a cemv-matrix/1 file but a table (CSV): convert it with `cemv import-csv FILE -o matrix.json` "
+           "(docs/csv.md)";
+  const auto [line, column] = line_and_column(text, first == std::string_view::npos ? 0 : first);
+  return LoadIssue{"line " + std::to_string(line) + ", column " + std::to_string(column), what, source_name, line,
+                   column};
+}
+
 // ---- Public API ---------------------------------------------------------------------
 
 Matrix parse_matrix(std::string_view json_text, const std::string& source_name) {
@@ -942,7 +972,16 @@ Matrix parse_matrix(std::string_view json_text, const std::string& source_name) 
   if (json_text.find_first_not_of(" \t\r\n") == std::string_view::npos)
     throw LoadError({{source_name, "file is empty (expected a cemv-matrix/1 JSON object)", source_name}});
   std::optional<InJson> parsed = parse_guarded_json(json_text, source_name, issues);
-  if (!parsed) throw LoadError(std::move(issues));
+  if (!parsed) {
+    // The parser's syntax messages quote what it last read: not for a text
+    // that does not even start like a matrix. (Its limits quote nothing.)
+    const bool quoting = std::any_of(issues.begin(), issues.end(), [](const LoadIssue& i) {
+      return i.what.find("syntax error") != std::string::npos || i.what.find("invalid UTF-8") != std::string::npos;
+    });
+    if (quoting)
+      if (auto issue = not_a_json_object(json_text, source_name)) throw LoadError({*issue});
+    throw LoadError(std::move(issues));
+  }
   const InJson& root = *parsed;
 
   Matrix m;

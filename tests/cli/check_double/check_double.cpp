@@ -7,12 +7,14 @@
 #include <sstream>
 #include <stdexcept>
 #include <thread>
+#include <utility>
 
 #include "checker/check.hpp"
 #include "checker/prover.hpp"
 #include "formats/diagnostics.hpp"
 #include "formats/matrix_json.hpp"
 #include "properties/parser.hpp"
+#include "properties/print.hpp"
 #include "properties/standard.hpp"
 
 namespace cemv::checker {
@@ -118,10 +120,11 @@ PropertyFile parse_properties(std::string_view text, const model::Matrix&, const
   PropertyFile f;
   f.file_name = file_name;
   std::istringstream in{std::string(text)};
-  std::string line;
+  std::string line, expect;
   for (int n = 1; std::getline(in, line); ++n) {
     std::istringstream words(line);
     std::string kind, name;
+    if (line.rfind("# expect: ", 0) == 0) expect = line.substr(10);
     if (!(words >> kind) || kind[0] == '#') continue;
     Property p;
     bool known = false;
@@ -135,9 +138,17 @@ PropertyFile parse_properties(std::string_view text, const model::Matrix&, const
     std::getline(words >> std::ws, p.description);
     p.name = name;
     p.loc = {n, static_cast<int>(line.find(name, column)) + 1};
+    p.expect = std::exchange(expect, "");
     f.properties.push_back(std::move(p));
   }
   return f;
+}
+
+std::string to_text(const Expr&, const model::InputTable&) { return "true"; }
+
+std::string statement_text(const Property& p, const model::InputTable&) {
+  static const char* kinds[] = {"invariant", "never", "reachable", "response"};
+  return std::string(kinds[static_cast<int>(p.kind)]) + " " + p.name + " " + p.description;
 }
 
 PropertyFile standard_properties(const model::Matrix& m) {
