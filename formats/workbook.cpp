@@ -93,6 +93,7 @@ WorkbookImportResult import_grid(const Sheet& sheet, const std::string& file) {
   options.layout = CsvLayoutKind::Grid;
   options.separator = ',';
   WorkbookImportResult out;
+  out.grid = true;
   try {
     CsvImportResult r = import_csv(sheet_as_csv(sheet), file, options);
     out.matrix = std::move(r.matrix);

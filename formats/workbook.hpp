@@ -29,6 +29,7 @@ struct WorkbookImportResult {
   model::Matrix matrix;             // passed the JSON loader's checks (not validate's)
   std::vector<LoadIssue> warnings;  // in sheet order: rows not imported (6.6.3), ignored tag options, ...
   std::string summary;              // how the workbook was read
+  bool grid = false;                // a C&E grid (which states only ids, descriptions and cells), not the six tables
 };
 
 // Reads a workbook from its bytes (no file system access). The format is told
