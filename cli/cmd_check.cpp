@@ -22,6 +22,7 @@
 #include "checker/check.hpp"
 #include "checker/prover.hpp"
 #include "cli/commands.hpp"
+#include "cli/explain_trace.hpp"
 #include "cli/matrix_input.hpp"
 #include "cli/output.hpp"
 #include "cli/progress.hpp"
@@ -238,6 +239,10 @@ int run_check(const CheckArgs& a) {
   for (const auto& f : a.property_files)
     files.push_back(properties::parse_properties(read_input(f), m, input_name(f)));
   if (a.standard) files.push_back(properties::standard_properties(m));
+  properties::check_distinct_names(files);  // reports and counterexample files are named after them
+  if (!a.quiet)
+    for (const auto& f : files)
+      for (const auto& w : f.warnings) std::cerr << w << "\n";
 
   checker::CheckResult skeleton;
   skeleton.matrix_name = m.name;
@@ -325,6 +330,12 @@ int run_check(const CheckArgs& a) {
   result.property_files = skeleton.property_files;
   result.standard = skeleton.standard;
   result.shard = skeleton.shard;
+  try {
+    explain_results(m, files, result);  // "why, per step": the traces re-run with explanations
+  } catch (const std::logic_error& e) {
+    std::cerr << "internal error: " << e.what() << "\n(a bug in cemv: please report it with the matrix and property files)\n";
+    return 4;
+  }
   write_pictures(m, result);
   std::vector<reports::VcdRun> runs;  // --vcd: every counterexample and witness, a scope each
   for (const auto& p : result.properties)

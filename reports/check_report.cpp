@@ -84,4 +84,12 @@ std::string outcome_text(const checker::PropertyResult& p) {
   return "unknown";
 }
 
+std::vector<std::string> explanation_lines(const checker::PropertyResult& p) {
+  std::vector<std::string> out;
+  for (const auto& s : p.explanation)
+    out.push_back("cycle " + std::to_string(s.cycle) + ": " + s.signal + " " + (s.before.empty() ? "" : s.before + " -> ") +
+                  s.after + ": " + s.why);
+  return out;
+}
+
 }  // namespace cemv::reports
