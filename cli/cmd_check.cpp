@@ -330,6 +330,16 @@ int run_check(const CheckArgs& a) {
   result.property_files = skeleton.property_files;
   result.standard = skeleton.standard;
   result.shard = skeleton.shard;
+  // Counterexample files never overwrite each other: names are unique across
+  // the files (check_distinct_names), and each file is one property's.
+  std::map<std::string, std::string> written;  // scenario file -> property
+  for (const auto& p : result.properties)
+    if (!p.scenario_file.empty())
+      if (auto [it, fresh] = written.emplace(p.scenario_file, p.name); !fresh) {
+        std::cerr << "internal error: properties " << it->second << " and " << p.name << " wrote one file "
+                  << p.scenario_file << "\n(a bug in cemv: please report it with the matrix and property files)\n";
+        return 4;
+      }
   try {
     explain_results(m, files, result);  // "why, per step": the traces re-run with explanations
   } catch (const std::logic_error& e) {

@@ -441,7 +441,9 @@ void Applier::read_footnotes(const Json& j, const std::string& origin) {
     if (cited == 0)
       warnings_.push_back({fp, "footnote " + rec.mark + " is cited by no intersection of the matrix", file_});
     else
-      policy_values_.push_back({"footnote " + rec.mark + " (" + std::to_string(cited) + " intersections)", "note",
+      policy_values_.push_back({"footnote " + rec.mark + " (" + std::to_string(cited) +
+                                    (cited == 1 ? " intersection)" : " intersections)"),
+                                "note",
                                 Json(rec.mark + " " + rec.text).dump(), Json(rec.mark).dump(), o});
     footnotes_.push_back(std::move(rec));
   }

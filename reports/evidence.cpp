@@ -350,16 +350,22 @@ class Writer {
                          ". Timing diagram (rows named cause/effect NUMBER NAME field):",
                      "", 8.5);
     diagram(pages_, report_diagram(m_, p), "timing diagram of " + p.name);
-    if (!p.explanation.empty()) {
-      Table why;
-      why.widths_mm = {12, 44, 18, 112};
-      why.head = {"Cycle", "Signal", "Change", "Why (docs/semantics.md)"};
-      why.font_pt = 7.5;
-      for (const auto& s : p.explanation)
-        why.rows.push_back({text_cell(std::to_string(s.cycle), "num"), text_cell(s.signal),
-                            text_cell((s.before.empty() ? "" : s.before + " → ") + s.after), text_cell(s.why)});
-      pages_.table(why);
-    }
+    why_table(p);
+  }
+
+  // "Why, per step" of a trace, captioned so that it names its property
+  // when it starts a page.
+  void why_table(const PropertyResult& p) {
+    if (p.explanation.empty()) return;
+    pages_.caption("Why, per step: " + p.name + " (the rules of docs/semantics.md the runtime applied)");
+    Table why;
+    why.widths_mm = {12, 44, 18, 112};
+    why.head = {"Cycle", "Signal", "Change", "Why (docs/semantics.md)"};
+    why.font_pt = 7.5;
+    for (const auto& s : p.explanation)
+      why.rows.push_back({text_cell(std::to_string(s.cycle), "num"), text_cell(s.signal),
+                          text_cell((s.before.empty() ? "" : s.before + " → ") + s.after), text_cell(s.why)});
+    pages_.table(why);
   }
 
   // ---- 2. the standard set -------------------------------------------------
@@ -465,12 +471,15 @@ class Writer {
                           text_cell(p->method.empty() ? p->reason : p->method)});
       }
     pages_.table(t);
+    // The counterexamples of the standard set in full; its witnesses (a
+    // reachable effect, a resettable latch) are the table's "reachable".
     for (const auto& e : d_.standard_by_element)
       for (const auto* p : e.properties)
-        if (p->trace) {
+        if (p->trace && !passed(p->verdict)) {
           pages_.section("std-" + anchor(p->name), "", p->name, false);
-          pages_.paragraph(outcome_text(*p), passed(p->verdict) ? "ok" : "bad", 8.5);
+          pages_.paragraph(outcome_text(*p), "bad", 8.5);
           diagram(pages_, report_diagram(m_, *p), "timing diagram of " + p->name);
+          why_table(*p);
         }
   }
 

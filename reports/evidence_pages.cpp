@@ -105,6 +105,13 @@ void Pages::section(const std::string& id, const std::string& number, const std:
   pending_height_ = 4.5 + lines_height(lines_of(text, kPageWidthMm, 11.5), 11.5) + 1.5;
 }
 
+void Pages::caption(const std::string& text) {
+  if (!pending_.empty()) place("", 0);
+  if (sheets_.empty()) new_sheet();
+  pending_ = "<p class=\"caption\">" + html_escape(text) + "</p>\n";
+  pending_height_ = lines_height(lines_of(text, kPageWidthMm, 8.5), 8.5) + kParagraphGapMm;
+}
+
 void Pages::block(const std::string& html, double height_mm) { place(html, height_mm); }
 
 void Pages::paragraph(const std::string& text, const std::string& css, double font_pt) {

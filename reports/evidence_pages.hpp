@@ -60,6 +60,9 @@ class Pages {
   // A section heading (an entry of the contents when `listed`); never the
   // last block of a sheet.
   void section(const std::string& id, const std::string& number, const std::string& title, bool listed = true);
+  // A one-line caption that stays with the block after it (like a heading,
+  // not in the contents).
+  void caption(const std::string& text);
   // A block that is never split, `height_mm` high.
   void block(const std::string& html, double height_mm);
   // A paragraph of `text` (escaped here) at `font_pt`, css class `css`.

@@ -18,7 +18,7 @@ th{background:#f3f4f6;font-weight:bold}td.key{background:#f9fafb;font-weight:bol
 .mono,pre{font-family:"DejaVu Sans Mono",monospace}
 pre{white-space:pre-wrap;overflow-wrap:anywhere;font-size:7.5pt;line-height:1.3;background:#f9fafb;border:0.2mm solid #e5e7eb;padding:1mm;margin:0 0 1.5mm}
 .ok{background:#dcfce7}.bad{background:#fee2e2}.warn{background:#fef3c7}.unk{background:#e5e7eb}
-p.ok,p.bad,p.warn,p.unk{padding:1mm}.desc{font-style:italic}
+p.ok,p.bad,p.warn,p.unk{padding:1mm}.desc{font-style:italic}p.caption{font-size:8.5pt;font-weight:bold}
 .banner{background:#fee2e2;border:0.6mm solid #dc2626;padding:2mm;font-weight:bold;font-size:11pt}
 .signfield{height:9mm}
 table.toc{border:none;width:186mm}table.toc td{border:none;padding:0.6mm 1mm}table.toc td.pg{text-align:right;width:14mm}
