@@ -15,6 +15,7 @@
 #include "checker/prover.hpp"
 #include "cli/check_gate.hpp"
 #include "cli/commands.hpp"
+#include "cli/explain_trace.hpp"
 #include "cli/matrix_input.hpp"
 #include "cli/output.hpp"
 #include "cli/progress.hpp"
@@ -183,6 +184,10 @@ int run_check(const CheckArgs& a) {
   for (const auto& f : a.property_files)
     files.push_back(properties::parse_properties(read_input(f), m, input_name(f)));
   if (a.standard) files.push_back(properties::standard_properties(m));
+  properties::check_distinct_names(files);  // reports and counterexample files are named after them
+  if (!a.quiet)
+    for (const auto& f : files)
+      for (const auto& w : f.warnings) std::cerr << w << "\n";
   const CheckGate gate(a.expect, a.baseline_file, files);  // a bad baseline fails before the work
 
   checker::CheckResult skeleton;
@@ -260,6 +265,22 @@ int run_check(const CheckArgs& a) {
   add_counterexample_cells(m, files, result);
 #endif
   gate.annotate(result);
+  // Counterexample files never overwrite each other: names are unique across
+  // the files (check_distinct_names), and each file is one property's.
+  std::map<std::string, std::string> written;  // scenario file -> property
+  for (const auto& p : result.properties)
+    if (!p.scenario_file.empty())
+      if (auto [it, fresh] = written.emplace(p.scenario_file, p.name); !fresh) {
+        std::cerr << "internal error: properties " << it->second << " and " << p.name << " wrote one file "
+                  << p.scenario_file << "\n(a bug in cemv: please report it with the matrix and property files)\n";
+        return 4;
+      }
+  try {
+    explain_results(m, files, result);  // "why, per step": the traces re-run with explanations
+  } catch (const std::logic_error& e) {
+    std::cerr << "internal error: " << e.what() << "\n(a bug in cemv: please report it with the matrix and property files)\n";
+    return 4;
+  }
   write_pictures(m, result);
   std::vector<reports::VcdRun> runs;  // --vcd: every counterexample and witness, a scope each
   for (const auto& p : result.properties)

@@ -17,6 +17,7 @@
 #include "cli/scenario_defaults.hpp"
 #include "diff/print.hpp"
 #include "formats/matrix_json.hpp"
+#include "model/validate.hpp"
 
 namespace cemv::cli {
 
@@ -67,12 +68,19 @@ int run_diff(const DiffArgs& a) {
   if (a.format != "text" && a.format != "md" && a.format != "html" && a.format != "json" && a.format != "sarif")
     throw std::runtime_error("diff: --format '" + a.format + "': expected text, md, html, json or sarif");
   if (a.old_file == "-" && a.new_file == "-") throw std::runtime_error("diff: '-' (standard input) can be read only once");
-  // The texts are kept: SARIF places each change at its element's line.
+  // The texts are kept: SARIF places each change at its element's line. A
+  // matrix with validation errors still gets its structural comparison; only
+  // the behaviour, which needs an executable matrix, is not compared.
   const std::string old_text = read_input(a.old_file), new_text = read_input(a.new_file);
-  const model::Matrix old_m = formats::parse_valid_matrix(old_text, input_name(a.old_file), "compared");
-  const model::Matrix new_m = formats::parse_valid_matrix(new_text, input_name(a.new_file), "compared");
+  const model::Matrix old_m = formats::parse_matrix(old_text, input_name(a.old_file));
+  const model::Matrix new_m = formats::parse_matrix(new_text, input_name(a.new_file));
   check_writable(a.output);
   if (!a.out_dir.empty()) check_writable_directory(a.out_dir);
+  std::vector<std::string> not_compared;
+  for (const auto& [side, m] : {std::pair<const char*, const model::Matrix*>{"OLD", &old_m}, {"NEW", &new_m}})
+    for (const auto& d : model::validate(*m))
+      if (d.severity == model::Severity::Error)
+        not_compared.push_back(std::string(side) + ": " + d.rule + " " + d.element + " (" + d.section + "): " + d.message);
   diff::DiffReport r;
   r.old_m = &old_m;
   r.new_m = &new_m;
@@ -83,10 +91,13 @@ int run_diff(const DiffArgs& a) {
   r.old_signature = formats::signature(old_m);
   r.new_signature = formats::signature(new_m);
   r.structure = diff::compare_structure(old_m, new_m);
-  diff::SemanticOptions o;
-  o.timeout_s = a.timeout_s;
-  r.behaviour = diff::compare_behaviour(old_m, new_m, r.structure, o);
-  write_scenarios(a, r);
+  r.not_compared = not_compared;
+  if (not_compared.empty()) {
+    diff::SemanticOptions o;
+    o.timeout_s = a.timeout_s;
+    r.behaviour = diff::compare_behaviour(old_m, new_m, r.structure, o);
+    write_scenarios(a, r);
+  }
   std::string text = a.format == "json"    ? diff::to_json(r)
                      : a.format == "sarif" ? diff::to_sarif(r, CEMV_VERSION)
                      : a.format == "md"   ? diff::to_markdown(r)
@@ -117,7 +128,8 @@ void add_diff_commands(CLI::App& app, Context& ctx) {
   cmd->add_flag("-q,--quiet", a.quiet, "print nothing but errors (and the output asked for)");
   cmd->footer(
       "Exit status: 0 no effect's behaviour changed (at most non-critical or behaviour-equivalent edits);\n"
-      "1 some effect's behaviour changed; 2 invalid input; 3 some effect undecided within --timeout;\n"
+      "1 some effect's behaviour changed; 2 invalid input (a matrix with validation errors: the structural\n"
+      "comparison is written, the behaviour is not compared); 3 some effect undecided within --timeout;\n"
       "4 internal error (a distinguishing run that does not replay on both runtimes).\n");
   cmd->callback([&ctx]() {
     try {

@@ -76,6 +76,7 @@ int main(int argc, char** argv) {
   cemv::cli::add_validate_commands(app, ctx);
   cemv::cli::add_report_commands(app, ctx);
   cemv::cli::add_csv_commands(app, ctx);
+  cemv::cli::add_params_commands(app, ctx);
   cemv::cli::add_simulate_commands(app, ctx);
   cemv::cli::add_smt_commands(app, ctx);
 #ifdef CEMV_WITH_CHECK  // defined when the checker and the property language are built

@@ -26,7 +26,12 @@ struct DiffReport {
   SemanticDiff behaviour;
   // Scenario files written for distinguishing runs, by group name ("effect[2]").
   std::vector<std::pair<std::string, std::string>> scenarios;
-  int exit_code() const;  // 0 no behaviour changed, 1 changed, 3 undecided
+  // Why the behaviour was not compared: one line per validation error of a
+  // side ("OLD: E-OVERRIDE-TIME-MISSING effect[1] ..."); empty when it was.
+  // A matrix with validation errors cannot be executed, so only the
+  // structural comparison is given (docs/change-acceptance.md).
+  std::vector<std::string> not_compared;
+  int exit_code() const;  // 0 no behaviour changed, 1 changed, 2 not compared (invalid), 3 undecided
   std::string verdict() const;  // one line: what the exit code says
 };
 

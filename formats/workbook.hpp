@@ -35,6 +35,7 @@ struct WorkbookImportResult {
   // A C&E grid: the layout it was read with, complete (docs/csv.md "The
   // layout description"); none for the six tables.
   std::optional<SheetLayout> layout_used;
+  bool grid = false;                // a C&E grid (which states only ids, descriptions and cells), not the six tables
 };
 
 // What the caller says of a workbook that holds a C&E grid (docs/workbook.md

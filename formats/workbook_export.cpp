@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <set>
 
+#include "formats/matrix_extras.hpp"
 #include "formats/workbook_tables.hpp"
 #include "formats/workbook_tags.hpp"
 #include "model/text.hpp"
@@ -104,6 +105,14 @@ Sheet properties(const Matrix& m) {
     if (auto it = m.process_safety_time_ms.find(group); it != m.process_safety_time_ms.end())
       s.put(r, 3, num(it->second), false, CellKind::Number);
     s.put(r, 4, "name of SIF group (3.4, 6.2.1) and its process safety time, ms (HIMatrix 3.2.1)", true);
+    ++r;
+  }
+  // Tag descriptions, simulation permissions and provenance records, as the
+  // record layout carries them (formats/matrix_extras.hpp).
+  for (const auto& x : extra_properties(m)) {
+    s.put(r, 1, x.key);
+    s.put(r, 2, x.value);
+    s.put(r, 4, "cemv-matrix/1 field kept as a property row (docs/workbook.md)", true);
     ++r;
   }
   // A process safety time of a group that has no name entry cannot occur:

@@ -217,6 +217,7 @@ WorkbookImportResult import_grid_workbook(const Workbook& wb, const std::string&
     extras.remarks_place = "sheet " + model::in_quotes(r.name);
   }
   WorkbookImportResult out;
+  out.grid = true;
   try {
     CsvImportResult r = grid::import_grid(sheet_as_csv(sheet), file, csv, extras);
     out.matrix = std::move(r.matrix);

@@ -47,6 +47,10 @@ ordered_json property_json(const checker::PropertyResult& p) {
   j["waveforms"] = optional_text(p.vcd_file);
   j["violation_cycle"] = p.violation_cycle >= 0 ? ordered_json(p.violation_cycle) : ordered_json();
   j["expected"] = optional_text(p.expected);
+  ordered_json why = ordered_json::array();  // "why, per step": one entry per change of a signal it reads
+  for (const auto& s : p.explanation)
+    why.push_back({{"cycle", s.cycle}, {"signal", s.signal}, {"before", s.before}, {"after", s.after}, {"why", s.why}});
+  j["explanation"] = std::move(why);
   return j;
 }
 

@@ -122,4 +122,12 @@ std::string check_findings(const checker::CheckResult& r, const CheckReportInput
   return out;
 }
 
+std::vector<std::string> explanation_lines(const checker::PropertyResult& p) {
+  std::vector<std::string> out;
+  for (const auto& s : p.explanation)
+    out.push_back("cycle " + std::to_string(s.cycle) + ": " + s.signal + " " + (s.before.empty() ? "" : s.before + " -> ") +
+                  s.after + ": " + s.why);
+  return out;
+}
+
 }  // namespace cemv::reports

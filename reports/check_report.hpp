@@ -67,6 +67,11 @@ std::array<int, 6> verdict_counts(const checker::CheckResult& r);
 // the element in SARIF messages and logical locations.
 std::vector<std::string> property_elements(const checker::PropertyResult& p);
 
+// "Why, per step" as lines: "cycle 3: effect[1].latched 1 -> 0: R latch
+// cleared without a reset: ... (E.5)" (an input tag: "cycle 2: TAG 0 -> 1: an
+// input of the run ..."), one per entry of p.explanation.
+std::vector<std::string> explanation_lines(const checker::PropertyResult& p);
+
 // One line describing the outcome, without times: "proved by k-induction (k = 3)",
 // "falsified at cycle 4 (trace of 5 cycles)", "unknown: time limit", ...
 std::string outcome_text(const checker::PropertyResult& p);

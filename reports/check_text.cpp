@@ -58,6 +58,10 @@ void details(std::ostringstream& out, const PropertyResult& p, const CheckReport
     if (!p.diagram_file.empty()) out << "    diagram: " << p.diagram_file << "\n";
     if (!p.vcd_file.empty()) out << "    waveforms: " << p.vcd_file << "\n";
     if (!p.timing_table.empty()) indented(out, p.timing_table, "    ");
+    if (!p.explanation.empty()) {
+      out << "    why, per step (docs/semantics.md):\n";
+      for (const auto& s : explanation_lines(p)) out << "      " << s << "\n";
+    }
   }
 }
 

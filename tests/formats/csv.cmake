@@ -88,7 +88,7 @@ cemv_cli_test(NAME cli_import_csv_sheet_layout_malformed EXIT 2
   COMMAND $<TARGET_FILE:cemv> import-csv ${LSST} --sheet-layout ${CSV_TMP}/bad_layout.json -o ${CSV_TMP}/bad_layout_out.json)
 cemv_cli_test(NAME cli_import_csv_sheet_layout_saved_and_given_again EXIT 0
   MATCH "^same matrix with the layout saved: [0-9a-f]+$"
-  COMMAND bash -c "$0 import-csv ${LSST} -o ${CSV_TMP}/first.json --save-layout ${CSV_TMP}/lsst_layout.json 2>/dev/null && $0 import-csv ${LSST} --sheet-layout ${CSV_TMP}/lsst_layout.json -o ${CSV_TMP}/again.json 2>/dev/null && cmp ${CSV_TMP}/first.json ${CSV_TMP}/again.json && echo \"same matrix with the layout saved: $($0 signature ${CSV_TMP}/again.json)\"" $<TARGET_FILE:cemv>)
+  COMMAND bash -c "$0 import-csv ${LSST} -o ${CSV_TMP}/first.json --save-layout ${CSV_TMP}/lsst_layout.json 2>/dev/null && $0 import-csv ${LSST} --sheet-layout ${CSV_TMP}/lsst_layout.json -o ${CSV_TMP}/again.json 2>/dev/null && python3 $1 ${CSV_TMP}/first.json ${CSV_TMP}/first_bare.json && python3 $1 ${CSV_TMP}/again.json ${CSV_TMP}/again_bare.json && cmp ${CSV_TMP}/first_bare.json ${CSV_TMP}/again_bare.json && echo \"same matrix with the layout saved: $($0 signature ${CSV_TMP}/again_bare.json)\"" $<TARGET_FILE:cemv> ${CMAKE_CURRENT_LIST_DIR}/without_import_records.py)
 cemv_cli_test(NAME cli_import_csv_layout_used_note EXIT 0
   MATCH "note: layout used \\(found in the sheet. --save-layout keeps it\\): \\{\"format\":\"cemv-sheet-layout/1\",\"orientation\":\"causes-as-rows\",\"causes\":\\{\"id\":\"B\",\"description\":\"A\"\\},\"effects\":\\{\"id\":2,\"description\":1\\}"
   COMMAND $<TARGET_FILE:cemv> import-csv ${LSST} -o ${CSV_TMP}/lsst_note.json)

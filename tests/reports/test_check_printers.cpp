@@ -67,6 +67,9 @@ CheckResult sample(double seconds_scale = 1.0) {
       "  LT_100A           1:0  3:95\n"
       "  effect[1].active  1:0  3:1  4:0\n";
   falsified.matters = {"effect[1].active", "cause[1].active"};
+  falsified.explanation = {{3, "LT_100A", "0", "95", "an input of the run (the plant or the operator's switch)"},
+                           {3, "effect[1].active", "0", "1", "N request: cause 1 LT100_HH is active on its N intersection (E.2, E.6)"},
+                           {4, "effect[1].active", "1", "0", "no request left: no linked cause is active (E.2, E.6)"}};
   falsified.seconds = 0.031 * seconds_scale;
   r.properties.push_back(falsified);
 
