@@ -3,7 +3,7 @@ BUILD  ?= build
 JOBS   ?= $(shell nproc)
 CMAKE_FLAGS ?=
 
-.PHONY: all deps build demo test bench sanitize fuzz clean
+.PHONY: all deps build demo test bench package sanitize fuzz clean
 
 all: build
 
@@ -24,6 +24,15 @@ test: build
 
 bench: build
 	@scripts/bench $(BUILD)
+
+# The Debian package of what `make` built (docs/ci.md, "Installing cemv"):
+# $(BUILD)/cemv_VERSION_ARCH.deb, copied here, so that
+# `apt-get install ./cemv_*.deb` installs it. scripts/build-package makes the
+# same package from the slim build (no tests, no benchmarks), as CI does.
+package: build
+	rm -f $(BUILD)/cemv_*.deb ./cemv_*.deb
+	cmake --build $(BUILD) --target package
+	cp $(BUILD)/cemv_*.deb .
 
 # ASan + UBSan build of everything, running the whole suite (slower).
 sanitize: deps

@@ -60,6 +60,19 @@ struct ConcreteTrace {
   std::vector<std::vector<int>> observables;
 };
 
+// One step of a counterexample's or witness's explanation (docs/checker.md,
+// "Why, per step"): in cycle `cycle` (1-based) the signal `signal` (an
+// observable key or an input tag the property reads) went from `before` to
+// `after`, because of `why`: for an observable, the rule of docs/semantics.md
+// the runtime applied (filled by the command line, which re-runs the trace on
+// the runtime with explanations on).
+struct StepNote {
+  int cycle = 0;
+  std::string signal;
+  std::string before, after;
+  std::string why;
+};
+
 struct PropertyResult {
   std::string name;
   std::string description;
@@ -85,6 +98,15 @@ struct PropertyResult {
   double seconds = 0.0;                 // wall time (not in deterministic outputs)
   std::uint64_t work = 0;               // Z3 resource units the decision spent (deterministic)
   std::vector<std::string> matters;     // observable keys the property reads (for tables)
+  // Filled by the command line, not the checker (cemv check --expect,
+  // --baseline, --cache; docs/checker.md "Gating"):
+  std::string expected;       // the verdict a gate expects ("" = none: proved/reachable pass)
+  std::string expected_from;  // where that expectation comes from: "# expect:", "baseline FILE"
+  bool cached = false;        // the verdict was taken from the result cache (--cache)
+  // Falsified: the matrix cells the counterexample needs (deleting one makes
+  // the run pass), as support keys ("intersection[3,2]"); SARIF points at them.
+  std::vector<std::string> counterexample_support;
+  std::vector<StepNote> explanation;    // Falsified / Reachable: why each signal changed, per cycle
 };
 
 struct CheckResult {

@@ -13,16 +13,23 @@
 
 #include "checker/check.hpp"
 #include "checker/prover.hpp"
+#include "cli/check_gate.hpp"
 #include "cli/commands.hpp"
+#include "cli/explain_trace.hpp"
 #include "cli/matrix_input.hpp"
 #include "cli/output.hpp"
 #include "cli/progress.hpp"
+#include "cli/result_cache.hpp"
+#include "cli/version.hpp"
 #include "formats/matrix_json.hpp"
 #include "properties/parser.hpp"
 #include "properties/standard.hpp"
 #include "reports/check_report.hpp"
 #include "reports/timing_svg.hpp"
 #include "reports/vcd.hpp"
+#ifdef CEMV_WITH_VERIFICATION  // the product, not the CLI tests' checker double
+#include "cli/counterexample_cells.hpp"
+#endif
 
 namespace cemv::cli {
 
@@ -45,6 +52,9 @@ struct CheckArgs {
   double timeout_s = 0.0;
   double total_timeout_s = 0.0;
   bool quiet = false;
+  bool expect = false;        // --expect: verdicts against the `# expect:` comments
+  std::string baseline_file;  // --baseline FILE: verdicts against an earlier cemv-result/1
+  std::string cache_dir;      // --cache DIR: verdicts kept between runs
 };
 
 // A usage error found after parsing (exit 2).
@@ -74,12 +84,6 @@ std::size_t planned_count(const std::vector<properties::PropertyFile>& files, in
   for (const auto& f : files)
     for (std::size_t k = 0; k < f.properties.size(); ++k) n += checker::in_shard(index++, shard_index, shard_count);
   return n;
-}
-
-std::vector<PropertyVerdict> verdicts_of(const checker::CheckResult& r) {
-  std::vector<PropertyVerdict> v;
-  for (const auto& p : r.properties) v.push_back(p.verdict);
-  return v;
 }
 
 // One report to write: --format with -o, and each --report FORMAT:FILE.
@@ -128,16 +132,20 @@ void write_pictures(const model::Matrix& m, checker::CheckResult& r) {
 
 // Writes every report and, when none went to standard output, a one-line
 // summary there.
-void publish(const checker::CheckResult& r, const CheckArgs& a, const std::vector<Destination>& to) {
+void publish(const checker::CheckResult& r, const CheckArgs& a, const std::vector<Destination>& to,
+             const reports::CheckReportInputs& in) {
   bool any_stdout = false;
   std::string written;
   for (const auto& d : to) {
     bool to_stdout = d.file == "-";
     any_stdout |= to_stdout;
     if (a.quiet && to_stdout && d.format == reports::CheckFormat::Text) continue;
-    write_output(d.file, reports::check_report(r, {input_name(a.matrix_file)}, d.format));
+    write_output(d.file, reports::check_report(r, in, d.format));
     if (!to_stdout) written += (written.empty() ? "" : ", ") + d.format_name + " to " + d.file;
   }
+  // --quiet still names every property that did not pass (or not as
+  // expected), a line each, so that a CI log is never empty on a failure.
+  if (a.quiet) std::cerr << reports::check_findings(r, in) << std::flush;
   if (any_stdout || a.quiet) return;
   auto counts = reports::verdict_counts(r);
   std::string line = "cemv check: " + r.matrix_name + ": " + std::to_string(r.properties.size()) +
@@ -149,6 +157,8 @@ void publish(const checker::CheckResult& r, const CheckArgs& a, const std::vecto
               reports::verdict_name(static_cast<PropertyVerdict>(v));
       sep = ", ";
     }
+  auto cached = std::count_if(r.properties.begin(), r.properties.end(), [](const PropertyResult& p) { return p.cached; });
+  if (cached) line += "; " + std::to_string(cached) + " from the cache";
   line += std::string(r.interrupted ? "; interrupted" : "") + "; wrote " + written + "\n";
   write_output("-", line);
 }
@@ -168,11 +178,17 @@ int run_check(const CheckArgs& a) {
   if (!a.out_dir.empty()) check_writable_directory(a.out_dir);
   if (!a.vcd_file.empty()) check_writable(a.vcd_file);
 
-  const model::Matrix m = load_valid_matrix(a.matrix_file, "checked");
+  reports::CheckReportInputs report_inputs{input_name(a.matrix_file), read_input(a.matrix_file)};
+  const model::Matrix m = formats::parse_valid_matrix(report_inputs.matrix_text, report_inputs.matrix_file, "checked");
   std::vector<properties::PropertyFile> files;
   for (const auto& f : a.property_files)
     files.push_back(properties::parse_properties(read_input(f), m, input_name(f)));
   if (a.standard) files.push_back(properties::standard_properties(m));
+  properties::check_distinct_names(files);  // reports and counterexample files are named after them
+  if (!a.quiet)
+    for (const auto& f : files)
+      for (const auto& w : f.warnings) std::cerr << w << "\n";
+  const CheckGate gate(a.expect, a.baseline_file, files);  // a bad baseline fails before the work
 
   checker::CheckResult skeleton;
   skeleton.matrix_name = m.name;
@@ -204,9 +220,23 @@ int run_check(const CheckArgs& a) {
   options.on_start = [&](const std::string& name) { progress.started(name); };
   options.on_result = [&](const PropertyResult& r) { progress.finished(r.name); };
 
+  std::optional<ResultCache> cache;
+  if (!a.cache_dir.empty()) {
+    ResultCache::Confirm confirm;
+#ifdef CEMV_WITH_VERIFICATION
+    confirm = [&m](const properties::PropertyFile& f, const properties::Property& p, const PropertyResult& r) {
+      return confirms(m, f, p, r);
+    };
+#endif
+    cache.emplace(a.cache_dir, build_version(), m, skeleton.matrix_signature, a.out_dir, confirm);
+  }
+
   checker::CheckResult result;
   try {
-    result = checker::check_properties(m, files, options);
+    result = cache ? check_with_cache(*cache, m, files, options) : checker::check_properties(m, files, options);
+  } catch (const OutputError&) {
+    progress.stop();  // the cache's files: a failed write, exit 2
+    throw;
   } catch (const std::exception& e) {
     progress.stop();
     // Inputs were checked above, so anything the checker throws is cemv's
@@ -230,19 +260,44 @@ int run_check(const CheckArgs& a) {
   result.property_files = skeleton.property_files;
   result.standard = skeleton.standard;
   result.shard = skeleton.shard;
+  if (cache) cache->store(files, result);
+#ifdef CEMV_WITH_VERIFICATION
+  add_counterexample_cells(m, files, result);
+#endif
+  gate.annotate(result);
+  // Counterexample files never overwrite each other: names are unique across
+  // the files (check_distinct_names), and each file is one property's.
+  std::map<std::string, std::string> written;  // scenario file -> property
+  for (const auto& p : result.properties)
+    if (!p.scenario_file.empty())
+      if (auto [it, fresh] = written.emplace(p.scenario_file, p.name); !fresh) {
+        std::cerr << "internal error: properties " << it->second << " and " << p.name << " wrote one file "
+                  << p.scenario_file << "\n(a bug in cemv: please report it with the matrix and property files)\n";
+        return 4;
+      }
+  try {
+    explain_results(m, files, result);  // "why, per step": the traces re-run with explanations
+  } catch (const std::logic_error& e) {
+    std::cerr << "internal error: " << e.what() << "\n(a bug in cemv: please report it with the matrix and property files)\n";
+    return 4;
+  }
   write_pictures(m, result);
   std::vector<reports::VcdRun> runs;  // --vcd: every counterexample and witness, a scope each
   for (const auto& p : result.properties)
     if (p.trace) runs.push_back({p.name, &*p.trace});
   if (!a.vcd_file.empty())
     write_output(a.vcd_file, reports::vcd_runs(m, runs, {"", CEMV_VERSION, "counterexamples and witnesses of cemv check"}));
-  publish(result, a, outputs);
+  publish(result, a, outputs, report_inputs);
   bool machine_stdout = false;  // a JSON/JUnit/SARIF report on standard output takes no extra line
   for (const auto& d : outputs) machine_stdout |= d.file == "-" && d.format != reports::CheckFormat::Text;
   if (!a.vcd_file.empty() && !a.quiet && !machine_stdout)
     write_output("-", "waveforms: " + a.vcd_file + " (" + std::to_string(runs.size()) +
                           (runs.size() == 1 ? " run" : " runs") + ": every counterexample and witness)\n");
-  return checker::exit_code(verdicts_of(result));
+  if (gate.active() && !a.quiet) {
+    if (machine_stdout) std::cerr << gate.summary(result) << std::flush;
+    else write_output("-", gate.summary(result));
+  }
+  return gate.exit_code(result);
 }
 
 }  // namespace
@@ -277,12 +332,24 @@ void add_check_commands(CLI::App& app, Context& ctx) {
   cmd->add_option("--total-timeout", a.total_timeout_s,
                   "hard wall-clock limit for the whole run, seconds (0 = none)")
       ->type_name("S");
-  cmd->add_flag("-q,--quiet", a.quiet, "print nothing but errors");
+  cmd->add_flag("--expect", a.expect,
+                "exit 0 when every verdict is the one its `# expect:` comment states (else a passing one), "
+                "1 naming each that is not");
+  cmd->add_option("--baseline", a.baseline_file,
+                  "exit 0 when every verdict is the one an earlier run's cemv-result/1 FILE reports (else the "
+                  "expected one), 1 naming each that is not")
+      ->type_name("FILE");
+  cmd->add_option("--cache", a.cache_dir,
+                  "keep verdicts in DIR and skip properties decided there before (same matrix signature, "
+                  "property text and cemv build)")
+      ->type_name("DIR");
+  cmd->add_flag("-q,--quiet", a.quiet, "print nothing but errors and a line per property that did not pass");
   cmd->footer(
       "Exit status: 0 every property proved or reachable; 1 some property falsified, unreachable\n"
       "or vacuous; 2 invalid input (matrix, property file, option, unwritable destination);\n"
       "3 some property unknown (time limit, bound) and nothing falsified; 4 internal error (an\n"
-      "answer refuted by cemv's own re-check).\n");
+      "answer refuted by cemv's own re-check). With --expect or --baseline: 0 every verdict as\n"
+      "expected, 1 some verdict not, 3 only unknown ones not.\n");
   cmd->callback([&ctx]() {
     try {
       ctx.exit_code = run_check(a);

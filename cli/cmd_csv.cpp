@@ -5,10 +5,14 @@
 #include <stdexcept>
 
 #include "cli/commands.hpp"
+#include "cli/export_check.hpp"
+#include "cli/import_support.hpp"
 #include "cli/matrix_input.hpp"
 #include "cli/output.hpp"
+#include "cli/sheet_layout_options.hpp"
 #include "formats/csv.hpp"
 #include "formats/matrix_json.hpp"
+#include "formats/text_encoding.hpp"
 #include "model/names.hpp"
 #include "model/text.hpp"
 
@@ -53,9 +57,26 @@ void add_csv_commands(CLI::App& app, Context& ctx) {
     if (ex->layout != "grid" && exp->count("--orientation") > 0)
       throw std::invalid_argument("export-csv: --orientation applies to --layout grid only");
     check_writable(ex->output);
-    const model::Matrix m = load_matrix_input(ex->file);
-    write_output(ex->output, ex->layout == "grid" ? formats::export_csv_grid(m, orientation_of(ex->orientation))
-                                                  : formats::export_csv(m));
+    const std::string text = read_input(ex->file);
+    const model::Matrix m = formats::parse_matrix(text, input_name(ex->file));
+    const bool grid = ex->layout == "grid";
+    const std::string csv = grid ? formats::export_csv_grid(m, orientation_of(ex->orientation)) : formats::export_csv(m);
+    // An invalid matrix goes out only when the sheet reads back to it.
+    refuse_unreadable_export(text, input_name(ex->file), m, grid ? "a grid" : "the record layout", [&]() -> std::optional<std::string> {
+      const model::Matrix back = formats::import_csv(csv, "export.csv").matrix;
+      if (!grid) {
+        if (formats::signature(back) != formats::signature(m)) return std::string("another signature");
+        return std::nullopt;
+      }
+      if (back.intersections.size() != m.intersections.size()) return std::string("other intersections");
+      for (std::size_t i = 0; i < m.intersections.size(); ++i)
+        if (back.intersections[i].cause != m.intersections[i].cause ||
+            back.intersections[i].effect != m.intersections[i].effect ||
+            back.intersections[i].type != m.intersections[i].type)
+          return std::string("other intersections");
+      return std::nullopt;
+    });
+    write_output(ex->output, csv);
     ctx.exit_code = 0;
   });
 
@@ -67,6 +88,9 @@ void add_csv_commands(CLI::App& app, Context& ctx) {
     std::string name;
     std::string orientation = "auto";
     bool strict = false;
+    SheetLayoutOptions sheet;
+    std::string params;
+    std::string encoding = "utf-8";
   };
   auto im = std::make_shared<ImportOptions>();
   auto* imp = app.add_subcommand(
@@ -86,6 +110,14 @@ void add_csv_commands(CLI::App& app, Context& ctx) {
                   "they are missing or disagree), causes-as-rows or effects-as-rows")
       ->check(CLI::IsMember({"auto", "causes-as-rows", "effects-as-rows"}));
   imp->add_flag("--strict", im->strict, "Every import warning is an error (exit 2), for CI");
+  add_sheet_layout_options(imp, im->sheet);
+  imp->add_option("--params", im->params,
+                  "Plant parameters the sheet cannot state (cemv-params/1, docs/params.md), applied and recorded "
+                  "in the matrix with their origin")
+      ->type_name("FILE");
+  imp->add_option("--encoding", im->encoding,
+                  "utf-8 (default: a file that is not UTF-8 is refused at its first bad byte) or windows-1252")
+      ->check(CLI::IsMember({"utf-8", "utf8", "windows-1252", "cp1252"}));
   add_quiet_flag(imp, ctx);
   imp->callback([im, imp, &ctx] {
     // 6.1.2: a matrix name has at most 16 characters, as the help text says
@@ -97,12 +129,14 @@ void add_csv_commands(CLI::App& app, Context& ctx) {
                   std::to_string(kMaxImportedName) + " (6.1.2)";
       if (problem) throw std::invalid_argument("import-csv: --name " + model::in_quotes(im->name) + ": " + *problem);
     }
-    const bool grid_only = imp->count("--separator") + imp->count("--name") > 0 ||
+    const bool grid_only = imp->count("--separator") + imp->count("--name") + imp->count("--sheet-layout") +
+                                   imp->count("--save-layout") > 0 ||
                            (imp->count("--orientation") > 0 && im->orientation != "auto");
     if (im->layout == "records" && grid_only)
       throw std::invalid_argument("import-csv: --separator, --name and --orientation apply to grids, not to "
-                                  "--layout records");
+                                  "--layout records (so do --sheet-layout and --save-layout)");
     check_writable(im->output);
+    check_sheet_layout_output(im->sheet);
     formats::CsvImportOptions options;
     options.layout = im->layout == "records" ? formats::CsvLayoutKind::Records
                      : im->layout == "grid"  ? formats::CsvLayoutKind::Grid
@@ -111,23 +145,23 @@ void add_csv_commands(CLI::App& app, Context& ctx) {
     options.orientation = orientation_of(im->orientation);
     options.strict = im->strict;
     if (!im->separator.empty()) options.separator = im->separator == "tab" ? '\t' : im->separator[0];
+    options.sheet_layout = load_sheet_layout(im->sheet);
     const std::string name = input_name(im->input);
-    const std::string text = read_input(im->input);
+    const std::string bytes = read_input(im->input);
+    const formats::TextEncoding encoding = *formats::text_encoding_from_string(im->encoding);
     formats::CsvImportResult result;
     try {
-      result = formats::import_csv(text, name, options);
+      result = formats::import_csv(formats::decode_text(bytes, encoding, name), name, options);
     } catch (const formats::LoadError& e) {
       throw e.in_file(name);
     }
-    if (!ctx.quiet) {
-      for (const auto& w : result.warnings) {
-        formats::LoadIssue issue = w;
-        if (issue.file.empty()) issue.file = name;
-        std::cerr << issue.message("warning") << "\n";
-      }
-      if (!result.summary.empty()) std::cerr << name << ": note: " << result.summary << "\n";
-    }
-    write_output(im->output, formats::to_canonical_json(result.matrix));
+    // A grid is recorded in the matrix it makes (its source, warnings and the
+    // defaults it adopted); the record layout is the matrix itself.
+    const bool grid = result.layout == formats::CsvLayoutKind::Grid;
+    ImportedSheet sheet{std::move(result.matrix), name, bytes, grid ? "import-csv grid" : "",
+                        formats::to_string(encoding), result.summary, result.warnings};
+    write_output(im->output, formats::to_canonical_json(finish_import(std::move(sheet), im->params, ctx.quiet, std::cerr)));
+    if (grid) report_layout_used(name, result.layout_used, im->sheet, ctx.quiet);
     ctx.exit_code = 0;
   });
 }

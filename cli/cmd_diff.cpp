@@ -17,6 +17,7 @@
 #include "cli/scenario_defaults.hpp"
 #include "diff/print.hpp"
 #include "formats/matrix_json.hpp"
+#include "model/validate.hpp"
 
 namespace cemv::cli {
 
@@ -64,25 +65,41 @@ void write_scenarios(const DiffArgs& a, diff::DiffReport& r) {
 }
 
 int run_diff(const DiffArgs& a) {
-  if (a.format != "text" && a.format != "md" && a.format != "html" && a.format != "json")
-    throw std::runtime_error("diff: --format '" + a.format + "': expected text, md, html or json");
-  const model::Matrix old_m = load_valid_matrix(a.old_file, "compared");
-  const model::Matrix new_m = load_valid_matrix(a.new_file, "compared");
+  if (a.format != "text" && a.format != "md" && a.format != "html" && a.format != "json" && a.format != "sarif")
+    throw std::runtime_error("diff: --format '" + a.format + "': expected text, md, html, json or sarif");
+  if (a.old_file == "-" && a.new_file == "-") throw std::runtime_error("diff: '-' (standard input) can be read only once");
+  // The texts are kept: SARIF places each change at its element's line. A
+  // matrix with validation errors still gets its structural comparison; only
+  // the behaviour, which needs an executable matrix, is not compared.
+  const std::string old_text = read_input(a.old_file), new_text = read_input(a.new_file);
+  const model::Matrix old_m = formats::parse_matrix(old_text, input_name(a.old_file));
+  const model::Matrix new_m = formats::parse_matrix(new_text, input_name(a.new_file));
   check_writable(a.output);
   if (!a.out_dir.empty()) check_writable_directory(a.out_dir);
+  std::vector<std::string> not_compared;
+  for (const auto& [side, m] : {std::pair<const char*, const model::Matrix*>{"OLD", &old_m}, {"NEW", &new_m}})
+    for (const auto& d : model::validate(*m))
+      if (d.severity == model::Severity::Error)
+        not_compared.push_back(std::string(side) + ": " + d.rule + " " + d.element + " (" + d.section + "): " + d.message);
   diff::DiffReport r;
   r.old_m = &old_m;
   r.new_m = &new_m;
   r.old_file = input_name(a.old_file);
   r.new_file = input_name(a.new_file);
+  r.old_text = old_text;
+  r.new_text = new_text;
   r.old_signature = formats::signature(old_m);
   r.new_signature = formats::signature(new_m);
   r.structure = diff::compare_structure(old_m, new_m);
-  diff::SemanticOptions o;
-  o.timeout_s = a.timeout_s;
-  r.behaviour = diff::compare_behaviour(old_m, new_m, r.structure, o);
-  write_scenarios(a, r);
-  std::string text = a.format == "json"   ? diff::to_json(r)
+  r.not_compared = not_compared;
+  if (not_compared.empty()) {
+    diff::SemanticOptions o;
+    o.timeout_s = a.timeout_s;
+    r.behaviour = diff::compare_behaviour(old_m, new_m, r.structure, o);
+    write_scenarios(a, r);
+  }
+  std::string text = a.format == "json"    ? diff::to_json(r)
+                     : a.format == "sarif" ? diff::to_sarif(r, CEMV_VERSION)
                      : a.format == "md"   ? diff::to_markdown(r)
                      : a.format == "html" ? diff::to_html(r)
                                           : diff::to_text(r);
@@ -100,7 +117,8 @@ void add_diff_commands(CLI::App& app, Context& ctx) {
   static DiffArgs a;
   cmd->add_option("OLD", a.old_file, "the accepted version (cemv-matrix/1, '-' = standard input)")->required();
   cmd->add_option("NEW", a.new_file, "the changed version")->required();
-  cmd->add_option("--format", a.format, "text, md, html or json (cemv-diff/1)")->capture_default_str();
+  cmd->add_option("--format", a.format, "text, md, html, json (cemv-diff/1) or sarif (a result at each change's line)")
+      ->capture_default_str();
   cmd->add_option("-o,--output", a.output, "write the report to FILE ('-' = standard output)")->type_name("FILE");
   cmd->add_option("--out", a.out_dir, "folder for the distinguishing scenarios (created if missing)")
       ->type_name("DIR");
@@ -110,7 +128,8 @@ void add_diff_commands(CLI::App& app, Context& ctx) {
   cmd->add_flag("-q,--quiet", a.quiet, "print nothing but errors (and the output asked for)");
   cmd->footer(
       "Exit status: 0 no effect's behaviour changed (at most non-critical or behaviour-equivalent edits);\n"
-      "1 some effect's behaviour changed; 2 invalid input; 3 some effect undecided within --timeout;\n"
+      "1 some effect's behaviour changed; 2 invalid input (a matrix with validation errors: the structural\n"
+      "comparison is written, the behaviour is not compared); 3 some effect undecided within --timeout;\n"
       "4 internal error (a distinguishing run that does not replay on both runtimes).\n");
   cmd->callback([&ctx]() {
     try {

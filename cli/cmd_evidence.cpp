@@ -19,11 +19,13 @@
 #include "cli/commands.hpp"
 #include "cli/matrix_input.hpp"
 #include "cli/evidence_inputs.hpp"
+#include "cli/explain_trace.hpp"
 #include "cli/output.hpp"
 #include "cli/progress.hpp"
 #include "formats/matrix_json.hpp"
 #include "model/validate.hpp"
 #include "properties/parser.hpp"
+#include "properties/print.hpp"
 #include "properties/standard.hpp"
 #include "reports/evidence.hpp"
 #ifdef CEMV_WITH_RESPONSE
@@ -41,6 +43,7 @@ struct EvidenceArgs {
   std::string out_file;
   std::string coverage_file;
   std::string mutation_file;
+  std::string json_file;
   bool response = false;
   double timeout_s = 60.0;
   int jobs = 1;
@@ -107,17 +110,43 @@ int run_evidence(const EvidenceArgs& a) {
   if (a.response) throw BadArguments("--response: this cemv is built without `cemv response`");
 #endif
   check_writable(a.out_file);
+  if (!a.json_file.empty()) check_writable(a.json_file);
   const std::string date = report_date();
-  const model::Matrix m = load_valid_matrix(a.matrix_file, "reported");
-  std::vector<properties::PropertyFile> files;
-  for (const auto& f : a.property_files)
-    files.push_back(properties::parse_properties(read_input(f), m, input_name(f)));
-  if (a.standard) files.push_back(properties::standard_properties(m));
-
+  // A matrix with validation errors is reported too (a banner, its findings
+  // first), but nothing is checked: it cannot be executed or encoded.
+  const model::Matrix m = load_matrix_input(a.matrix_file);
   reports::EvidenceInputs in;
   in.matrix_file = input_name(a.matrix_file);
   in.validation = model::validate(m);
   in.date = date;
+  const bool valid = !model::has_errors(in.validation);
+  std::vector<properties::PropertyFile> files;
+  const model::InputTable inputs(m);
+  for (const auto& f : a.property_files) {
+    const std::string text = read_input(f);
+    reports::PropertyFileInfo info{input_name(f), formats::sha256_hex(text), 0, {}, {}};
+    if (valid) {
+      files.push_back(properties::parse_properties(text, m, input_name(f)));
+      info.properties = files.back().properties.size();
+      for (const auto& as : files.back().assumptions) info.assumptions.push_back("assume " + properties::to_text(as.expr, inputs));
+      info.warnings = files.back().warnings;
+    }
+    in.property_files.push_back(std::move(info));
+  }
+  if (valid && a.standard) files.push_back(properties::standard_properties(m));
+  properties::check_distinct_names(files);  // reports and counterexample files are named after them
+  if (!a.quiet)
+    for (const auto& f : files)
+      for (const auto& w : f.warnings) std::cerr << w << "\n";
+  // The formal text of every property, as the report prints it.
+  for (const auto& f : files)
+    for (const auto& p : f.properties) {
+      reports::PropertyText t{f.file_name, p.name, properties::statement_text(p, inputs), {}};
+      for (const auto& as : f.assumptions)
+        t.assumptions.push_back("assume " + properties::to_text(as.expr, inputs) + " (every property of the file)");
+      for (const auto& as : p.assumptions) t.assumptions.push_back("assume " + properties::to_text(as.expr, inputs));
+      in.texts.push_back(std::move(t));
+    }
   if (!a.coverage_file.empty()) in.coverage = read_coverage(a.coverage_file, m);
   if (!a.mutation_file.empty()) in.mutation = read_mutation(a.mutation_file, m);
   checker::CheckOptions options;
@@ -131,9 +160,12 @@ int run_evidence(const EvidenceArgs& a) {
   options.on_start = [&](const std::string& name) { progress.started(name); };
   options.on_result = [&](const checker::PropertyResult& r) { progress.finished(r.name); };
   try {
-    if (!files.empty()) in.check = checker::check_properties(m, files, options);
+    if (!files.empty()) {
+      in.check = checker::check_properties(m, files, options);
+      explain_results(m, files, in.check);  // "why, per step" of every counterexample and witness
+    }
 #ifdef CEMV_WITH_RESPONSE
-    if (a.response) {
+    if (a.response && valid) {
       progress.phase("cemv evidence: response time", response::response_paths(m, {}).size(), "paths");
       progress.started("every SIF path");
       response::ResponseOptions ro;
@@ -157,10 +189,14 @@ int run_evidence(const EvidenceArgs& a) {
   for (const auto& f : a.property_files) in.check.property_files.push_back(input_name(f));
   in.check.standard = a.standard;
   write_output(a.out_file, reports::evidence_html(m, in));
+  if (!a.json_file.empty()) write_output(a.json_file, reports::evidence_json(m, in));
   if (!a.quiet)
-    std::cout << "cemv evidence: " << m.name << ": " << in.check.properties.size()
-              << (in.check.properties.size() == 1 ? " property" : " properties") << "; wrote " << a.out_file << "\n";
-  return 0;
+    std::cout << "cemv evidence: " << m.name << ": "
+              << (valid ? std::to_string(in.check.properties.size()) +
+                              (in.check.properties.size() == 1 ? " property" : " properties")
+                        : std::string("validation errors, nothing checked"))
+              << "; wrote " << a.out_file << (a.json_file.empty() ? "" : " and " + a.json_file) << "\n";
+  return valid ? 0 : 1;
 }
 
 }  // namespace
@@ -178,6 +214,8 @@ void add_evidence_commands(CLI::App& app, Context& ctx) {
   cmd->add_option("--mutation", a.mutation_file,
                   "mutation figures to include (DIR/mutation-report.json of cemv testgen --mutation-report)")
       ->type_name("FILE");
+  cmd->add_option("--json", a.json_file, "also write the report's content as cemv-evidence/1 JSON (docs/reports.md)")
+      ->type_name("FILE");
   cmd->add_flag("--response", a.response,
                 "also compute the worst-case response time of every SIF path (as cemv response does)");
   cmd->add_option("--timeout", a.timeout_s, "wall-clock limit per property, seconds (0 = none)")
@@ -185,8 +223,9 @@ void add_evidence_commands(CLI::App& app, Context& ctx) {
       ->capture_default_str();
   cmd->add_option("--jobs", a.jobs, "worker threads over the properties")->capture_default_str();
   cmd->add_flag("-q,--quiet", a.quiet, "print nothing but errors");
-  cmd->footer("Exit status: 0 report written (the verdicts are in the report); 2 invalid input;\n"
-              "4 internal error. The date is SOURCE_DATE_EPOCH (UTC) when set, else now.\n");
+  cmd->footer("Exit status: 0 report written (the verdicts are in the report); 1 report written for a matrix\n"
+              "with validation errors (nothing checked); 2 invalid input; 4 internal error. The date is\n"
+              "SOURCE_DATE_EPOCH (UTC) when set, else now.\n");
   cmd->callback([&ctx]() {
     try {
       ctx.exit_code = run_evidence(a);

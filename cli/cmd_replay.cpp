@@ -22,6 +22,7 @@ struct ReplayArgs {
   std::vector<std::string> paths;
   std::string format = "text";
   std::string output = "-";
+  bool quiet = false;
 };
 
 std::string text_report(const model::Matrix& m, const testgen::ReplayResult& r) {
@@ -74,7 +75,12 @@ int run_replay(const ReplayArgs& a) {
   check_writable(a.output);
   std::vector<std::filesystem::path> paths(a.paths.begin(), a.paths.end());
   testgen::ReplayResult r = testgen::replay_files(m, paths);
-  write_output(a.output, a.format == "junit" ? junit_report(m, r) : text_report(m, r));
+  // --quiet: no report on standard output, but a line per test that fails.
+  if (!(a.quiet && a.format == "text" && a.output == "-"))
+    write_output(a.output, a.format == "junit" ? junit_report(m, r) : text_report(m, r));
+  if (a.quiet)
+    for (const auto& t : r.tests)
+      if (!t.passed) std::cerr << "FAIL " << t.name << (t.load_error.empty() ? "" : ": does not load against the matrix") << "\n";
   for (const auto& t : r.tests)
     if (!t.load_error.empty()) return 2;
   return r.all_passed() ? 0 : 1;
@@ -89,6 +95,7 @@ void add_replay_commands(CLI::App& app, Context& ctx) {
   cmd->add_option("DIR_OR_FILES", a.paths, "scenario files, or folders of *.scenario.json")->required();
   cmd->add_option("--format", a.format, "text or junit")->capture_default_str();
   cmd->add_option("-o,--output", a.output, "write the report to FILE ('-' = standard output)")->type_name("FILE");
+  cmd->add_flag("-q,--quiet", a.quiet, "print nothing but errors and a line per test that fails");
   cmd->footer("Exit status: 0 every test passes; 1 some test fails; 2 invalid input.\n");
   cmd->callback([&ctx]() { ctx.exit_code = run_replay(a); });
 }

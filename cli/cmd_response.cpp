@@ -29,6 +29,7 @@ struct ResponseArgs {
   bool conservative = false;
   double timeout_s = 0.0;
   int jobs = 1;
+  bool quiet = false;
 };
 
 struct BadArguments : std::runtime_error {
@@ -55,7 +56,7 @@ int run_response(const ResponseArgs& a) {
   o.jobs = a.jobs;
   o.out_dir = a.out_dir;
   // On a terminal: paths done / total, elapsed, the running ones (cli/progress.hpp).
-  Progress progress("cemv response", 0, "paths", Progress::terminal(), std::cerr);
+  Progress progress("cemv response", 0, "paths", !a.quiet && Progress::terminal(), std::cerr);
   o.on_plan = [&](std::size_t paths) { progress.phase("cemv response", paths, "paths"); };
   o.on_start = [&](const std::string& key) { progress.started(key); };
   o.on_done = [&](const std::string& key) { progress.finished(key); };
@@ -73,7 +74,17 @@ int run_response(const ResponseArgs& a) {
               << "\n(a bug in cemv: please report it with the matrix)\n";
     return 4;
   }
-  write_output(a.output, response::response_report(r, input_name(a.matrix_file), format, a.out_dir));
+  // --quiet: no table on standard output, but a line per path over its
+  // process safety time, unbounded or undecided (docs/response-time.md).
+  if (!(a.quiet && format == response::Format::Text && a.output == "-"))
+    write_output(a.output, response::response_report(r, input_name(a.matrix_file), format, a.out_dir));
+  if (a.quiet)
+    for (const auto& p : r.paths)
+      if (p.verdict == response::Verdict::Over || p.verdict == response::Verdict::Unbounded ||
+          p.verdict == response::Verdict::Unknown)
+        std::cerr << input_name(a.matrix_file) << ": " << (p.verdict == response::Verdict::Unknown ? "warning" : "error")
+                  << ": path " << p.path.key() << " of SIF " << p.path.sif
+                  << (p.sif_name.empty() ? "" : " " + p.sif_name) << ": " << response::to_string(p.verdict) << "\n";
   return response::exit_code(r);
 }
 
@@ -94,6 +105,7 @@ void add_response_commands(CLI::App& app, Context& ctx) {
   cmd->add_option("--timeout", a.timeout_s, "wall-clock limit per decided property, seconds (0 = none)")
       ->type_name("S");
   cmd->add_option("--jobs", a.jobs, "paths decided in parallel")->capture_default_str();
+  cmd->add_flag("-q,--quiet", a.quiet, "print nothing but errors and a line per path over, unbounded or unknown");
   cmd->footer(
       "Exit status: 0 every path within its process safety time (or none declared); 1 some path\n"
       "over it or unbounded; 2 invalid input; 3 some path unknown and none over; 4 internal error.\n");

@@ -64,16 +64,19 @@ class RuntimeValues {
 };
 
 // Without MATRIX, the scenario's `matrix` key (docs/scenario.md, "Top level"),
-// relative to the scenario's folder (the working folder for standard input).
-std::string matrix_of(const std::vector<std::string>& files, const std::string& scenario_text) {
+// relative to the scenario's folder (the working folder for standard input),
+// and inside the working folder unless the paths are trusted.
+std::string matrix_of(const std::vector<std::string>& files, const std::string& scenario_text, bool trust_paths) {
   if (files.size() == 2) return files[0];
   const std::string name = input_name(files[0]);
   auto key = formats::scenario_matrix_key(scenario_text, name);
   if (!key)
     throw formats::LoadError({{"", "the scenario names no matrix: give MATRIX SCENARIO, or add "
                                    "\"matrix\": \"PATH\" (relative to the scenario file)", name}});
-  if (files[0] == "-") return *key;
-  return (std::filesystem::path(files[0]).parent_path() / *key).string();
+  const std::filesystem::path base = files[0] == "-" ? std::filesystem::path() : std::filesystem::path(files[0]).parent_path();
+  return formats::resolve_inner_path(*key, base, std::filesystem::current_path(), trust_paths, scenario_text, name,
+                                     "matrix")
+      .string();
 }
 
 struct SimulateOptions {
@@ -83,6 +86,7 @@ struct SimulateOptions {
   bool trace_changes = false;
   std::string format = "text";
   std::string out = "-";
+  bool trust_paths = false;  // --trust-paths: follow the `matrix` key anywhere
 };
 
 // A sink that collects small writes into large ones (a trace line per cycle
@@ -136,7 +140,7 @@ int run_simulate(const SimulateOptions& o, bool quiet) {
   std::optional<model::Matrix> given;
   if (o.files.size() == 2) given = load_valid_matrix(o.files[0], "simulated");
   const std::string scenario_text = read_input(o.files.back());
-  const std::string matrix_file = matrix_of(o.files, scenario_text);
+  const std::string matrix_file = matrix_of(o.files, scenario_text, o.trust_paths);
   model::Matrix m = given ? std::move(*given) : load_valid_matrix(matrix_file, "simulated");
   formats::Scenario sc = formats::parse_scenario(scenario_text, m, scenario_file);
   formats::ExpandedScenario ex = formats::expand_scenario(sc, m);
@@ -271,6 +275,9 @@ void add_simulate_commands(CLI::App& app, Context& ctx) {
   cmd->add_option("--svg", o->svg_file, "write the run's timing diagram as SVG")->type_name("FILE");
   cmd->add_option("--vcd", o->vcd_file, "write the run as a value change dump (VCD, IEEE 1364)")->type_name("FILE");
   cmd->add_option("-o,--output", o->out, "Write the result here instead of standard output");
+  cmd->add_flag("--trust-paths", o->trust_paths,
+                "follow the scenario's \"matrix\" key even when it is absolute or leads outside the working "
+                "folder (refused by default: a scenario in a pull request is untrusted)");
   add_quiet_flag(cmd, ctx);
   cmd->callback([o, &ctx]() { ctx.exit_code = run_simulate(*o, ctx.quiet); });
 }

@@ -8,8 +8,11 @@
 #include <stdexcept>
 
 #include "cli/commands.hpp"
+#include "cli/export_check.hpp"
+#include "cli/import_support.hpp"
 #include "cli/matrix_input.hpp"
 #include "cli/output.hpp"
+#include "cli/sheet_layout_options.hpp"
 #include "diff/structural.hpp"
 #include "formats/matrix_json.hpp"
 #include "formats/workbook.hpp"
@@ -42,35 +45,50 @@ void add_workbook_commands(CLI::App& app, Context& ctx) {
     std::string input;
     std::string output = "-";
     std::string into;
+    std::string sheet;
+    SheetLayoutOptions layout;
+    std::string params;
   };
   auto im = std::make_shared<ImportOptions>();
   auto* imp = app.add_subcommand(
       "import-workbook",
-      "Read an ODS or XLSX workbook (the six tables of 6.6.2, or a C&E grid on its first sheet) and write a "
+      "Read an ODS or XLSX workbook (the six tables of 6.6.2, or a C&E grid on one of its sheets) and write a "
       "cemv-matrix/1 file; warnings on stderr");
   imp->add_option("FILE", im->input, "Workbook (.ods or .xlsx, told by its content; '-' = standard input)")->required();
   imp->add_option("-o,--output", im->output, "Write the matrix here instead of stdout");
   imp->add_option("--into", im->into,
                   "The matrix before the import (6.6.3): list what the workbook changes in it (the structural "
                   "comparison of cemv diff)");
+  imp->add_option("--sheet", im->sheet,
+                  "Grid: the sheet that holds the matrix, by name or number (default: the one sheet with a C&E grid)");
+  add_sheet_layout_options(imp, im->layout);
+  imp->add_option("--params", im->params,
+                  "Plant parameters the sheet cannot state (cemv-params/1, docs/params.md), applied and recorded "
+                  "in the matrix with their origin")
+      ->type_name("FILE");
   add_quiet_flag(imp, ctx);
   imp->callback([im, &ctx] {
     check_writable(im->output);
+    check_sheet_layout_output(im->layout);
     std::optional<model::Matrix> old;
     if (!im->into.empty()) old = load_matrix_input(im->into);
     const std::string name = input_name(im->input);
     const std::string bytes = read_input(im->input);
     formats::WorkbookImportResult result;
+    formats::WorkbookImportOptions options;
+    options.sheet = im->sheet;
+    options.sheet_layout = load_sheet_layout(im->layout);
     try {
-      result = formats::import_workbook(bytes, name);
+      result = formats::import_workbook(bytes, name, options);
     } catch (const formats::LoadError& e) {
       throw e.in_file(name);
     }
-    if (!ctx.quiet) {
-      for (const auto& w : result.warnings) std::cerr << w.message("warning") << "\n";
-      std::cerr << name << ": note: " << result.summary << "\n";
-    }
+    // A grid is recorded in the matrix it makes; the six tables are the matrix.
+    ImportedSheet sheet{std::move(result.matrix), name, bytes, result.grid ? "import-workbook grid" : "", "UTF-8",
+                        result.summary, result.warnings};
+    result.matrix = finish_import(std::move(sheet), im->params, ctx.quiet, std::cerr);
     write_output(im->output, formats::to_canonical_json(result.matrix));
+    if (result.layout_used) report_layout_used(name, *result.layout_used, im->layout, ctx.quiet);
     if (old && !ctx.quiet) {
       const diff::StructuralDiff d = diff::compare_structure(*old, result.matrix);
       std::cerr << name << ": note: matrix comparison (6.6.3), source " << name << ", reference " << input_name(im->into)
@@ -107,8 +125,16 @@ void add_workbook_commands(CLI::App& app, Context& ctx) {
       throw std::invalid_argument("export-workbook: -o " + ex->output +
                                   ": the workbook's name must end in .ods or .xlsx (or give --format)");
     check_writable(ex->output);
-    const model::Matrix m = load_matrix_input(ex->file);
-    write_output(ex->output, formats::export_workbook(m, *format));
+    const std::string text = read_input(ex->file);
+    const model::Matrix m = formats::parse_matrix(text, input_name(ex->file));
+    const std::string bytes = formats::export_workbook(m, *format);
+    // An invalid matrix goes out only when the workbook reads back to it.
+    refuse_unreadable_export(text, input_name(ex->file), m, "a workbook", [&]() -> std::optional<std::string> {
+      if (formats::signature(formats::import_workbook(bytes, "export").matrix) != formats::signature(m))
+        return std::string("another signature");
+      return std::nullopt;
+    });
+    write_output(ex->output, bytes);
     ctx.exit_code = 0;
   });
 }

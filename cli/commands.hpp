@@ -30,6 +30,7 @@ void add_model_commands(CLI::App& app, Context& ctx);     // fmt, signature
 void add_validate_commands(CLI::App& app, Context& ctx);  // validate, graph
 void add_report_commands(CLI::App& app, Context& ctx);    // report
 void add_csv_commands(CLI::App& app, Context& ctx);       // export-csv, import-csv
+void add_params_commands(CLI::App& app, Context& ctx);    // apply-params
 void add_simulate_commands(CLI::App& app, Context& ctx);  // simulate
 void add_smt_commands(CLI::App& app, Context& ctx);       // export-smt
 void add_check_commands(CLI::App& app, Context& ctx);     // check

@@ -4,12 +4,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "diff/print_words.hpp"
+
 namespace cemv::diff {
 
-namespace {
-
 using checker::EquivalenceVerdict;
-using json = nlohmann::ordered_json;
 
 std::string value_text(model::FieldType t, int v) {
   if (t == model::FieldType::Voting) return model::to_string(static_cast<model::Voting>(v));
@@ -57,6 +56,10 @@ std::string scenario_of(const DiffReport& r, const std::string& group) {
   return "";
 }
 
+namespace {
+
+using json = nlohmann::ordered_json;
+
 std::string join_ints(const std::set<int>& s, const char* prefix) {
   std::string out;
   for (int i : s) out += (out.empty() ? "" : ", ") + std::string(prefix) + std::to_string(i);
@@ -93,6 +96,7 @@ std::string retest_line(const DiffReport& r) {
 }  // namespace
 
 int DiffReport::exit_code() const {
+  if (!not_compared.empty()) return 2;
   if (behaviour.any_changed()) return 1;
   if (behaviour.any_unknown()) return 3;
   return 0;
@@ -100,6 +104,9 @@ int DiffReport::exit_code() const {
 
 std::string DiffReport::verdict() const {
   switch (exit_code()) {
+    case 2:
+      return "behaviour not compared: a matrix with validation errors cannot be executed; the structural "
+             "comparison above is complete";
     case 1: return "behaviour changed: retest the impacted effects";
     case 3: return "undecided: some effect's behaviour was not decided within the time limit";
     default:
@@ -117,6 +124,13 @@ std::string to_text(const DiffReport& r) {
   for (const auto& c : r.structure.changes) {
     o << "  " << change_line(c) << "\n";
     for (const auto& f : c.fields) o << "      " << field_line(f) << "\n";
+  }
+  if (!r.not_compared.empty()) {
+    o << "\nSemantic comparison: not given. A matrix with validation errors cannot be executed or encoded, so "
+         "no behaviour is compared; fix these errors (cemv validate) and compare again:\n";
+    for (const auto& line : r.not_compared) o << "  " << line << "\n";
+    o << "\n" << r.verdict() << "\n";
+    return o.str();
   }
   o << "\nSemantic comparison, per effect:\n";
   for (const auto& e : r.behaviour.effects) {
@@ -168,6 +182,12 @@ std::string to_markdown(const DiffReport& r) {
         << " | " << fields << " |\n";
     }
   }
+  if (!r.not_compared.empty()) {
+    o << "\n## Semantic comparison\n\nNot given: a matrix with validation errors cannot be executed or encoded, "
+         "so no behaviour is compared. Fix these errors (`cemv validate`) and compare again:\n\n";
+    for (const auto& line : r.not_compared) o << "- " << line << "\n";
+    return o.str();
+  }
   o << "\n## Semantic comparison\n\n| effect | behaviour | method | shortest difference |\n| --- | --- | --- | --- |\n";
   for (const auto& e : r.behaviour.effects) {
     std::string diff = e.result.distinction ? distinction_text(*e.result.distinction) : e.result.reason;
@@ -204,6 +224,14 @@ std::string to_html(const DiffReport& r) {
     for (const auto& f : c.fields) fields += (fields.empty() ? "" : "<br>") + html_escape(field_line(f));
     o << "<tr><td" << (c.critical() ? " class=\"critical\">critical" : ">non-critical") << "</td><td>"
       << to_string(c.kind) << "</td><td>" << html_escape(c.label()) << "</td><td>" << fields << "</td></tr>\n";
+  }
+  if (!r.not_compared.empty()) {
+    o << "</table>\n<h2>Semantic comparison</h2>\n<p>Not given: a matrix with validation errors cannot be executed "
+         "or encoded, so no behaviour is compared. Fix these errors (<code>cemv validate</code>) and compare "
+         "again:</p>\n<ul>\n";
+    for (const auto& line : r.not_compared) o << "<li>" << html_escape(line) << "</li>\n";
+    o << "</ul>\n</body></html>\n";
+    return o.str();
   }
   o << "</table>\n<h2>Semantic comparison</h2>\n<table><tr><th>effect</th><th>behaviour</th><th>method</th>"
     << "<th>shortest difference</th></tr>\n";
@@ -261,6 +289,7 @@ std::string to_json(const DiffReport& r) {
     changes.push_back(x);
   }
   j["structural"] = json{{"critical", r.structure.any_critical()}, {"changes", changes}};
+  j["behaviour_not_compared"] = r.not_compared;  // empty when the behaviour was compared
   auto group_json = [&](const checker::GroupEquivalence& g) {
     json x;
     x["group"] = g.group;

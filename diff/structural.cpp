@@ -24,7 +24,7 @@ std::string lower(std::string s) {
 // or display functions"): texts, SIL and SIF assignment, units.
 bool non_critical(const std::string& element_kind, const std::string& path) {
   static const std::set<std::string> element{"name", "description", "note", "sil", "sif", "analog.unit"};
-  static const std::set<std::string> matrix{"name", "title", "sif_groups"};
+  static const std::set<std::string> matrix{"name", "title", "sif_groups", "tag_descriptions", "provenance"};
   if (element_kind == "matrix") {
     for (const auto& f : matrix)
       if (path == f || path.rfind(f + ".", 0) == 0) return true;
@@ -33,10 +33,34 @@ bool non_critical(const std::string& element_kind, const std::string& path) {
   return element.count(path) > 0;
 }
 
+// A provenance list as a reader compares it: the files it names, with the
+// start of their SHA-256 (the records themselves are in the matrix).
+std::string provenance_text(const json& records) {
+  std::string out;
+  if (!records.is_array()) return out;
+  for (const auto& r : records) {
+    std::string sha = r.value("sha256", "");
+    out += (out.empty() ? "" : ", ") + r.value("file", std::string("?")) +
+           (sha.empty() ? "" : " (sha256 " + sha.substr(0, 12) + "...)");
+  }
+  return out;
+}
+
 // Recursive field comparison of two canonical JSON objects.
 void compare_json(const json& o, const json& n, const std::string& path, const std::string& kind,
                   std::vector<FieldChange>& out) {
   if (o == n) return;
+  if (path == "provenance" && (o.is_null() || n.is_null())) {
+    compare_json(o.is_null() ? json::object() : o, n.is_null() ? json::object() : n, path, kind, out);
+    return;
+  }
+  if (path == "provenance.imports" || path == "provenance.parameters") {
+    std::string a = provenance_text(o), b = provenance_text(n);
+    if (a == b) b += " (the same files; what they record differs: values they replaced, warnings)";
+    // Values are JSON text, as for every other field (cemv-diff/1 parses them).
+    out.push_back({path, a.empty() ? "" : json(a).dump(), b.empty() ? "" : json(b).dump(), false});
+    return;
+  }
   if (o.is_object() && n.is_object() && path != "sif_groups") {
     std::set<std::string> keys;
     for (auto it = o.begin(); it != o.end(); ++it) keys.insert(it.key());

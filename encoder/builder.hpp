@@ -38,6 +38,7 @@ struct Simulation {
   std::string name;
   bool analog = false;
   bool output = false;
+  bool allowed = true;  // no element that reads or writes it forbids simulating it
   expr on;
   expr value;
   expr on_prev;    // state variable

@@ -206,6 +206,17 @@ void Builder::collect_simulations() {
       if (ef->mutually_locked_maintenance) writers_[key].push_back(ef);
       written.insert(key);
     }
+  // O.8: a tag whose simulation some processed element forbids, in or out of
+  // the cone, is never simulated.
+  std::set<std::string> forbidden;
+  for (const auto& cz : m_.causes)
+    if (cz.function != model::CauseFunction::Comment)
+      for (const auto& t : cz.tags)
+        if (!t.simulation_allowed) forbidden.insert(model::tag_key(t.name));
+  for (const auto& ef : m_.effects)
+    if (ef.function != model::EffectFunction::Comment)
+      for (const auto& t : ef.tags)
+        if (!t.simulation_allowed) forbidden.insert(model::tag_key(t.name));
   for (const auto& name : enc_.order.simulatable_tags()) {
     std::string key = model::tag_key(name);
     bool input = read.count(key) > 0;
@@ -218,7 +229,7 @@ void Builder::collect_simulations() {
     expr val = ts_.make_statevar(sp + ".value", sort);
     ts_.set_init(val, analog ? fconst(0.0f) : B(false));
     // M.2: group deactivation ends every simulation before the commands.
-    sims_.emplace(key, Simulation{name, analog, !input, on && !gd_, val, on, val});
+    sims_.emplace(key, Simulation{name, analog, !input, forbidden.count(key) == 0, on && !gd_, val, on, val});
     sim_order_.push_back(key);
   }
 }
@@ -239,6 +250,7 @@ void Builder::make_tag_soft_bypass_states() {
 void Builder::command_simulate_tag() {
   for (const auto& key : sim_order_) {
     Simulation& s = sims_.at(key);
+    if (!s.allowed) continue;  // refused whatever its value: no command input (O.8)
     CommandInput ci = cmd_of(model::CommandOp::SimulateTag);
     ci.tag_name = s.name;
     std::string n = "cmd.simulate_tag[" + s.name + "]";

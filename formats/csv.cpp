@@ -14,6 +14,7 @@
 
 #include "formats/csv_grid.hpp"
 #include "formats/csv_text.hpp"
+#include "formats/matrix_extras.hpp"
 #include "formats/matrix_json.hpp"
 #include "model/names.hpp"
 #include "model/text.hpp"
@@ -157,6 +158,7 @@ class RecordImporter {
     for (const auto& r : records_) handle(r);
     finish_tags();
     finish_timing();
+    finish_extras();
     if (!errors_.empty()) throw LoadError(errors_);
     m_.sort_by_id();
     return m_;
@@ -399,12 +401,17 @@ class RecordImporter {
       if (!m_.group_deactivation) m_.group_deactivation.emplace();
       m_.group_deactivation->set_tag = value;
     } else if (timing_property(key, row, key_field.line, key_field.column)) {
+    } else if (is_extra_property(key)) {
+      extras_.push_back({key, value});
+      extra_places_.emplace_back(key_field.line, key_field.column);
     } else {
       error(key_field.line, key_field.column,
             "unknown property " + in_quotes(key) +
                 " (expected format, name, title, cycle_ms, secure_write.enable_tag, "
                 "group_deactivation.enable_tag, group_deactivation.set_tag, watchdog_ms, "
-                "sif_group.N.process_safety_time_ms, cause.ID.sensor_ms, effect.ID.actuator_ms)");
+                "sif_group.N.process_safety_time_ms, cause.ID.sensor_ms, effect.ID.actuator_ms, "
+                "tag.NAME.description, cause.ID.tag.N.simulation_allowed, effect.ID.tag.N.simulation_allowed, "
+                "provenance.import.K, provenance.parameters.K)");
     }
   }
 
@@ -420,6 +427,15 @@ class RecordImporter {
     int column = 0;
   };
   std::vector<PendingTiming> timing_;
+  // Tag descriptions, simulation permissions and provenance records
+  // (formats/matrix_extras.hpp), applied once every record is read.
+  std::vector<ExtraProperty> extras_;
+  std::vector<std::pair<int, int>> extra_places_;
+
+  void finish_extras() {
+    for (const auto& [row, why] : apply_extra_properties(m_, extras_))
+      error(extra_places_[row].first, extra_places_[row].second, why);
+  }
 
   bool timing_property(const std::string& key, const Row& row, int line, int column) {
     if (key == "watchdog_ms") {
@@ -843,6 +859,8 @@ std::string export_csv(const Matrix& m) {
   for (const auto& e : m.effects)
     if (e.actuator_ms)
       w.row({"property", "effect." + std::to_string(e.id) + ".actuator_ms", std::to_string(e.actuator_ms)});
+  // Tag descriptions, simulation permissions, provenance (formats/matrix_extras.hpp).
+  for (const auto& x : extra_properties(m)) w.row({"property", x.key, x.value});
 
   w.header(schema("sif_group"));
   for (const auto& [n, name] : m.sif_groups) w.row({"sif_group", std::to_string(n), name});
@@ -920,6 +938,9 @@ CsvImportResult import_csv(std::string_view text, const std::string& source_name
     layout = find_schema(first) ? CsvLayoutKind::Records : CsvLayoutKind::Grid;
   }
   if (layout == CsvLayoutKind::Records) {
+    if (options.sheet_layout)
+      throw LoadError({{source_name, "a layout description (cemv-sheet-layout/1) is for a C&E grid; the file is "
+                                     "the record layout cemv-csv/1, which says where everything is"}});
     auto records = parse_csv(text, ',', true, source_name);
     RecordImporter importer(records, source_name);
     Matrix m = importer.run();

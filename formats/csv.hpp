@@ -12,21 +12,19 @@
 //    and column, and no safety parameter the grid does not state is invented.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "formats/diagnostics.hpp"
+#include "formats/sheet_layout.hpp"
 #include "model/matrix.hpp"
 
 namespace cemv::formats {
 
 inline constexpr const char* kCsvLayout = "cemv-csv/1";
 
-// Which axis of a grid holds the causes (docs/csv.md "Orientation"). Auto
-// decides from the corner labels and the id patterns, and refuses when they
-// are missing or disagree.
-enum class CsvOrientation { Auto, CausesAsRows, EffectsAsRows };
 
 // ---- RFC 4180 reading -------------------------------------------------------
 
@@ -79,6 +77,10 @@ struct CsvImportOptions {
   std::string matrix_name;
   CsvOrientation orientation = CsvOrientation::Auto;  // grid layout only
   bool strict = false;  // every warning is an error (LoadError), for CI
+  // Grid layout only: what the sheet holds where (cemv-sheet-layout/1); its
+  // orientation, when not auto, is the one read (an orientation above too
+  // must be the same). Whatever it leaves out is found from the sheet.
+  std::optional<SheetLayout> sheet_layout;
 };
 
 struct CsvImportResult {
@@ -89,6 +91,9 @@ struct CsvImportResult {
   // ("read 36 causes (rows 3-38, ids in column 2), ...; orientation ...").
   std::string summary;
   CsvOrientation orientation = CsvOrientation::CausesAsRows;  // grid layout only
+  // Grid layout: the layout the sheet was read with, complete (the given one
+  // with what was found from the sheet), to be saved and given again.
+  SheetLayout layout_used;
 };
 
 // Reads either layout (Auto: the record layout when the first cell is one of its

@@ -1,7 +1,9 @@
-// Reading a C&E grid (docs/csv.md "The grid layout"): the elements of both axes,
-// their numbers and names, and one intersection per marked cell. The sheet is
-// imported as it is: its defects become warnings with line and column, and no
-// safety parameter that the grid does not state is invented.
+// Reading a C&E grid (docs/csv.md "The grid layout"): the elements of both
+// axes, their numbers and names, one intersection per marked cell, then the
+// matrix, the summary and the layout it was read with. The sheet is imported
+// as it is: its defects become warnings with line and column, what cannot be
+// read right is refused with every cell named, and no safety parameter that
+// the grid does not state is invented.
 #include <algorithm>
 #include <map>
 #include <regex>
@@ -25,40 +27,51 @@ namespace {
 constexpr std::size_t kMaxMatrixNameLength = 16;  // 6.1.2
 constexpr std::size_t kMaxTitleLength = 60;       // 6.2.1
 
-
-std::string upper(std::string s) {
-  for (auto& c : s)
-    if (c >= 'a' && c <= 'z') c = static_cast<char>(c - 'a' + 'A');
-  return s;
+bool cause_only(SheetAttribute a) {
+  return a == SheetAttribute::Setpoint || a == SheetAttribute::Unit || a == SheetAttribute::Voting ||
+         a == SheetAttribute::TripSide;
 }
 
-// A header row or label column is the tag row when its label says so ("Tag",
-// "Tag name", "Output tag"); any other extra header text goes into the note.
-bool is_tag_label(const std::string& label) {
-  static const std::regex tag(R"(\btags?\b)", std::regex::icase);
-  return std::regex_search(label, tag);
+// What the summary says a slot was read as ("read as the effect tags").
+std::string read_as(SheetAttribute a, const std::string& kind) {
+  switch (a) {
+    case SheetAttribute::Tag: return "read as the " + kind + " tags";
+    case SheetAttribute::Setpoint: return "read as the " + kind + " setpoints";
+    case SheetAttribute::Unit: return "read as the units of the setpoints";
+    case SheetAttribute::Voting: return "read as the " + kind + " voting";
+    case SheetAttribute::Sil: return "read as the " + kind + " SIL";
+    case SheetAttribute::TripSide: return "read as the trip sides of the setpoints";
+    default: return "kept in the " + kind + " notes";
+  }
+}
+
+std::string plural(std::size_t n, const std::string& word) {
+  return std::to_string(n) + " " + word + (n == 1 ? "" : "s");
 }
 
 class GridImporter {
  public:
-  GridImporter(const Sheet& sheet, const Shape& shape, OrientationDecision orientation,
-               std::string source, std::string name)
-      : sheet_(sheet), shape_(shape), orientation_(std::move(orientation)),
-        source_(std::move(source)), name_(std::move(name)), warnings_(source_) {}
+  GridImporter(const Sheet& sheet, const Shape& shape, OrientationDecision orientation, std::string source,
+               std::string name, const SheetLayout& layout)
+      : sheet_(sheet), shape_(shape), orientation_(std::move(orientation)), source_(std::move(source)),
+        name_(std::move(name)), layout_(layout), warnings_(source_), errors_(source_) {}
 
   CsvImportResult run() {
-    if (orientation_.disagreement) {
-      const auto& d = *orientation_.disagreement;
-      warnings_.add(sheet_.rows[shape_.id_row].line, d);
-    }
+    if (orientation_.disagreement) warnings_.add(sheet_.rows[shape_.id_row].line, *orientation_.disagreement);
+    check_slot_kinds();
     read_legend();
-    read_column_elements();
-    read_row_elements();
-    number_elements(effects(), "effect", "E", kMaxEffects, warnings_);
-    number_elements(causes(), "cause", "C", kMaxCauses, warnings_);
-    intersections_ = read_intersections(sheet_, shape_,
-                                        GridAxes{row_elements_, element_rows_, column_elements_, causes_are_rows()},
-                                        legend_, warnings_);
+    const MarkTable marks(layout_.marks);
+    columns_ = read_column_elements(sheet_, shape_, context(causes_are_rows() ? ElementKind::Effect : ElementKind::Cause));
+    rows_ = read_row_elements(sheet_, shape_, context(causes_are_rows() ? ElementKind::Cause : ElementKind::Effect));
+    number_elements(effects().elements, "effect", "E", kMaxEffects, warnings_);
+    number_elements(causes().elements, "cause", "C", kMaxCauses, warnings_);
+    intersections_ = read_intersections(sheet_, shape_, GridAxes{rows_, columns_, causes_are_rows()}, marks, legend_,
+                                        warnings_, errors_);
+    if (!errors_.empty()) {
+      std::vector<LoadIssue> issues = errors_.in_file_order();
+      if (issues.size() > kMaxIssues) issues.resize(kMaxIssues);
+      throw LoadError(std::move(issues));
+    }
     report_missing_override();
 
     CsvImportResult result;
@@ -67,18 +80,63 @@ class GridImporter {
     result.matrix = parse_matrix(to_canonical_json(build_matrix()), source_);
     result.summary = summary(result.matrix);
     result.warnings = warnings_.in_file_order();
+    result.layout_used = layout_used();
     return result;
   }
 
  private:
   bool causes_are_rows() const { return orientation_.orientation != CsvOrientation::EffectsAsRows; }
-  const char* row_kind() const { return causes_are_rows() ? "cause" : "effect"; }
-  const char* column_kind() const { return causes_are_rows() ? "effect" : "cause"; }
-  static int limit_of(const std::string& kind) { return kind == "cause" ? kMaxCauses : kMaxEffects; }
-  std::vector<SheetElement>& causes() { return causes_are_rows() ? row_elements_ : column_elements_; }
-  std::vector<SheetElement>& effects() { return causes_are_rows() ? column_elements_ : row_elements_; }
+  AxisElements& causes() { return causes_are_rows() ? rows_ : columns_; }
+  AxisElements& effects() { return causes_are_rows() ? columns_ : rows_; }
+  AxisContext context(ElementKind kind) { return {kind, layout_, source_, warnings_, errors_}; }
 
-  void warn(int line, int column, std::string what) { warnings_.at(line, column, std::move(what)); }
+  // A cause's attribute (setpoint, unit, voting, trip side) on the effects'
+  // axis: the orientation or the layout is wrong.
+  void check_slot_kinds() {
+    const auto& effect_slots = causes_are_rows() ? shape_.column_slots : shape_.row_slots;
+    for (const Slot& s : effect_slots) {
+      if (!cause_only(s.attribute)) continue;
+      const bool row = causes_are_rows();
+      const int line = row ? sheet_.rows[s.index].line : sheet_.rows[shape_.id_row].line;
+      const int column = row ? sheet_.column_of(0) : sheet_.column_of(s.index);
+      errors_.at(line, column, std::string(row ? "header row " : "label column ") +
+                                   std::to_string(row ? line : column) + " " +
+                                   in_quotes(s.label.empty() ? to_string(s.attribute) : s.label) + " holds the " +
+                                   to_string(s.attribute) + " of causes, but the " + (row ? "columns" : "rows") +
+                                   " are the effects (orientation " + to_string(orientation_.orientation) + ")");
+    }
+  }
+
+  // The footnotes' texts: the legend rows of the sheet, the layout's
+  // footnotes and a workbook's remarks sheet; two texts for one key are an
+  // error (never one picked in silence).
+  void read_legend() {
+    static const std::regex legend_re(R"(^(\(\s*(\d+)\s*\)|\*{1,3})$)");
+    for (const auto& row : sheet_.legend) {
+      std::smatch mt;
+      const std::string first = cell_text(row, 0);
+      std::regex_match(first, mt, legend_re);
+      std::string text;
+      for (std::size_t i = 1; i < row.fields.size(); ++i)
+        if (auto t = cell_text(row, i); !t.empty()) join_to(text, " ", t);
+      const std::string key = mt[2].matched ? "(" + mt[2].str() + ")" : mt[1].str();
+      if (!legend_.emplace(key, one_line(text)).second)
+        warnings_.at(row.line, sheet_.column_of(0), "footnote " + key + " defined twice in the legend; the first is kept");
+      legend_line_[key] = row.line;
+    }
+    auto merge = [&](const std::map<std::string, std::string>& texts, const std::string& from) {
+      for (const auto& [key, text] : texts) {
+        auto [it, fresh] = legend_.emplace(key, text);
+        if (!fresh && it->second != text)
+          errors_.at(legend_line_.count(key) ? legend_line_[key] : sheet_.rows[shape_.id_row].line, 0,
+                     "footnote " + key + " reads " + in_quotes(it->second) + " here and " + in_quotes(text) + " in " +
+                         from + ": give it one text");
+        kept_footnotes_[key] = text;
+      }
+    };
+    merge(layout_.footnotes, "the layout");
+    merge(sheet_.extras.remarks, sheet_.extras.remarks_place);
+  }
 
   Matrix build_matrix() {
     Matrix m;
@@ -88,24 +146,30 @@ class GridImporter {
     // 6.1.2: matrix names have at most 16 characters; 6.2.1: titles at most 60.
     m.name = name_.empty() ? sanitize_identifier(stem, kMaxMatrixNameLength) : name_;
     if (m.name.empty()) m.name = "IMPORTED_GRID";
-    m.title = truncate_utf8(one_line(stem.empty() ? std::string("Imported C&E grid") : stem),
-                            kMaxTitleLength);
-    for (const auto& c : causes()) {
+    m.title = truncate_utf8(one_line(stem.empty() ? std::string("Imported C&E grid") : stem), kMaxTitleLength);
+    for (const auto& c : causes().elements) {
       Cause cause;
       cause.id = c.id;
       cause.name = c.name;
       cause.description = c.text;
       cause.note = c.note;
-      cause.tags.push_back(CauseTag{c.tag, false, true});
+      cause.sil = c.sil;
+      cause.function = c.function.value_or(CauseFunction::Normal);
+      for (const auto& t : c.tags) cause.tags.push_back(CauseTag{t, false, true});
+      if (c.analog) {
+        cause.input = InputKind::Analog;
+        cause.analog = c.analog;
+      }
       m.causes.push_back(std::move(cause));
     }
-    for (const auto& e : effects()) {
+    for (const auto& e : effects().elements) {
       Effect effect;
       effect.id = e.id;
       effect.name = e.name;
       effect.description = e.text;
       effect.note = e.note;
-      effect.tags.push_back(EffectTag{e.tag, false});
+      effect.sil = e.sil;
+      for (const auto& t : e.tags) effect.tags.push_back(EffectTag{t, false});
       m.effects.push_back(std::move(effect));
     }
     m.intersections = intersections_;
@@ -113,172 +177,79 @@ class GridImporter {
     return m;
   }
 
-  // "read 36 causes (rows 3-38, ids in column 2), 17 effects (columns 3-19, ids
-  // in row 2), 102 intersections; orientation causes-as-rows from ...".
   std::string summary(const Matrix& m) {
     auto rows_part = [&](const std::vector<SheetElement>& els, const char* kind) {
-      std::string s = std::to_string(els.size()) + " " + kind + (els.size() == 1 ? "" : "s") + " (rows " +
-                      std::to_string(els.front().line) + "-" + std::to_string(els.back().line);
+      std::string s = plural(els.size(), kind) + " (rows " + std::to_string(els.front().line) + "-" +
+                      std::to_string(els.back().last_line);
       s += shape_.id_column ? ", ids in column " + std::to_string(sheet_.column_of(*shape_.id_column))
                             : ", no id column";
       return s + ")";
     };
     auto columns_part = [&](const std::vector<SheetElement>& els, const char* kind) {
-      return std::to_string(els.size()) + " " + kind + (els.size() == 1 ? "" : "s") + " (columns " +
-             std::to_string(els.front().column) + "-" + std::to_string(els.back().column) +
-             ", ids in row " + std::to_string(sheet_.rows[shape_.id_row].line) + ")";
+      return plural(els.size(), kind) + " (columns " + std::to_string(els.front().column) + "-" +
+             std::to_string(els.back().last_line) + ", ids in row " +
+             std::to_string(sheet_.rows[shape_.id_row].line) + ")";
     };
     std::string s = "read ";
-    s += causes_are_rows() ? rows_part(row_elements_, "cause") : columns_part(column_elements_, "cause");
+    s += causes_are_rows() ? rows_part(rows_.elements, "cause") : columns_part(columns_.elements, "cause");
     s += ", ";
-    s += causes_are_rows() ? columns_part(column_elements_, "effect") : rows_part(row_elements_, "effect");
+    s += causes_are_rows() ? columns_part(columns_.elements, "effect") : rows_part(rows_.elements, "effect");
     s += ", " + std::to_string(m.intersections.size()) + " intersections; orientation " +
          (causes_are_rows() ? "causes-as-rows " : "effects-as-rows ") + orientation_.evidence;
-    for (const auto& extra : extras_) s += "; " + extra;
+    for (const auto& slot_text : slot_summary()) s += "; " + slot_text;
+    if (!causes().groups.empty()) {
+      std::string list;
+      for (const auto& g : causes().groups) join_to(list, ", ", g);
+      s += "; voting groups: " + list;
+    }
+    if (causes().analog > 0) s += "; " + plural(static_cast<std::size_t>(causes().analog), "setpoint") + " read as analog limits";
+    for (AxisElements* axis : {&causes(), &effects()}) {
+      if (axis->deleted.empty()) continue;
+      std::string list;
+      for (const auto& d : axis->deleted) join_to(list, ", ", d);
+      s += "; left out " + plural(axis->deleted.size(), std::string("deleted ") + (axis == &causes() ? "cause" : "effect")) +
+           ": " + list;
+    }
     if (sheet_.empty_rows_skipped || sheet_.empty_columns_skipped) {
       std::string skipped;
-      if (sheet_.empty_rows_skipped)
-        skipped = std::to_string(sheet_.empty_rows_skipped) + " empty row" +
-                  (sheet_.empty_rows_skipped == 1 ? "" : "s") + " above";
+      if (sheet_.empty_rows_skipped) skipped = plural(sheet_.empty_rows_skipped, "empty row") + " above";
       if (sheet_.empty_columns_skipped)
-        join_to(skipped, " and ", std::to_string(sheet_.empty_columns_skipped) + " empty column" +
-                                      (sheet_.empty_columns_skipped == 1 ? "" : "s") + " left of");
+        join_to(skipped, " and ", plural(sheet_.empty_columns_skipped, "empty column") + " left of");
       s += "; skipped " + skipped + " the grid";
     }
     return s;
   }
 
-  void read_legend() {
-    static const std::regex legend_re(R"(^\(\s*(\d+)\s*\)$)");
-    for (const auto& row : sheet_.legend) {
-      std::smatch mt;
-      const std::string first = cell_text(row, 0);
-      std::regex_match(first, mt, legend_re);
-      std::string text;
-      for (std::size_t i = 1; i < row.fields.size(); ++i)
-        if (auto t = cell_text(row, i); !t.empty()) join_to(text, " ", t);
-      std::string key = "(" + mt[1].str() + ")";
-      if (!legend_.emplace(key, one_line(text)).second)
-        warn(row.line, sheet_.column_of(0), "footnote " + key + " defined twice in the legend; the first is kept");
-    }
-  }
-
-  // Text of an extra header row or label column: the element's tag when the
-  // label names the tag row, else a part of its note ("Action: close").
-  void add_extra(SheetElement& e, const std::string& label, const std::string& value, int line,
-                 int column, const char* kind) {
-    if (value.empty()) return;
-    if (is_tag_label(label)) {
-      if (auto problem = tag_name_problem(value)) {
-        warn(line, column,
-             std::string(kind) + " tag " + in_quotes(value) + " is not a tag name (6.1.4: " + *problem +
-                 "); the tag is named after the id");
-        return;
+  // What the label columns and header rows other than ids and descriptions became.
+  std::vector<std::string> slot_summary() const {
+    std::vector<std::string> out;
+    auto describe = [&](const std::vector<Slot>& slots, bool rows, const std::string& kind) {
+      for (const Slot& s : slots) {
+        if (s.attribute == SheetAttribute::Id || s.attribute == SheetAttribute::Description) continue;
+        const std::string where = rows ? "label column " + std::to_string(sheet_.column_of(s.index))
+                                       : "header row " + std::to_string(sheet_.rows[s.index].line);
+        out.push_back(where + (s.label.empty() ? "" : " " + in_quotes(s.label)) + " " + read_as(s.attribute, kind));
       }
-      e.tag_from_sheet = value;
-      return;
-    }
-    join_to(e.note, "; ", (label.empty() ? "line " + std::to_string(line) : label) + ": " + value);
+    };
+    describe(shape_.column_slots, false, causes_are_rows() ? "effect" : "cause");
+    describe(shape_.row_slots, true, causes_are_rows() ? "cause" : "effect");
+    return out;
   }
 
-  void note_extras(const std::vector<std::size_t>& extras, bool rows, const char* kind) {
-    for (std::size_t x : extras) {
-      const std::string label = rows ? row_label(sheet_, shape_, x) : column_label(sheet_, shape_, x);
-      const std::string where = rows ? "header row " + std::to_string(sheet_.rows[x].line)
-                                     : "label column " + std::to_string(sheet_.column_of(x));
-      extras_.push_back(where + (label.empty() ? "" : " " + in_quotes(label)) +
-                        (is_tag_label(label) ? " read as the " + std::string(kind) + " tags"
-                                             : " kept in the " + std::string(kind) + " notes"));
-    }
-  }
-
-  void read_column_elements() {
-    const char* kind = column_kind();
-    const CsvRecord& descriptions = sheet_.rows[shape_.description_row];
-    const CsvRecord& ids = sheet_.rows[shape_.id_row];
-    const std::size_t c0 = shape_.first_data_column;
-    const std::size_t count = shape_.column_end - c0;
-    if (count > static_cast<std::size_t>(limit_of(kind)))
-      throw LoadError({{where_of(source_, ids.line),
-                        "the grid has " + std::to_string(count) + " " + kind + " columns; a matrix holds at most " +
-                            std::to_string(limit_of(kind)) + " " + kind + "s (3.4)"}});
-    for (std::size_t i = c0; i < shape_.column_end; ++i) {
-      SheetElement e;
-      e.sheet_id = cell_text(ids, i);
-      e.line = ids.line;
-      e.column = sheet_.column_of(i);
-      if (e.sheet_id.empty()) {
-        e.unnamed = upper(kind) + "_COL_" + std::to_string(e.column);
-        warn(ids.line, e.column,
-             std::string(kind) + " column without an id; named after its column (" + e.unnamed + ")");
-      }
-      if (shape_.description_row != shape_.id_row)
-        describe(e, cell_text(descriptions, i), descriptions.line, e.column, kind);
-      for (std::size_t x : shape_.extra_rows)
-        add_extra(e, row_label(sheet_, shape_, x), cell_text(sheet_.rows[x], i), sheet_.rows[x].line,
-                  e.column, kind);
-      column_elements_.push_back(std::move(e));
-    }
-    note_extras(shape_.extra_rows, true, kind);
-  }
-
-  // Description truncated to the 80 characters of 6.3/6.4; the full text kept in the note.
-  void describe(SheetElement& e, const std::string& raw, int line, int column, const char* kind) {
-    const std::string text = one_line(raw);
-    e.text = text;
-    if (utf8_length(text) > kMaxDescriptionLength) {
-      e.text = truncate_utf8(text, kMaxDescriptionLength);
-      join_to(e.note, "; ", "description: " + text);
-      warn(line, column,
-           std::string(kind) + " description of " + std::to_string(utf8_length(text)) +
-               " characters truncated to " + std::to_string(kMaxDescriptionLength) +
-               "; the full text is kept in the note");
-    }
-  }
-
-  void read_row_elements() {
-    const char* kind = row_kind();
-    const std::size_t c0 = shape_.first_data_column;
-    const bool has_description = shape_.description_column && shape_.description_column != shape_.id_column;
-    for (std::size_t r = shape_.first_data_row; r < sheet_.rows.size(); ++r) {
-      const CsvRecord& row = sheet_.rows[r];
-      std::string label;
-      for (std::size_t i = 0; i < c0; ++i)
-        if (auto t = cell_text(row, i); !t.empty()) join_to(label, " ", t);
-      bool marks = false;
-      for (std::size_t i = c0; i < row.fields.size(); ++i) marks = marks || !cell_text(row, i).empty();
-      if (label.empty() && !marks) continue;
-      SheetElement c;
-      c.sheet_id = shape_.id_column ? cell_text(row, *shape_.id_column) : "";
-      c.line = row.line;
-      c.column = sheet_.column_of(shape_.id_column ? *shape_.id_column : c0 - 1);
-      if (c.sheet_id.empty()) {
-        if (!marks) {
-          warn(row.line, sheet_.column_of(0),
-               "text row without " + std::string(kind == std::string("cause") ? "a cause" : "an effect") +
-                   " id or intersections ignored: " + in_quotes(label));
-          continue;
-        }
-        c.unnamed = upper(kind) + "_LINE_" + std::to_string(row.line);
-        warn(row.line, c.column,
-             std::string(kind) + " row without an id; imported, named after its line (" + c.unnamed + ")");
-      }
-      if (row_elements_.size() == static_cast<std::size_t>(limit_of(kind)))
-        throw LoadError({{where_of(source_, row.line),
-                          "more than " + std::to_string(limit_of(kind)) + " " + kind + " rows; a matrix holds at most " +
-                              std::to_string(limit_of(kind)) + " " + kind + "s (3.4)"}});
-      if (has_description)
-        describe(c, cell_text(row, *shape_.description_column), row.line,
-                 sheet_.column_of(*shape_.description_column), kind);
-      for (std::size_t x : shape_.extra_columns)
-        add_extra(c, column_label(sheet_, shape_, x), cell_text(row, x), row.line, sheet_.column_of(x), kind);
-      element_rows_.push_back(r);
-      row_elements_.push_back(std::move(c));
-    }
-    if (row_elements_.empty())
-      throw LoadError({{where_of(source_, sheet_.rows.back().line),
-                        std::string("not a C&E grid: no ") + kind + " rows after the header rows (docs/csv.md)"}});
-    note_extras(shape_.extra_columns, false, kind);
+  // The layout the sheet was read with, complete: the given one, the
+  // orientation and the places found, and every footnote text not in the
+  // sheet itself (layout, remarks sheet), so that it reads a CSV of the same
+  // sheet the same.
+  SheetLayout layout_used() const {
+    SheetLayout u = layout_;
+    u.orientation = orientation_.orientation;
+    std::vector<AttributePlace> row_places, column_places;
+    for (const Slot& s : shape_.row_slots) row_places.push_back({s.attribute, sheet_.column_of(s.index)});
+    for (const Slot& s : shape_.column_slots) column_places.push_back({s.attribute, sheet_.rows[s.index].line});
+    u.causes = causes_are_rows() ? row_places : column_places;
+    u.effects = causes_are_rows() ? column_places : row_places;
+    u.footnotes = kept_footnotes_;
+    return u;
   }
 
   // 6.5.2: V and R need a maximum override time, which a grid never states.
@@ -288,11 +259,11 @@ class GridImporter {
       if (x.type == IntersectionType::V || x.type == IntersectionType::R) need.insert(x.effect);
     if (need.empty()) return;
     std::string list;
-    for (const auto& e : effects())
+    for (const auto& e : effects().elements)
       if (need.count(e.id)) join_to(list, ", ", e.name);
-    warn(effects().front().line, 0,
-         "the grid states no maximum override time (6.5.2) for the effects with V/R "
-         "intersections (" + list + "); none was invented: cemv validate reports each");
+    warnings_.at(effects().elements.front().line, 0,
+                 "the grid states no maximum override time (6.5.2) for the effects with V/R "
+                 "intersections (" + list + "); none was invented: cemv validate reports each");
   }
 
   const Sheet& sheet_;
@@ -300,23 +271,36 @@ class GridImporter {
   OrientationDecision orientation_;
   std::string source_;
   std::string name_;  // the matrix name asked for; empty: from the file name
-  std::vector<SheetElement> column_elements_;  // one per column of the grid
-  std::vector<SheetElement> row_elements_;     // one per row of the grid
-  std::vector<std::size_t> element_rows_;      // the sheet row of each row element
-  std::vector<std::string> extras_;            // what the extra header rows/columns became
+  const SheetLayout& layout_;
+  AxisElements columns_;  // one per column (a voting group: several) of the grid
+  AxisElements rows_;
   std::map<std::string, std::string> legend_;
+  std::map<std::string, int> legend_line_;
+  std::map<std::string, std::string> kept_footnotes_;  // from the layout and a remarks sheet
   std::vector<Intersection> intersections_;
   GridWarnings warnings_;
+  GridErrors errors_;
 };
 
 }  // namespace
 
-CsvImportResult import_grid(std::string_view text, const std::string& source,
-                            const CsvImportOptions& options) {
-  const Sheet sheet = read_sheet(text, options.separator, source);
-  const Shape shape = find_shape(sheet, source);
-  OrientationDecision orientation = decide_orientation(sheet, shape, options.orientation, source);
-  return GridImporter(sheet, shape, std::move(orientation), source, options.matrix_name).run();
+CsvImportResult import_grid(std::string_view text, const std::string& source, const CsvImportOptions& options,
+                            const SheetExtras& extras) {
+  const SheetLayout layout = options.sheet_layout.value_or(SheetLayout{});
+  CsvOrientation requested = options.orientation;
+  std::string given_by = "--orientation";
+  if (layout.orientation != CsvOrientation::Auto) {
+    if (requested != CsvOrientation::Auto && requested != layout.orientation)
+      throw LoadError({{source, std::string("--orientation ") + to_string(requested) + " and the layout's " +
+                                    to_string(layout.orientation) + " disagree; give one"}});
+    requested = layout.orientation;
+    given_by = "the layout's orientation";
+  }
+  Sheet sheet = read_sheet(text, options.separator, source);
+  sheet.extras = extras;
+  const Shape shape = find_shape(sheet, source, layout);
+  OrientationDecision orientation = decide_orientation(sheet, shape, requested, source, given_by);
+  return GridImporter(sheet, shape, std::move(orientation), source, options.matrix_name, layout).run();
 }
 
 }  // namespace cemv::formats::grid

@@ -120,7 +120,7 @@ void number_elements(std::vector<SheetElement>& elements, const char* kind, cons
     for (int k = 2; names.count(tag_key(name)); ++k) name = base + "_" + std::to_string(k);
     names.insert(tag_key(name));
     e.name = name;
-    e.tag = e.tag_from_sheet.empty() ? name : e.tag_from_sheet;
+    if (e.tags.empty()) e.tags.push_back(name);
     std::string origin = "sheet id: " + (e.sheet_id.empty() ? std::string("(none)") : e.sheet_id);
     e.note = e.note.empty() ? origin : origin + "; " + e.note;
     if (duplicate) {

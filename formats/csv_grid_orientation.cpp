@@ -80,20 +80,72 @@ struct Evidence {
 // 'Causes/Detection' in the description column of the id row).
 Evidence corner_labels(const Sheet& sheet, const Shape& shape) {
   Evidence ev;
-  for (std::size_t r = 0; r < shape.first_data_row; ++r)
+  auto item = [&](const std::string& t, std::size_t r, std::size_t col, bool causes_are_rows) {
+    ev.says.insert(causes_are_rows ? CsvOrientation::CausesAsRows : CsvOrientation::EffectsAsRows);
+    ev.items.push_back(model::in_quotes(t) + " in line " + std::to_string(sheet.rows[r].line) + ", column " +
+                       std::to_string(sheet.column_of(col)));
+  };
+  // A label (an attribute's header, such as "Effect description", is evidence
+  // of its own kind below).
+  auto kind_of = [](const std::string& t) {
+    return corner_label_like(t) && !attribute_of_header(t) ? label_kind(t) : Kind::None;
+  };
+  for (std::size_t r = 0; r < shape.first_data_row; ++r) {
+    // A band of labels over the data columns (`EFFECTS` over the effects) names them.
+    const bool header = std::find(shape.header_rows.begin(), shape.header_rows.end(), r) != shape.header_rows.end();
+    for (std::size_t col = shape.first_data_column; !header && col < sheet.rows[r].fields.size(); ++col)
+      if (const Kind kind = kind_of(cell_text(sheet.rows[r], col)); kind != Kind::None)
+        item(cell_text(sheet.rows[r], col), r, col, kind == Kind::Effects);
     for (std::size_t col = 0; col < shape.first_data_column; ++col) {
       const std::string t = cell_text(sheet.rows[r], col);
-      const Kind kind = corner_label_like(t) ? label_kind(t) : Kind::None;
+      const Kind kind = kind_of(t);
       if (kind == Kind::None) continue;
       const std::size_t across = shape.first_data_column - 1 - col;  // to the column headers
       const std::size_t down = shape.first_data_row - 1 - r;          // to the row headers
       if (across == down) continue;  // diagonal to both: names neither axis
       const bool names_columns = across < down;
-      const bool causes_are_rows = (kind == Kind::Causes) != names_columns;
-      ev.says.insert(causes_are_rows ? CsvOrientation::CausesAsRows : CsvOrientation::EffectsAsRows);
-      ev.items.push_back(model::in_quotes(t) + " in line " + std::to_string(sheet.rows[r].line) + ", column " +
-                         std::to_string(sheet.column_of(col)));
+      item(t, r, col, (kind == Kind::Causes) != names_columns);
     }
+  }
+  // A band of labels beside the data rows (`CAUSES` merged down the causes)
+  // names them.
+  for (std::size_t col = 0; col < shape.first_data_column; ++col) {
+    if (std::find(shape.label_columns.begin(), shape.label_columns.end(), col) != shape.label_columns.end()) continue;
+    for (std::size_t r = shape.first_data_row; r < sheet.rows.size(); ++r)
+      if (const Kind kind = kind_of(cell_text(sheet.rows[r], col)); kind != Kind::None)
+        item(cell_text(sheet.rows[r], col), r, col, kind == Kind::Causes);
+  }
+  return ev;
+}
+
+// The headers of the attributes: a cause's attribute (setpoint, unit, voting,
+// trip side) or a header naming causes on an axis says the causes are there;
+// an effect's (action) or a header naming effects says the effects are.
+Evidence attribute_headers(const Sheet& sheet, const Shape& shape) {
+  Evidence ev;
+  if (shape.given) return ev;  // the layout gave the places, and with them the orientation
+  auto read = [&](const std::vector<Slot>& slots, bool rows) {
+    for (const auto& slot : slots) {
+      const auto m = slot.by_header ? attribute_of_header(slot.label) : std::nullopt;
+      if (!m) continue;
+      ElementKind kind = m->kind;
+      if (kind == ElementKind::Unknown) {
+        const SheetAttribute a = m->attribute;
+        if (a == SheetAttribute::Setpoint || a == SheetAttribute::Unit || a == SheetAttribute::Voting ||
+            a == SheetAttribute::TripSide)
+          kind = ElementKind::Cause;
+        else if (a == SheetAttribute::Action)
+          kind = ElementKind::Effect;
+      }
+      if (kind == ElementKind::Unknown) continue;
+      ev.says.insert((kind == ElementKind::Cause) == rows ? CsvOrientation::CausesAsRows : CsvOrientation::EffectsAsRows);
+      ev.items.push_back(model::in_quotes(slot.label) +
+                         (rows ? " over column " + std::to_string(sheet.column_of(slot.index))
+                               : " left of row " + std::to_string(sheet.rows[slot.index].line)));
+    }
+  };
+  read(shape.row_slots, true);
+  read(shape.column_slots, false);
   return ev;
 }
 
@@ -153,25 +205,43 @@ std::string describe(const char* what, const Evidence& ev) {
 }  // namespace
 
 OrientationDecision decide_orientation(const Sheet& sheet, const Shape& shape,
-                                       CsvOrientation requested, const std::string& source) {
+                                       CsvOrientation requested, const std::string& source,
+                                       const std::string& given_by) {
   const Evidence labels = corner_labels(sheet, shape);
   const Evidence ids = id_patterns(sheet, shape);
+  const Evidence headers = attribute_headers(sheet, shape);
   std::set<CsvOrientation> says = labels.says;
   says.insert(ids.says.begin(), ids.says.end());
+  says.insert(headers.says.begin(), headers.says.end());
   std::string found;
   if (!labels.items.empty()) join_to(found, "; ", describe("the corner labels", labels));
   if (!ids.items.empty()) join_to(found, "; ", describe("the id patterns", ids));
+  if (!headers.items.empty()) join_to(found, "; ", describe("the attribute headers", headers));
   const int id_line = sheet.rows[shape.id_row].line;
 
   OrientationDecision decision;
   if (requested != CsvOrientation::Auto) {
+    // The corner labels and the attribute headers are the sheet's own words
+    // for its axes: read against all of them, every cause would become an
+    // effect. Id patterns are only letters, and a given orientation may
+    // overrule them.
+    std::set<CsvOrientation> words = labels.says;
+    words.insert(headers.says.begin(), headers.says.end());
+    if (!words.empty() && !words.count(requested)) {
+      std::string against;
+      if (!labels.items.empty()) join_to(against, "; ", describe("the corner labels", labels));
+      if (!headers.items.empty()) join_to(against, "; ", describe("the attribute headers", headers));
+      throw LoadError({{where_of(source, id_line),
+                        against + "; " + given_by + " " + name_of(requested) +
+                            " would read every cause as an effect and every effect as a cause; drop " + given_by +
+                            ", or correct the labels (docs/csv.md \"Orientation\")"}});
+    }
     decision.orientation = requested;
-    decision.evidence = "as given by --orientation";
+    decision.evidence = "as given by " + given_by;
     if (says.count(requested == CsvOrientation::CausesAsRows ? CsvOrientation::EffectsAsRows
                                                              : CsvOrientation::CausesAsRows))
       decision.disagreement = LoadIssue{where_of(source, id_line),
-                                        found + "; read as " + name_of(requested) +
-                                            " as --orientation says"};
+                                        found + "; read as " + name_of(requested) + " as " + given_by + " says"};
     return decision;
   }
   if (says.size() != 1) {
@@ -196,6 +266,11 @@ OrientationDecision decide_orientation(const Sheet& sheet, const Shape& shape,
     std::string list;
     for (const auto& item : ids.items) join_to(list, "; ", item);
     join_to(from, " and ", "the id patterns (" + list + ")");
+  }
+  if (!headers.items.empty()) {
+    std::string list;
+    for (const auto& item : headers.items) join_to(list, "; ", item);
+    join_to(from, " and ", "the attribute headers (" + list + ")");
   }
   decision.evidence = "from " + from;
   return decision;

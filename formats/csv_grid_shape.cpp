@@ -3,6 +3,7 @@
 // its id row. Like the Safety Matrix's own import (6.6), a sheet that does not
 // match is refused; nothing is guessed.
 #include <algorithm>
+#include <map>
 #include <regex>
 
 #include "formats/csv_grid.hpp"
@@ -60,6 +61,37 @@ bool corner_label_like(const std::string& text) {
 
 namespace {
 
+// The pattern of an id, its digit runs as '#' (TMA-D-40 -> TMA-D-#): only
+// texts with letters and digits that are no mark.
+std::optional<std::string> id_pattern(const std::string& t) {
+  if (t.empty() || parse_mark(t)) return std::nullopt;
+  std::string pattern;
+  bool letter = false, digit = false;
+  for (char ch : t) {
+    if (ch >= '0' && ch <= '9') {
+      if (pattern.empty() || pattern.back() != '#') pattern += '#';
+      digit = true;
+    } else {
+      letter = letter || (ch >= 'A' && ch <= 'Z') || (ch >= 'a' && ch <= 'z');
+      pattern += ch;
+    }
+  }
+  if (!letter || !digit) return std::nullopt;
+  return pattern;
+}
+
+// At least two cells, and more than half of the non-empty ones, are ids of one pattern.
+bool ids_of_one_pattern(const std::vector<std::string>& cells) {
+  std::map<std::string, int> patterns;
+  int filled = 0, best = 0;
+  for (const auto& t : cells) {
+    if (t.empty()) continue;
+    ++filled;
+    if (auto p = id_pattern(t)) best = std::max(best, ++patterns[*p]);
+  }
+  return best >= 2 && 2 * best > filled;
+}
+
 struct Cells {
   int marks = 0;
   int other = 0;
@@ -104,25 +136,61 @@ class ShapeFinder {
     return label_rows_[r] == 1;
   }
   // A row or column of the corner block that reaches into the data: axis labels
-  // (left of, or above, the data) and at most one mark-like token besides, such
-  // as a lone `N` in the corner.
+  // (left of, or above, the data) and at most one mark-like token besides,
+  // such as a lone `N` in the corner; or a band: one label over the data
+  // columns and nothing else there (`EFFECTS` merged over the effects).
   bool label_row(std::size_t r, std::size_t c0) const {
-    int labels = 0, other = 0;
+    int labels = 0, other = 0, band = 0, over = 0;
     for (std::size_t i = 0; i < rows_[r].fields.size(); ++i) {
       const std::string t = cell_text(rows_[r], i);
+      if (i >= c0 && !t.empty()) {
+        ++over;
+        band += corner_label_like(t) ? 1 : 0;
+      }
       if (i < c0 && corner_label_like(t)) ++labels;
       else if (!t.empty()) other += parse_mark(t) ? 1 : 2;
     }
+    if (band == 1 && over == 1) return true;
     return labels > 0 && other <= 1;
   }
   bool label_column(std::size_t col, std::size_t r0) const {
-    int labels = 0, other = 0;
+    int labels = 0, other = 0, band = 0, beside = 0;
     for (std::size_t r = 0; r < rows_.size(); ++r) {
       const std::string t = cell_text(rows_[r], col);
+      if (r >= r0 && !t.empty()) {
+        ++beside;
+        band += corner_label_like(t) ? 1 : 0;
+      }
       if (r < r0 && corner_label_like(t)) ++labels;
       else if (!t.empty()) other += parse_mark(t) ? 1 : 2;
     }
+    if (band == 1 && beside == 1) return true;  // `EFFECTS` merged beside the effect rows
     return labels > 0 && other <= 1;
+  }
+
+  // A row (from column c0 on) or a column (from row r0 on, label rows left
+  // out) of ids sharing one pattern, such as TMA-D-<n>: a header, never data,
+  // even with a lone mark among the ids (the corner `N` of the LSST table as
+  // first published).
+  bool id_row(std::size_t r, std::size_t c0) const {
+    std::vector<std::string> cells;
+    for (std::size_t i = c0; i < rows_[r].fields.size(); ++i) cells.push_back(cell_text(rows_[r], i));
+    return ids_of_one_pattern(cells);
+  }
+  bool id_column(std::size_t col, std::size_t r0, std::size_t c0) const {
+    std::vector<std::string> cells;
+    for (std::size_t r = r0; r < rows_.size(); ++r)
+      if (!cached_label_row(r, c0)) cells.push_back(cell_text(rows_[r], col));
+    return ids_of_one_pattern(cells);
+  }
+  // Column col is part of the corner block: a corner label stands in it on a
+  // header row that also holds descriptions or ids (LSST: 'Causes/Detection'
+  // over the effect ids of the table as first published). A label on a row of
+  // labels only (an `EFFECTS` band over the effect columns) says nothing of it.
+  bool labelled_in_header(std::size_t col, std::size_t r0, std::size_t c0) const {
+    for (std::size_t r = 0; r < r0 && r < rows_.size(); ++r)
+      if (corner_label_like(cell_text(rows_[r], col)) && !label_row(r, c0)) return true;
+    return false;
   }
 
   enum class Round { NoGrid, Moved, Settled };
@@ -134,7 +202,7 @@ class ShapeFinder {
     const std::size_t old_r0 = r0, old_c0 = c0;
     std::optional<std::size_t> marked_row;
     for (std::size_t r = 1; r < rows_.size() && !marked_row; ++r)
-      if (row_cells(r, c0).marks > 0 && !label_row(r, c0)) marked_row = r;
+      if (row_cells(r, c0).marks > 0 && !label_row(r, c0) && !id_row(r, c0)) marked_row = r;
     if (!marked_row) return Round::NoGrid;
     std::optional<std::size_t> id_row;
     for (std::size_t r = 0; r < *marked_row; ++r)
@@ -145,14 +213,18 @@ class ShapeFinder {
 
     std::optional<std::size_t> marked_column;
     for (std::size_t col = 1; col < width_ && !marked_column; ++col)
-      if (column_cells(col, r0, c0).marks > 0 && !label_column(col, r0)) marked_column = col;
+      if (column_cells(col, r0, c0).marks > 0 && !label_column(col, r0) && !id_column(col, r0, c0))
+        marked_column = col;
     if (!marked_column) return Round::NoGrid;
     // Left of the first marked column, a column with an id in the id row is still
-    // an element (one never marked, or holding only stray values).
+    // an element (one never marked, or holding only stray values), unless it is
+    // a column of the corner block: one of ids, one with a corner label in the
+    // header, or one headed by an attribute (Tag, Setpoint, Voting, SIL, ...).
     c0 = *marked_column;
     while (c0 > 1) {
       const std::string id = cell_text(rows_[*id_row], c0 - 1);
-      if (id.empty() || corner_label_like(id)) break;
+      if (id.empty() || corner_label_like(id) || attribute_of_header(id)) break;
+      if (id_column(c0 - 1, r0, c0) || labelled_in_header(c0 - 1, r0, c0)) break;
       --c0;
     }
     while (c0 < width_ && label_column(c0, r0)) ++c0;
@@ -220,7 +292,7 @@ Sheet read_sheet(std::string_view text, char separator, const std::string& sourc
     if (!blank(r)) skip = std::min(skip, leading_blank_fields(r));
   if (skip == std::string::npos) skip = 0;
   sheet.empty_columns_skipped = skip;
-  static const std::regex legend_key(R"(^\(\s*\d+\s*\)$)");
+  static const std::regex legend_key(R"(^(\(\s*\d+\s*\)|\*{1,3})$)");
   std::vector<CsvRecord> grid_rows;
   for (auto& r : sheet.rows) {
     r.fields.erase(r.fields.begin(), r.fields.begin() + static_cast<long>(std::min(skip, r.fields.size())));
@@ -231,7 +303,55 @@ Sheet read_sheet(std::string_view text, char separator, const std::string& sourc
   return sheet;
 }
 
-Shape find_shape(const Sheet& sheet, const std::string& source) {
+std::optional<std::size_t> Sheet::row_at(int line) const {
+  auto it = std::lower_bound(rows.begin(), rows.end(), line, [](const CsvRecord& r, int l) { return r.line < l; });
+  if (it == rows.end() || it->line != line) return std::nullopt;
+  return static_cast<std::size_t>(it - rows.begin());
+}
+
+namespace {
+
+// The boundaries the layout's places fix: the first data column right of the
+// last place of the elements on the rows, the first data row below the last
+// place of those on the columns.
+struct Fixed {
+  std::optional<std::size_t> r0, c0;
+};
+Fixed fixed_by(const Sheet& sheet, const SheetLayout& layout, const std::string& source) {
+  Fixed f;
+  const bool causes_as_rows = layout.orientation != CsvOrientation::EffectsAsRows;
+  const auto& columns = causes_as_rows ? layout.causes : layout.effects;
+  const auto& rows = causes_as_rows ? layout.effects : layout.causes;
+  int last_column = 0, last_line = 0;
+  for (const auto& p : columns) last_column = std::max(last_column, p.position);
+  for (const auto& p : rows) last_line = std::max(last_line, p.position);
+  if (last_column > static_cast<int>(sheet.empty_columns_skipped))
+    f.c0 = static_cast<std::size_t>(last_column) - sheet.empty_columns_skipped;
+  if (last_line > 0) {
+    const auto r = sheet.row_at(last_line);
+    if (!r)
+      throw LoadError({{where_of(source, last_line), "the layout places a header in row " + std::to_string(last_line) +
+                                                         ", which is no row of the grid (empty, or a legend row)"}});
+    f.r0 = *r + 1;
+  }
+  return f;
+}
+
+}  // namespace
+
+bool has_grid_shape(const Sheet& sheet) {
+  if (sheet.rows.size() < 2) return false;
+  ShapeFinder finder(sheet);
+  std::size_t r0 = 1, c0 = finder.width() >= 3 ? 2 : 1;
+  auto round = ShapeFinder::Round::Moved;
+  for (int k = 0; k < 6 && round == ShapeFinder::Round::Moved; ++k) round = finder.settle(r0, c0);
+  if (round == ShapeFinder::Round::NoGrid || r0 >= sheet.rows.size()) return false;
+  for (std::size_t r = 0; r < r0; ++r)
+    if (finder.row_cells(r, c0).non_blank() > 0 && !finder.label_row(r, c0)) return true;
+  return false;
+}
+
+Shape find_shape(const Sheet& sheet, const std::string& source, const SheetLayout& layout) {
   const auto& rows = sheet.rows;
   auto refuse = [&](int line, const std::string& what) {
     throw LoadError({{where_of(source, line), "not a C&E grid: " + what + " (docs/csv.md)"}});
@@ -240,34 +360,29 @@ Shape find_shape(const Sheet& sheet, const std::string& source) {
     refuse(rows.empty() ? 1 : rows.back().line,
            "expected header rows (descriptions, ids) above rows of marks N, S, V, R, X or *");
   ShapeFinder finder(sheet);
-  std::size_t r0 = 1, c0 = finder.width() >= 3 ? 2 : 1;
+  const Fixed fixed = fixed_by(sheet, layout, source);
+  std::size_t r0 = fixed.r0.value_or(1), c0 = fixed.c0.value_or(finder.width() >= 3 ? 2 : 1);
   auto round = ShapeFinder::Round::Moved;
-  for (int k = 0; k < 6 && round == ShapeFinder::Round::Moved; ++k) round = finder.settle(r0, c0);
+  for (int k = 0; k < 6 && round == ShapeFinder::Round::Moved && !(fixed.r0 && fixed.c0); ++k) {
+    round = finder.settle(r0, c0);
+    if (fixed.r0) r0 = *fixed.r0;
+    if (fixed.c0) c0 = *fixed.c0;
+  }
   const bool found = round != ShapeFinder::Round::NoGrid;
   Shape shape;
   shape.first_data_row = r0;
   shape.first_data_column = c0;
-  bool any_header = false;
-  for (std::size_t r = 0; r < r0; ++r) {
-    if (finder.row_cells(r, c0).non_blank() == 0 || finder.label_row(r, c0)) continue;
-    if (!any_header) shape.description_row = r;
-    shape.id_row = r;
-    any_header = true;
-  }
-  if (!found || !any_header || r0 >= rows.size())
+  shape.given = !layout.causes.empty() || !layout.effects.empty();
+  for (std::size_t r = 0; r < r0 && r < rows.size(); ++r)
+    if (finder.row_cells(r, c0).non_blank() > 0 && !finder.label_row(r, c0)) shape.header_rows.push_back(r);
+  if (!found || shape.header_rows.empty() || r0 >= rows.size())
     refuse(rows.back().line,
-           any_header ? "no rows of marks N, S, V, R, X or * below the header rows"
-                      : "no header row of ids above rows of marks N, S, V, R, X or *");
-  for (std::size_t r = 0; r < r0; ++r)
-    if (r != shape.description_row && r != shape.id_row && finder.row_cells(r, c0).non_blank() > 0 &&
-        !finder.label_row(r, c0))
-      shape.extra_rows.push_back(r);
-  for (std::size_t col = 0; col < c0; ++col) {
-    if (finder.column_cells(col, r0, c0).non_blank() == 0 || finder.label_column(col, r0)) continue;
-    if (!shape.description_column) shape.description_column = col;
-    else if (*shape.id_column != *shape.description_column) shape.extra_columns.push_back(*shape.id_column);
-    shape.id_column = col;
-  }
+           !shape.header_rows.empty() ? "no rows of marks N, S, V, R, X or * below the header rows"
+                                      : "no header row of ids above rows of marks N, S, V, R, X or *");
+  for (std::size_t col = 0; col < c0; ++col)
+    if (finder.column_cells(col, r0, c0).non_blank() > 0 && !finder.label_column(col, r0))
+      shape.label_columns.push_back(col);
+  assign_slots(sheet, shape, layout, source);
   std::size_t end = 0;
   for (std::size_t r : {shape.description_row, shape.id_row})
     for (std::size_t i = c0; i < rows[r].fields.size(); ++i)
@@ -275,20 +390,6 @@ Shape find_shape(const Sheet& sheet, const std::string& source) {
   shape.column_end = end;
   check_alignment(sheet, shape, source);
   return shape;
-}
-
-std::string row_label(const Sheet& sheet, const Shape& shape, std::size_t row) {
-  std::string label;
-  for (std::size_t i = 0; i < shape.first_data_column; ++i)
-    if (auto t = cell_text(sheet.rows[row], i); !t.empty()) join_to(label, " ", t);
-  return label;
-}
-
-std::string column_label(const Sheet& sheet, const Shape& shape, std::size_t column) {
-  std::string label;
-  for (std::size_t r = 0; r < shape.first_data_row; ++r)
-    if (auto t = cell_text(sheet.rows[r], column); !t.empty()) join_to(label, " ", t);
-  return label;
 }
 
 std::optional<int> trailing_number(std::string_view s) {
@@ -308,18 +409,26 @@ std::optional<Mark> parse_mark(std::string_view t) {
   };
   skip_blanks();
   while (i < t.size()) {
+    if (t[i] == '*' && mark.letter != '*') {  // S*, N**: a star footnote (not after the note mark itself)
+      std::size_t start = i;
+      while (i < t.size() && t[i] == '*') ++i;
+      if (i - start > 3) return std::nullopt;
+      mark.footnotes.emplace_back(t.substr(start, i - start));
+      skip_blanks();
+      continue;
+    }
     if (t[i] != '(') return std::nullopt;
     ++i;
     skip_blanks();
     std::size_t start = i;
     while (i < t.size() && t[i] >= '0' && t[i] <= '9') ++i;
     if (i == start) return std::nullopt;
-    std::string number(t.substr(start, i - start));
+    std::string key = "(" + std::string(t.substr(start, i - start)) + ")";
     skip_blanks();
     if (i >= t.size() || t[i] != ')') return std::nullopt;
     ++i;
     skip_blanks();
-    mark.footnotes.push_back(std::move(number));
+    mark.footnotes.push_back(std::move(key));
   }
   return mark;
 }

@@ -274,6 +274,9 @@ class Reader {
 };
 
 constexpr long long kU32Max = std::numeric_limits<std::uint32_t>::max();
+// Entries of one provenance list or of the tag descriptions: more than any
+// matrix of 3.4 needs (128 causes x 3 + 128 effects x 4 tags and the control tags).
+constexpr std::size_t kMaxRecordEntries = 4096;
 
 // Reads a JSON array whose elements `read_one` converts; `limit` (of 3.4) is
 // checked on the count first so that the message names the limit.
@@ -333,6 +336,8 @@ Cause read_cause(Reader& r, const InJson& j, const std::string& path, bool& ok) 
                           {"ett", false, [&](const InJson& v2, const std::string& p2) { r.boolean(v2, p2, tag.ett); }},
                           {"soft_bypass_allowed", false,
                            [&](const InJson& v2, const std::string& p2) { r.boolean(v2, p2, tag.soft_bypass_allowed); }},
+                          {"simulation_allowed", false,
+                           [&](const InJson& v2, const std::string& p2) { r.boolean(v2, p2, tag.simulation_allowed); }},
                       });
                       return named;
                     });
@@ -420,6 +425,8 @@ Effect read_effect(Reader& r, const InJson& j, const std::string& path, bool& ok
                       r.object(t, tp, {
                           {"name", true, [&](const InJson& v2, const std::string& p2) { named = r.tag(v2, p2, tag.name); }},
                           {"ett", false, [&](const InJson& v2, const std::string& p2) { r.boolean(v2, p2, tag.ett); }},
+                          {"simulation_allowed", false,
+                           [&](const InJson& v2, const std::string& p2) { r.boolean(v2, p2, tag.simulation_allowed); }},
                       });
                       return named;
                     });
@@ -488,18 +495,120 @@ Intersection read_intersection(Reader& r, const InJson& j, const std::string& pa
   return x;
 }
 
+// A list of texts (warnings, defaults, limitations): one line each.
+void read_texts(Reader& r, const InJson& j, const std::string& path, std::vector<std::string>& out) {
+  read_array(r, j, path, out, kMaxRecordEntries, "the entries of a provenance list",
+             [&](const InJson& v, const std::string& p, std::string& t) { return r.text(v, p, t); });
+}
+
+// `tag_descriptions`: [{"tag": NAME, "description": TEXT}], one entry per tag
+// (names compare case-insensitively, 6.1.4).
+void read_tag_descriptions(Reader& r, const InJson& j, const std::string& path, Matrix& m) {
+  struct Entry {
+    std::string tag, description;
+  };
+  std::vector<Entry> entries;
+  read_array(r, j, path, entries, kMaxRecordEntries, "the tag descriptions of a matrix",
+             [&](const InJson& v, const std::string& p, Entry& e) {
+               bool named = false;
+               r.object(v, p, {
+                   {"tag", true, [&](const InJson& v2, const std::string& p2) { named = r.tag(v2, p2, e.tag); }},
+                   {"description", true,
+                    [&](const InJson& v2, const std::string& p2) { read_description(r, v2, p2, e.description); }},
+               });
+               return named;
+             });
+  std::map<std::string, std::string> by_key;
+  for (std::size_t i = 0; i < entries.size(); ++i) {
+    auto [it, fresh] = by_key.emplace(tag_key(entries[i].tag), entries[i].tag);
+    if (!fresh) {
+      r.error(element_path(path, i), "tag " + in_quotes(entries[i].tag) + " is described twice (also as " +
+                                         in_quotes(it->second) + "; tag names compare case-insensitively, 6.1.4)");
+      continue;
+    }
+    m.tag_descriptions[entries[i].tag] = entries[i].description;
+  }
+}
+
+void read_provenance(Reader& r, const InJson& j, const std::string& path, Provenance& out) {
+  auto str = [&](std::string& field) {
+    return [&r, &field](const InJson& v, const std::string& p) { r.text(v, p, field); };
+  };
+  r.object(j, path, {
+      {"imports", false,
+       [&](const InJson& v, const std::string& p) {
+         read_array(r, v, p, out.imports, kMaxRecordEntries, "the import records of a matrix",
+                    [&](const InJson& e, const std::string& ep, ImportRecord& rec) {
+                      return r.object(e, ep, {
+                          {"file", true, str(rec.file)},
+                          {"sha256", false, str(rec.sha256)},
+                          {"reader", false, str(rec.reader)},
+                          {"encoding", false, str(rec.encoding)},
+                          {"summary", false, str(rec.summary)},
+                          {"warnings", false,
+                           [&](const InJson& v2, const std::string& p2) { read_texts(r, v2, p2, rec.warnings); }},
+                          {"defaults", false,
+                           [&](const InJson& v2, const std::string& p2) { read_texts(r, v2, p2, rec.defaults); }},
+                      });
+                    });
+       }},
+      {"parameters", false,
+       [&](const InJson& v, const std::string& p) {
+         read_array(r, v, p, out.parameters, kMaxRecordEntries, "the parameter records of a matrix",
+                    [&](const InJson& e, const std::string& ep, ParameterRecord& rec) {
+                      return r.object(e, ep, {
+                          {"file", true, str(rec.file)},
+                          {"sha256", false, str(rec.sha256)},
+                          {"origin", false, str(rec.origin)},
+                          {"values", false,
+                           [&](const InJson& v2, const std::string& p2) {
+                             read_array(r, v2, p2, rec.values, kMaxRecordEntries, "the values of a parameters file",
+                                        [&](const InJson& x, const std::string& xp, ParameterValue& pv) {
+                                          return r.object(x, xp, {
+                                              {"element", true, str(pv.element)},
+                                              {"field", true, str(pv.field)},
+                                              {"value", true, str(pv.value)},
+                                              {"previous", false, str(pv.previous)},
+                                              {"origin", false, str(pv.origin)},
+                                          });
+                                        });
+                           }},
+                          {"footnotes", false,
+                           [&](const InJson& v2, const std::string& p2) {
+                             read_array(r, v2, p2, rec.footnotes, kMaxRecordEntries, "the footnotes of a sheet",
+                                        [&](const InJson& x, const std::string& xp, FootnoteRecord& f) {
+                                          return r.object(x, xp, {
+                                              {"mark", true, str(f.mark)},
+                                              {"text", false, str(f.text)},
+                                              {"modelled", false, str(f.modelled)},
+                                              {"not_modelled", false, str(f.not_modelled)},
+                                          });
+                                        });
+                           }},
+                          {"limitations", false,
+                           [&](const InJson& v2, const std::string& p2) { read_texts(r, v2, p2, rec.limitations); }},
+                      });
+                    });
+       }},
+  });
+}
+
 void read_matrix(Reader& r, const InJson& root, Matrix& m) {
   if (!root.is_object()) {
     r.error("", "the top level must be a JSON object (a cemv-matrix/1 document), got " + Reader::describe(root));
     return;
   }
-  // A different format would drown the real problem in unknown keys.
+  // A different format would drown the real problem in unknown keys, and a
+  // file that is no matrix at all (a path in a scenario may name any file)
+  // gets no word of its content quoted: only a cemv format's name is.
   if (!root.contains("format")) {
     r.error("format", "required key is missing (expected '" + std::string(kMatrixFormat) + "')");
+    if (!root.contains("causes") && !root.contains("effects")) return;
   } else {
     const auto& f = root["format"];
     if (!f.is_string() || f.get_ref<const std::string&>() != kMatrixFormat) {
-      r.error("format", (f.is_string() ? in_quotes(f.get_ref<const std::string&>()) : Reader::describe(f)) +
+      const bool ours = f.is_string() && f.get_ref<const std::string&>().rfind("cemv-", 0) == 0;
+      r.error("format", (ours ? in_quotes(f.get_ref<const std::string&>()) : f.is_string() ? std::string("the value") : Reader::describe(f)) +
                             " is not a supported format; expected '" + kMatrixFormat + "'");
       return;
     }
@@ -588,6 +697,12 @@ void read_matrix(Reader& r, const InJson& root, Matrix& m) {
                       x = read_effect(r, e, ep, ok);
                       return ok;
                     });
+       }},
+      {"tag_descriptions", false,
+       [&](const InJson& v, const std::string& p) { read_tag_descriptions(r, v, p, m); }},
+      {"provenance", false,
+       [&](const InJson& v, const std::string& p) {
+         if (!v.is_null()) read_provenance(r, v, p, m.provenance);
        }},
       {"intersections", false,
        [&](const InJson& v, const std::string& p) {
@@ -785,6 +900,7 @@ void write_cause(CanonicalWriter& w, const Cause& c) {
     w.item().begin_object();
     w.key("ett").value(t.ett);
     w.key("name").value(t.name);
+    if (!t.simulation_allowed) w.key("simulation_allowed").value(false);  // only when restricted: old signatures stay
     w.key("soft_bypass_allowed").value(t.soft_bypass_allowed);
     w.end_object();
   }
@@ -836,6 +952,7 @@ void write_effect(CanonicalWriter& w, const Effect& e) {
     w.item().begin_object();
     w.key("ett").value(t.ett);
     w.key("name").value(t.name);
+    if (!t.simulation_allowed) w.key("simulation_allowed").value(false);
     w.end_object();
   }
   w.end_array();
@@ -849,6 +966,64 @@ void write_intersection(CanonicalWriter& w, const Intersection& x) {
   w.key("note").value(x.note);
   w.key("type").value(to_string(x.type));
   w.key("xoon").value(x.xoon);
+  w.end_object();
+}
+
+void write_texts(CanonicalWriter& w, const std::vector<std::string>& texts) {
+  w.begin_array();
+  for (const auto& t : texts) w.item().value(t);
+  w.end_array();
+}
+
+void write_provenance(CanonicalWriter& w, const Provenance& p) {
+  w.key("provenance").begin_object();
+  w.key("imports").begin_array();
+  for (const auto& rec : p.imports) {
+    w.item().begin_object();
+    w.key("defaults");
+    write_texts(w, rec.defaults);
+    w.key("encoding").value(rec.encoding);
+    w.key("file").value(rec.file);
+    w.key("reader").value(rec.reader);
+    w.key("sha256").value(rec.sha256);
+    w.key("summary").value(rec.summary);
+    w.key("warnings");
+    write_texts(w, rec.warnings);
+    w.end_object();
+  }
+  w.end_array();
+  w.key("parameters").begin_array();
+  for (const auto& rec : p.parameters) {
+    w.item().begin_object();
+    w.key("file").value(rec.file);
+    w.key("footnotes").begin_array();
+    for (const auto& f : rec.footnotes) {
+      w.item().begin_object();
+      w.key("mark").value(f.mark);
+      w.key("modelled").value(f.modelled);
+      w.key("not_modelled").value(f.not_modelled);
+      w.key("text").value(f.text);
+      w.end_object();
+    }
+    w.end_array();
+    w.key("limitations");
+    write_texts(w, rec.limitations);
+    w.key("origin").value(rec.origin);
+    w.key("sha256").value(rec.sha256);
+    w.key("values").begin_array();
+    for (const auto& v : rec.values) {
+      w.item().begin_object();
+      w.key("element").value(v.element);
+      w.key("field").value(v.field);
+      w.key("origin").value(v.origin);
+      w.key("previous").value(v.previous);
+      w.key("value").value(v.value);
+      w.end_object();
+    }
+    w.end_array();
+    w.end_object();
+  }
+  w.end_array();
   w.end_object();
 }
 
@@ -891,6 +1066,7 @@ std::string canonical_text(const Matrix& m) {
     write_intersection(w.item(), *x);
   w.end_array();
   w.key("name").value(m.name);
+  if (!m.provenance.empty()) write_provenance(w, m.provenance);  // only when recorded: old signatures stay
   w.key("secure_write");
   if (m.secure_write) {
     w.begin_object();
@@ -920,6 +1096,20 @@ std::string canonical_text(const Matrix& m) {
     w.end_object();
   }
   w.end_object();
+  if (!m.tag_descriptions.empty()) {
+    // By tag key (case-insensitive), so the order does not depend on spelling.
+    std::vector<std::pair<std::string, const std::string*>> tags;
+    for (const auto& [tag, text] : m.tag_descriptions) tags.emplace_back(tag_key(tag), &tag);
+    std::sort(tags.begin(), tags.end());
+    w.key("tag_descriptions").begin_array();
+    for (const auto& [key, tag] : tags) {
+      w.item().begin_object();
+      w.key("description").value(m.tag_descriptions.at(*tag));
+      w.key("tag").value(*tag);
+      w.end_object();
+    }
+    w.end_array();
+  }
   w.key("title").value(m.title);
   // Optional timing keys (docs/response-time.md) only when declared, for the
   // same reason.
@@ -929,6 +1119,32 @@ std::string canonical_text(const Matrix& m) {
 }
 
 }  // namespace
+
+// A text that is not JSON and does not even start like a JSON object: one
+// issue that names none of its bytes (it may be any file a path in an input
+// names), with the command that reads it when it is a spreadsheet.
+static std::optional<LoadIssue> not_a_json_object(std::string_view text, const std::string& source_name) {
+  const std::size_t first = text.find_first_not_of(" \t\r\n");
+  if (first != std::string_view::npos && text[first] == '{') return std::nullopt;
+  auto ends_with = [&](std::string_view suffix) {
+    if (source_name.size() < suffix.size()) return false;
+    for (std::size_t i = 0; i < suffix.size(); ++i)
+      if (std::tolower(static_cast<unsigned char>(source_name[source_name.size() - suffix.size() + i])) != suffix[i])
+        return false;
+    return true;
+  };
+  const std::string_view first_line = text.substr(0, text.find('\n'));
+  std::string what = "syntax error: not a JSON object (a cemv-matrix/1 file is one, docs/format.md)";
+  if (text.substr(0, 4) == std::string_view("PK\x03\x04", 4) || ends_with(".ods") || ends_with(".xlsx"))
+    what = "not a cemv-matrix/1 file but a zip archive, as ODS and XLSX workbooks are: convert a workbook with "
+           "`cemv import-workbook FILE -o matrix.json` (docs/workbook.md)";
+  else if (ends_with(".csv") || ends_with(".tsv") || first_line.find_first_of(",;\t") != std::string_view::npos)
+    what = "not a cemv-matrix/1 file but a table (CSV): convert it with `cemv import-csv FILE -o matrix.json` "
+           "(docs/csv.md)";
+  const auto [line, column] = line_and_column(text, first == std::string_view::npos ? 0 : first);
+  return LoadIssue{"line " + std::to_string(line) + ", column " + std::to_string(column), what, source_name, line,
+                   column};
+}
 
 // ---- Public API ---------------------------------------------------------------------
 
@@ -942,7 +1158,16 @@ Matrix parse_matrix(std::string_view json_text, const std::string& source_name) 
   if (json_text.find_first_not_of(" \t\r\n") == std::string_view::npos)
     throw LoadError({{source_name, "file is empty (expected a cemv-matrix/1 JSON object)", source_name}});
   std::optional<InJson> parsed = parse_guarded_json(json_text, source_name, issues);
-  if (!parsed) throw LoadError(std::move(issues));
+  if (!parsed) {
+    // The parser's syntax messages quote what it last read: not for a text
+    // that does not even start like a matrix. (Its limits quote nothing.)
+    const bool quoting = std::any_of(issues.begin(), issues.end(), [](const LoadIssue& i) {
+      return i.what.find("syntax error") != std::string::npos || i.what.find("invalid UTF-8") != std::string::npos;
+    });
+    if (quoting)
+      if (auto issue = not_a_json_object(json_text, source_name)) throw LoadError({*issue});
+    throw LoadError(std::move(issues));
+  }
   const InJson& root = *parsed;
 
   Matrix m;
@@ -992,8 +1217,9 @@ void save_matrix(const Matrix& m, const std::filesystem::path& file) {
   if (!out) throw std::runtime_error(file.string() + ": write failed");
 }
 
-std::string signature(const Matrix& m) {
-  std::string text = to_canonical_json(m);
+std::string signature(const Matrix& m) { return sha256_hex(to_canonical_json(m)); }
+
+std::string sha256_hex(std::string_view text) {
   unsigned char digest[EVP_MAX_MD_SIZE];
   unsigned int length = 0;
   if (EVP_Digest(text.data(), text.size(), digest, &length, EVP_sha256(), nullptr) != 1)

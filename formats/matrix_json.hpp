@@ -46,4 +46,7 @@ void save_matrix(const model::Matrix& m, const std::filesystem::path& file);
 // matrix version.
 std::string signature(const model::Matrix& m);
 
+// SHA-256 of any bytes (a source sheet, a parameters or property file), lowercase hex.
+std::string sha256_hex(std::string_view bytes);
+
 }  // namespace cemv::formats

@@ -833,6 +833,33 @@ std::optional<std::filesystem::path> scenario_matrix_path(const std::filesystem:
   return scenario_file.parent_path() / *key;
 }
 
+std::filesystem::path resolve_inner_path(const std::string& path, const std::filesystem::path& base,
+                                         const std::filesystem::path& root, bool trust,
+                                         std::string_view source_text, const std::string& source_name,
+                                         const std::string& key_name) {
+  namespace fs = std::filesystem;
+  const fs::path written(path);
+  const fs::path resolved = written.is_absolute() ? written : base / written;
+  if (trust) return resolved;
+  auto refuse = [&](const std::string& why) {
+    std::vector<LoadIssue> issues{{key_name, why + "; a path inside an input file must lead to a file inside " +
+                                                 "the working folder (give the file on the command line, or " +
+                                                 "--trust-paths to follow it)"}};
+    locate_issues(source_text, source_name, issues);
+    throw LoadError(std::move(issues));
+  };
+  if (written.is_absolute()) refuse("is an absolute path");
+  // Symbolic links followed: a link inside the folder to a file outside it
+  // leads outside it.
+  std::error_code ec;
+  const fs::path target = fs::weakly_canonical(fs::absolute(resolved, ec), ec);
+  const fs::path top = fs::weakly_canonical(fs::absolute(root, ec), ec);
+  if (ec) refuse("cannot be resolved");
+  if (std::mismatch(top.begin(), top.end(), target.begin(), target.end()).first != top.end())
+    refuse("leads outside the working folder");
+  return resolved;
+}
+
 ExpandedScenario expand_scenario(const Scenario& sc, const Matrix& m) {
   ExpandedScenario out;
   CycleInput current = default_cycle_input(m);

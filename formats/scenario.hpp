@@ -93,6 +93,17 @@ std::optional<std::filesystem::path> scenario_matrix_path(const std::filesystem:
 // resolved), for a scenario read from standard input.
 std::optional<std::string> scenario_matrix_key(std::string_view json_text, const std::string& source_name);
 
+// A path written inside an input file (the `matrix` key) is untrusted: a
+// pull request's scenario may name any file. It is resolved against the
+// folder of the file that holds it (`base`) and must lead to a file inside
+// `root` (the working folder), symbolic links followed; an absolute path, or
+// one that leaves `root`, is refused with a LoadError placed at `key_name`
+// in `source_text` (exit 2), unless `trust` (cemv simulate --trust-paths).
+std::filesystem::path resolve_inner_path(const std::string& path, const std::filesystem::path& base,
+                                         const std::filesystem::path& root, bool trust,
+                                         std::string_view source_text, const std::string& source_name,
+                                         const std::string& key_name);
+
 // A scenario unrolled into scan cycles.
 struct ExpandedScenario {
   struct Check {

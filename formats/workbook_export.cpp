@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <set>
 
+#include "formats/matrix_extras.hpp"
 #include "formats/workbook_tables.hpp"
 #include "formats/workbook_tags.hpp"
 #include "model/text.hpp"
@@ -78,7 +79,7 @@ void header_row(Sheet& s, const std::vector<std::string>& headers) {
 }
 
 Sheet properties(const Matrix& m) {
-  Sheet s{kPropertiesSheet, {}, {{1, 32}, {2, 40}, {3, 24}, {4, 60}}};
+  Sheet s{kPropertiesSheet, {}, {{1, 32}, {2, 40}, {3, 24}, {4, 60}}, {}, false};
   for (const char* h : {"Property", "Value", "Process safety time (ms)", "Meaning"}) s.put(1, s.cells.size() + 1, h, true);
   std::size_t r = 2;
   auto row = [&](const std::string& key, std::string value, CellKind kind, const char* meaning) {
@@ -106,13 +107,21 @@ Sheet properties(const Matrix& m) {
     s.put(r, 4, "name of SIF group (3.4, 6.2.1) and its process safety time, ms (HIMatrix 3.2.1)", true);
     ++r;
   }
+  // Tag descriptions, simulation permissions and provenance records, as the
+  // record layout carries them (formats/matrix_extras.hpp).
+  for (const auto& x : extra_properties(m)) {
+    s.put(r, 1, x.key);
+    s.put(r, 2, x.value);
+    s.put(r, 4, "cemv-matrix/1 field kept as a property row (docs/workbook.md)", true);
+    ++r;
+  }
   // A process safety time of a group that has no name entry cannot occur:
   // the JSON form keeps both in one sif_groups entry.
   return s;
 }
 
 Sheet causes(const Matrix& m) {
-  Sheet s{kCausesSheet, {}, {}};
+  Sheet s{kCausesSheet, {}, {}, {}, false};
   std::vector<std::string> h = cause_headers();
   h.push_back(kOptionsHeader);
   header_row(s, h);
@@ -161,7 +170,7 @@ Sheet causes(const Matrix& m) {
 }
 
 Sheet effects(const Matrix& m) {
-  Sheet s{kEffectsSheet, {}, {}};
+  Sheet s{kEffectsSheet, {}, {}, {}, false};
   std::vector<std::string> h = effect_headers();
   h.push_back(kOptionsHeader);
   header_row(s, h);
@@ -214,7 +223,7 @@ std::string mark_text(const Matrix& m, const model::Intersection& x) {
 }
 
 Sheet overview(const Matrix& m) {
-  Sheet s{kOverviewSheet, {}, {{1, 10}, {2, 24}}};
+  Sheet s{kOverviewSheet, {}, {{1, 10}, {2, 24}}, {}, false};
   s.put(1, 2, "Effect", true);
   s.put(2, 1, "Cause No.", true);
   s.put(2, 2, "Cause  \\  Effect No.", true);
@@ -249,7 +258,7 @@ Sheet overview(const Matrix& m) {
 }
 
 Sheet info_sheet(const char* name, const std::vector<std::vector<std::string>>& rows) {
-  Sheet s{name, {}, {{1, 28}, {2, 80}}};
+  Sheet s{name, {}, {{1, 28}, {2, 80}}, {}, false};
   for (std::size_t r = 0; r < rows.size(); ++r)
     for (std::size_t c = 0; c < rows[r].size(); ++c) s.put(r + 1, c + 1, rows[r][c], true);
   return s;

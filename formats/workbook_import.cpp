@@ -8,6 +8,7 @@
 #include <cctype>
 #include <set>
 
+#include "formats/matrix_extras.hpp"
 #include "formats/matrix_json.hpp"
 #include "formats/workbook_cells.hpp"
 #include "formats/workbook_overview.hpp"
@@ -64,6 +65,8 @@ class TablesReader {
     m_.intersections = read_overview(*overview, cause_ids, effect_ids, r_);
     if (!r_.errors().empty()) throw LoadError(r_.errors());
     sort_and_rename();
+    for (const auto& [i, why] : apply_extra_properties(m_, extras_)) r_.error(*props, extra_rows_[i], 2, "", why);
+    if (!r_.errors().empty()) throw LoadError(r_.errors());
     TablesImport out;
     try {
       out.matrix = parse_matrix(to_canonical_json(m_), r_.file());
@@ -128,6 +131,11 @@ class TablesReader {
       }
       if (pst_cell) r_.error(s, row, 3, "", "a process safety time belongs to a SIF group row only");
       auto known = std::find_if(labels.begin(), labels.end(), [&](const std::string& l) { return lower(l) == lower(label); });
+      if (known == labels.end() && is_extra_property(label)) {  // formats/matrix_extras.hpp
+        extras_.push_back({label, value});
+        extra_rows_.push_back(row);
+        continue;
+      }
       if (known == labels.end()) {
         r_.error(s, row, 1, "", "unknown property " + model::in_quotes(label) + model::did_you_mean(label, labels) +
                                     " (or 'SIF group N', N = 1-64)");
@@ -322,6 +330,8 @@ class TablesReader {
     r_.rename(renames);
   }
 
+  std::vector<ExtraProperty> extras_;       // tag descriptions, simulation, provenance rows
+  std::vector<std::size_t> extra_rows_;
   const Workbook& wb_;
   CellReader r_;
   Matrix m_;

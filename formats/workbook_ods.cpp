@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "formats/workbook_files.hpp"
+#include "formats/workbook_styles.hpp"
 
 namespace cemv::formats::workbook {
 
@@ -39,12 +40,15 @@ class OdsReader {
     if (!content) fail_entry(zip_, "content.xml", "missing; not an OpenDocument spreadsheet");
     pugi::xml_document doc;
     parse_xml(doc, *content, "content.xml", zip_);
-    pugi::xml_node spreadsheet =
-        doc.child("office:document-content").child("office:body").child("office:spreadsheet");
+    pugi::xml_node root = doc.child("office:document-content");
+    pugi::xml_node spreadsheet = root.child("office:body").child("office:spreadsheet");
     if (!spreadsheet) fail_entry(zip_, "content.xml", "no office:spreadsheet; not a spreadsheet document");
+    read_styles(root);
     Workbook wb;
     for (pugi::xml_node table : spreadsheet.children("table:table")) {
       Sheet& sheet = budget_.begin_sheet(wb, table.attribute("table:name").value());
+      sheet.hidden = styles_.table_hidden(table.attribute("table:style-name").value());
+      read_column_styles(table);
       std::size_t row = 1;
       read_rows(table, sheet, row, 0);
     }
@@ -52,6 +56,43 @@ class OdsReader {
   }
 
  private:
+  // The common styles of styles.xml (a cell style may be one, or derive from
+  // one), then the automatic styles of content.xml.
+  void read_styles(const pugi::xml_node& content_root) {
+    if (auto text = zip_.read("styles.xml")) {
+      pugi::xml_document styles;
+      parse_xml(styles, *text, "styles.xml", zip_);
+      styles_.read(styles.child("office:document-styles").child("office:styles"));
+    }
+    styles_.read(content_root.child("office:automatic-styles"));
+  }
+
+  // The default cell style of each column (a cell without a style of its own,
+  // in a row without a default, has its column's): runs of (first column, style).
+  void read_column_styles(const pugi::xml_node& table) {
+    column_styles_.clear();
+    std::size_t column = 1;
+    read_columns(table, column, 0);
+  }
+  void read_columns(const pugi::xml_node& parent, std::size_t& column, int depth) {
+    for (pugi::xml_node n : parent.children()) {
+      std::string_view name = n.name();
+      if (name == "table:table-column") {
+        column_styles_.push_back({column, n.attribute("table:default-cell-style-name").value()});
+        column = std::min(column + repeat_of(n, "table:number-columns-repeated", kMaxColumnNumber),
+                          kMaxColumnNumber + 1);
+      } else if ((name == "table:table-column-group" || name == "table:table-columns" ||
+                  name == "table:table-header-columns") && depth < kMaxTextDepth) {
+        read_columns(n, column, depth + 1);
+      }
+    }
+  }
+  std::string_view column_style(std::size_t column) const {
+    auto it = std::upper_bound(column_styles_.begin(), column_styles_.end(), column,
+                               [](std::size_t c, const auto& run) { return c < run.first; });
+    return it == column_styles_.begin() ? std::string_view() : std::string_view((it - 1)->second);
+  }
+
   // Rows directly in the table or in its groups (header rows, row groups).
   void read_rows(const pugi::xml_node& parent, Sheet& sheet, std::size_t& row, int depth) {
     for (pugi::xml_node n : parent.children()) {
@@ -68,24 +109,35 @@ class OdsReader {
     }
   }
 
+  // A cell as read once, before its row and column repeats.
+  struct Value {
+    std::string text;
+    CellKind kind = CellKind::Text;
+    Strike strike = Strike::None;
+    std::size_t rows = 1, columns = 1;  // merged over (number-rows/columns-spanned)
+  };
+
   void read_row(const pugi::xml_node& row_node, Sheet& sheet, std::size_t row, std::size_t repeat) {
     // Cells of the row once, then the row as often as it repeats: an empty
     // row repeated a million times (LibreOffice writes those) costs nothing.
-    // (column, index into texts): a text repeated over many columns is held once.
-    std::vector<std::pair<std::string, CellKind>> texts;
+    // (column, index into values): a text repeated over many columns is held once.
+    std::vector<Value> values;
     std::vector<std::pair<std::size_t, std::size_t>> cells;
     std::size_t column = 1;
+    const std::string_view row_style = row_node.attribute("table:default-cell-style-name").value();
     for (pugi::xml_node c : row_node.children()) {
       std::string_view name = c.name();
       if (name != "table:table-cell" && name != "table:covered-table-cell") continue;
       std::size_t n = repeat_of(c, "table:number-columns-repeated", kMaxColumnNumber);
       if (name == "table:table-cell") {
-        auto value = value_of(c, sheet, row, column);
-        if (!value.first.empty()) {
-          texts.push_back(std::move(value));
+        std::string_view style = c.attribute("table:style-name").value();
+        if (style.empty()) style = row_style.empty() ? column_style(column) : row_style;
+        Value value = value_of(c, sheet, row, column, styles_.cell_struck(style));
+        if (!value.text.empty()) {
+          values.push_back(std::move(value));
           for (std::size_t k = 0; k < n; ++k) {
             budget_.check_position(sheet, row, column + k);
-            cells.push_back({column + k, texts.size() - 1});
+            cells.push_back({column + k, values.size() - 1});
           }
         }
       }
@@ -93,41 +145,69 @@ class OdsReader {
     }
     if (cells.empty()) return;
     for (std::size_t r = 0; r < repeat; ++r)
-      for (const auto& [col, t] : cells) budget_.add(sheet, row + r, col, texts[t].first, texts[t].second);
+      for (const auto& [col, t] : cells) {
+        const Value& v = values[t];
+        budget_.add(sheet, row + r, col, v.text, v.kind, v.strike);
+        if (v.rows > 1 || v.columns > 1)
+          sheet.merges.push_back(budget_.merge(sheet, row + r, col, row + r + v.rows - 1, col + v.columns - 1));
+      }
   }
 
-  std::pair<std::string, CellKind> value_of(const pugi::xml_node& c, const Sheet& sheet, std::size_t row,
-                                            std::size_t column) {
+  Value value_of(const pugi::xml_node& c, const Sheet& sheet, std::size_t row, std::size_t column, bool struck) {
+    Value value;
+    value.rows = repeat_of(c, "table:number-rows-spanned", kMaxRowNumber);
+    value.columns = repeat_of(c, "table:number-columns-spanned", kMaxColumnNumber);
+    value.strike = struck ? Strike::Whole : Strike::None;
     std::string_view type = c.attribute("office:value-type").value();
     if (type == "float" || type == "percentage" || type == "currency") {
       const char* v = c.attribute("office:value").value();
       double d = 0;
       auto [end, ec] = std::from_chars(v, v + std::strlen(v), d);
-      if (ec == std::errc() && *end == '\0') return {number_text(d), CellKind::Number};
+      if (ec == std::errc() && *end == '\0') {
+        value.text = number_text(d);
+        value.kind = CellKind::Number;
+        return value;
+      }
     }
     if (type == "boolean") {
       std::string_view v = c.attribute("office:boolean-value").value();
-      return {v == "true" ? "true" : "false", CellKind::Boolean};
+      value.text = v == "true" ? "true" : "false";
+      value.kind = CellKind::Boolean;
+      return value;
     }
-    std::string text;
     bool first = true;
+    Paragraph para{value.text, true, sheet, row, column};
     for (pugi::xml_node p : c.children("text:p")) {
-      if (!first) text += '\n';
+      if (!first) value.text += '\n';
       first = false;
-      bool blank = true;  // at the start of a paragraph: leading blanks are ignored
-      paragraph(p, text, blank, sheet, row, column, 0);
+      para.blank = true;  // at the start of a paragraph: leading blanks are ignored
+      paragraph(p, para, struck, 0);
     }
-    return {text, CellKind::Text};
+    // Struck text runs (spans) over all of the text strike the cell through.
+    if (!struck && para.struck_chars > 0)
+      value.strike = para.plain_chars == 0 ? Strike::Whole : Strike::Part;
+    return value;
   }
+
+  // What paragraph() reads into: the text, and how many visible characters
+  // of it are struck through and how many not.
+  struct Paragraph {
+    std::string& out;
+    bool blank;
+    const Sheet& sheet;
+    std::size_t row, column;
+    std::size_t struck_chars = 0, plain_chars = 0;
+  };
 
   // ODF 1.2 part 1, 6.1.2 "White Space Characters": in character data, a run
   // of blanks, tabs and line ends is one blank, ignored at the start of the
   // paragraph; text:s stands for c literal blanks, text:tab and
   // text:line-break for a tab and a line end.
-  void paragraph(const pugi::xml_node& node, std::string& out, bool& blank, const Sheet& sheet, std::size_t row,
-                 std::size_t column, int depth) {
+  void paragraph(const pugi::xml_node& node, Paragraph& p, bool struck, int depth) {
     if (depth > kMaxTextDepth)
-      budget_.fail(&sheet, row, column, "text spans nested deeper than " + std::to_string(kMaxTextDepth));
+      budget_.fail(&p.sheet, p.row, p.column, "text spans nested deeper than " + std::to_string(kMaxTextDepth));
+    std::string& out = p.out;
+    bool& blank = p.blank;
     for (pugi::xml_node n : node.children()) {
       if (n.type() == pugi::node_pcdata || n.type() == pugi::node_cdata) {
         for (const char* s = n.value(); *s; ++s) {
@@ -138,6 +218,7 @@ class OdsReader {
           } else {
             out += *s;
             blank = false;
+            ++(struck ? p.struck_chars : p.plain_chars);
           }
         }
       } else if (n.type() == pugi::node_element) {
@@ -153,17 +234,20 @@ class OdsReader {
           out += '\n';
           blank = false;
         } else if (name != "office:annotation") {
-          paragraph(n, out, blank, sheet, row, column, depth + 1);
+          const bool span_struck = struck || styles_.text_struck(n.attribute("text:style-name").value());
+          paragraph(n, p, span_struck, depth + 1);
         }
       }
       if (out.size() > kMaxCellBytes)
-        budget_.fail(&sheet, row, column, "the cell holds more than the limit of " + std::to_string(kMaxCellBytes) +
-                                              " bytes of text");
+        budget_.fail(&p.sheet, p.row, p.column, "the cell holds more than the limit of " +
+                                                    std::to_string(kMaxCellBytes) + " bytes of text");
     }
   }
 
   ZipReader& zip_;
   CellBudget& budget_;
+  OdsStyles styles_;
+  std::vector<std::pair<std::size_t, std::string>> column_styles_;  // of the current table
 };
 
 // Writes a text as ODF character data: blanks that a reader would collapse or

@@ -74,7 +74,7 @@ Sheet& CellBudget::begin_sheet(Workbook& wb, std::string name) {
   if (wb.sheets.size() >= kMaxSheets)
     fail(nullptr, 0, 0, "more than " + std::to_string(kMaxSheets) + " sheets; a matrix workbook has 6");
   if (name.size() > 256) name.resize(256);
-  wb.sheets.push_back({std::move(name), {}, {}});
+  wb.sheets.push_back({std::move(name), {}, {}, {}, false});
   rows_in_sheet_ = 0;
   last_row_ = 0;
   return wb.sheets.back();
@@ -87,7 +87,19 @@ void CellBudget::check_position(const Sheet& sheet, std::size_t row, std::size_t
     fail(&sheet, row, 0, "column number " + std::to_string(column) + " is outside 1-" + std::to_string(kMaxColumnNumber));
 }
 
-void CellBudget::add(Sheet& sheet, std::size_t row, std::size_t column, std::string_view text, CellKind kind) {
+CellRange CellBudget::merge(const Sheet& sheet, std::size_t first_row, std::size_t first_column, std::size_t last_row,
+                            std::size_t last_column) const {
+  check_position(sheet, first_row, first_column);
+  check_position(sheet, last_row, last_column);
+  if (last_row < first_row || last_column < first_column)
+    fail(&sheet, first_row, first_column,
+         "the merged range " + cell_address(first_row, first_column) + ":" + cell_address(last_row, last_column) +
+             " ends before it starts");
+  return {first_row, first_column, last_row, last_column};
+}
+
+void CellBudget::add(Sheet& sheet, std::size_t row, std::size_t column, std::string_view text, CellKind kind,
+                     Strike strike) {
   if (text.empty()) return;
   check_position(sheet, row, column);
   if (text.size() > kMaxCellBytes)
@@ -104,7 +116,7 @@ void CellBudget::add(Sheet& sheet, std::size_t row, std::size_t column, std::str
   if ((text_bytes_ += text.size()) > kMaxTextBytes)
     fail(&sheet, row, column, "the cells hold more than " + std::to_string(kMaxTextBytes >> 20) +
                                   " MiB of text in all; not a matrix workbook");
-  sheet.cells.push_back({row, column, std::string(text), kind, false});
+  sheet.cells.push_back({row, column, std::string(text), kind, false, strike});
 }
 
 void CellBudget::fail(const Sheet* sheet, std::size_t row, std::size_t column, std::string what) const {

@@ -38,12 +38,23 @@ inline constexpr std::size_t kMaxColumnNumber = 1u << 14;
 // decimal form, a boolean as true/false).
 enum class CellKind { Text, Number, Boolean };
 
+// Whether a cell's text is struck through (how vendor workbooks keep a deleted
+// row for the revision record): the whole text (by the cell's style, or every
+// run of it), or only a part of it (some runs).
+enum class Strike { None, Part, Whole };  // ordered: a struck format over struck runs is Whole
+
 struct Cell {
   std::size_t row = 0;     // 1-based
   std::size_t column = 0;  // 1-based (A = 1)
   std::string text;
   CellKind kind = CellKind::Text;
   bool grey = false;       // information only (6.6.2)
+  Strike strike = Strike::None;
+};
+
+// A merged range of cells, 1-based and inclusive; its text is the first cell's.
+struct CellRange {
+  std::size_t first_row = 0, first_column = 0, last_row = 0, last_column = 0;
 };
 
 struct Sheet {
@@ -51,6 +62,10 @@ struct Sheet {
   std::vector<Cell> cells;  // row-major order, no empty texts
   // For writing: column widths in characters, by 1-based column (optional).
   std::map<std::size_t, double> widths;
+  // Merged ranges whose first cell holds text (a merge of empty cells is only
+  // formatting), in the order of the file.
+  std::vector<CellRange> merges;
+  bool hidden = false;      // hidden in the spreadsheet program (a hidden tab)
 
   // The cell at (row, column), or nullptr.
   const Cell* find(std::size_t row, std::size_t column) const;
@@ -86,7 +101,12 @@ class CellBudget {
   Sheet& begin_sheet(Workbook& wb, std::string name);
   // Adds a non-empty cell to the current sheet (an empty text adds nothing),
   // row-major order; refuses a text longer than kMaxCellBytes before copying it.
-  void add(Sheet& sheet, std::size_t row, std::size_t column, std::string_view text, CellKind kind);
+  void add(Sheet& sheet, std::size_t row, std::size_t column, std::string_view text, CellKind kind,
+           Strike strike = Strike::None);
+  // Records a merged range (refuses one outside the row and column maxima, or
+  // reversed); kept by the caller only when its first cell holds text.
+  CellRange merge(const Sheet& sheet, std::size_t first_row, std::size_t first_column, std::size_t last_row,
+                  std::size_t last_column) const;
   // Refuses a row or column number beyond the maxima (one of a repeated run).
   void check_position(const Sheet& sheet, std::size_t row, std::size_t column) const;
   [[noreturn]] void fail(const Sheet* sheet, std::size_t row, std::size_t column, std::string what) const;

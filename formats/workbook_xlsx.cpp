@@ -2,11 +2,13 @@
 // package relationships lead from `_rels/.rels` to the workbook, from the
 // workbook to its sheets and shared strings; each sheet's sheetData holds rows
 // of cells typed by their `t` attribute.
+#include <algorithm>
 #include <charconv>
 #include <cstring>
 #include <map>
 
 #include "formats/workbook_files.hpp"
+#include "formats/workbook_styles.hpp"
 
 namespace cemv::formats::workbook {
 
@@ -22,11 +24,7 @@ bool ends_with(std::string_view s, std::string_view suffix) {
 
 // An element name without its namespace prefix: Excel writes `<sheet>`, other
 // writers `<x:sheet>`; both are the same element of the main namespace.
-std::string_view local(const pugi::xml_node& n) {
-  std::string_view name = n.name();
-  auto colon = name.find(':');
-  return colon == std::string_view::npos ? name : name.substr(colon + 1);
-}
+std::string_view local(const pugi::xml_node& n) { return local_name(n); }
 
 pugi::xml_node child(const pugi::xml_node& parent, std::string_view name) {
   for (pugi::xml_node n : parent.children())
@@ -92,14 +90,18 @@ class XlsxReader {
     if (!sheets) fail_entry(zip_, workbook_part, "no <sheets>; not a spreadsheet workbook");
     const std::string rels_part = folder_of(workbook_part) + "_rels/" + workbook_part.substr(folder_of(workbook_part).size()) + ".rels";
     auto rels = relationships(rels_part, folder_of(workbook_part));
-    for (const auto& [id, rel] : rels)
+    for (const auto& [id, rel] : rels) {
       if (ends_with(rel.first, "/sharedStrings")) read_shared_strings(rel.second);
+      if (ends_with(rel.first, "/styles")) read_styles(rel.second);
+    }
     Workbook wb;
     for (pugi::xml_node s : sheets.children()) {
       if (local(s) != "sheet") continue;
       auto it = rels.find(rel_id(s));
       if (it == rels.end()) fail_entry(zip_, workbook_part, std::string("sheet '") + s.attribute("name").value() + "' has no relationship");
       Sheet& sheet = budget_.begin_sheet(wb, s.attribute("name").value());
+      const std::string_view state = s.attribute("state").value();
+      sheet.hidden = state == "hidden" || state == "veryHidden";
       read_sheet(it->second.second, sheet);
     }
     return wb;
@@ -119,19 +121,31 @@ class XlsxReader {
     return out;
   }
 
-  // The text of a string item: its <t> elements, not the phonetic runs (<rPh>).
-  void string_item(const pugi::xml_node& node, std::string& out, const std::string& part) {
+  // The text of a string item: its <t> elements, not the phonetic runs
+  // (<rPh>); struck through when its rich-text runs with visible text all
+  // are (Whole) or some are (Part).
+  Strike string_item(const pugi::xml_node& node, std::string& out, const std::string& part) {
+    bool struck = false, plain = false;
+    auto visible = [](const char* t) {
+      return std::string_view(t).find_first_not_of(" \t\r\n") != std::string_view::npos;
+    };
     for (pugi::xml_node n : node.children()) {
       std::string_view name = local(n);
       if (name == "t") {
         out += n.child_value();
+        plain = plain || visible(n.child_value());
       } else if (name == "r") {  // a rich-text run: its <t> (runs do not nest)
+        const bool run_struck = xlsx_run_struck(child(n, "rPr"));
         for (pugi::xml_node t : n.children())
-          if (local(t) == "t") out += t.child_value();
+          if (local(t) == "t") {
+            out += t.child_value();
+            if (visible(t.child_value())) (run_struck ? struck : plain) = true;
+          }
       }
       if (out.size() > kMaxCellBytes)
         fail_entry(zip_, part, "a string holds more than the limit of " + std::to_string(kMaxCellBytes) + " bytes");
     }
+    return !struck ? Strike::None : plain ? Strike::Part : Strike::Whole;
   }
 
   void read_shared_strings(const std::string& part) {
@@ -142,7 +156,40 @@ class XlsxReader {
     for (pugi::xml_node si : child(doc, "sst").children()) {
       if (local(si) != "si") continue;
       shared_.emplace_back();
-      string_item(si, shared_.back(), part);
+      shared_strike_.push_back(string_item(si, shared_.back(), part));
+    }
+  }
+
+  void read_styles(const std::string& part) {
+    auto text = zip_.read(part);
+    if (!text) return;
+    pugi::xml_document doc;
+    parse_xml(doc, *text, part, zip_);
+    struck_formats_ = xlsx_struck_formats(doc);
+  }
+
+  // The cell format `s` strikes its text through.
+  bool struck_format(const pugi::xml_node& c) const {
+    const char* s = c.attribute("s").value();
+    std::size_t index = 0;
+    auto [end, ec] = std::from_chars(s, s + std::strlen(s), index);
+    return ec == std::errc() && *end == '\0' && index < struck_formats_.size() && struck_formats_[index];
+  }
+
+  // <mergeCells>: the ranges whose first cell holds text (the sheet's cells
+  // are sorted first, to be found).
+  void read_merges(const pugi::xml_node& worksheet, Sheet& sheet) {
+    sheet.sort();
+    for (pugi::xml_node m : child(worksheet, "mergeCells").children()) {
+      if (local(m) != "mergeCell") continue;
+      std::string_view ref = m.attribute("ref").value();
+      const auto colon = ref.find(':');
+      std::size_t r1 = 0, c1 = 0, r2 = 0, c2 = 0;
+      if (colon == std::string_view::npos || !parse_reference(ref.substr(0, colon), r1, c1) ||
+          !parse_reference(ref.substr(colon + 1), r2, c2))
+        budget_.fail(&sheet, 0, 0, "mergeCell '" + std::string(ref.substr(0, 40)) + "' is not a range of cells");
+      const CellRange range = budget_.merge(sheet, r1, c1, r2, c2);
+      if (sheet.find(r1, c1)) sheet.merges.push_back(range);
     }
   }
 
@@ -152,7 +199,8 @@ class XlsxReader {
     pugi::xml_document doc;
     parse_xml(doc, *text, part, zip_);
     std::size_t row = 0;
-    for (pugi::xml_node r : child(child(doc, "worksheet"), "sheetData").children()) {
+    const pugi::xml_node worksheet = child(doc, "worksheet");
+    for (pugi::xml_node r : child(worksheet, "sheetData").children()) {
       if (local(r) != "row") continue;
       std::size_t n = 0;
       const char* rr = r.attribute("r").value();
@@ -170,38 +218,42 @@ class XlsxReader {
         cell(c, sheet, row, column);
       }
     }
+    read_merges(worksheet, sheet);
   }
 
   void cell(const pugi::xml_node& c, Sheet& sheet, std::size_t row, std::size_t column) {
     std::string_view t = c.attribute("t").value();
     const char* v = child(c, "v").child_value();
+    const Strike format = struck_format(c) ? Strike::Whole : Strike::None;
     if (t == "s") {
       std::size_t index = 0;
       auto [end, ec] = std::from_chars(v, v + std::strlen(v), index);
       if (ec != std::errc() || *end != '\0' || index >= shared_.size())
         budget_.fail(&sheet, row, column, std::string("shared string index '") + std::string(v).substr(0, 20) + "' does not exist");
-      budget_.add(sheet, row, column, shared_[index], CellKind::Text);
+      budget_.add(sheet, row, column, shared_[index], CellKind::Text, std::max(format, shared_strike_[index]));
     } else if (t == "inlineStr") {
       std::string text;
-      string_item(child(c, "is"), text, "sheet " + sheet.name);
-      budget_.add(sheet, row, column, text, CellKind::Text);
+      const Strike runs = string_item(child(c, "is"), text, "sheet " + sheet.name);
+      budget_.add(sheet, row, column, text, CellKind::Text, std::max(format, runs));
     } else if (t == "b") {
-      if (*v) budget_.add(sheet, row, column, std::string_view(v) == "1" ? "true" : "false", CellKind::Boolean);
+      if (*v) budget_.add(sheet, row, column, std::string_view(v) == "1" ? "true" : "false", CellKind::Boolean, format);
     } else if (t == "str" || t == "e" || t == "d") {
-      budget_.add(sheet, row, column, v, CellKind::Text);
+      budget_.add(sheet, row, column, v, CellKind::Text, format);
     } else if (*v) {
       double d = 0;
       auto [end, ec] = std::from_chars(v, v + std::strlen(v), d);
       if (ec == std::errc() && *end == '\0')
-        budget_.add(sheet, row, column, number_text(d), CellKind::Number);
+        budget_.add(sheet, row, column, number_text(d), CellKind::Number, format);
       else
-        budget_.add(sheet, row, column, v, CellKind::Text);
+        budget_.add(sheet, row, column, v, CellKind::Text, format);
     }
   }
 
   ZipReader& zip_;
   CellBudget& budget_;
   std::vector<std::string> shared_;
+  std::vector<Strike> shared_strike_;  // of each shared string's runs
+  std::vector<bool> struck_formats_;   // of each cell format (cellXfs)
 };
 
 pugi::xml_node start(pugi::xml_document& doc, const char* root, const char* ns) {

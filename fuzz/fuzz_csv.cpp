@@ -1,7 +1,8 @@
 // Fuzz target: the spreadsheet importers (formats/csv.hpp, docs/csv.md), the
 // bytes `cemv import-csv` reads: the record layout and the C&E grid, with the
 // layout detected and with the grid forced in either orientation (strict in
-// one, so the warnings-as-errors path runs too). Expected answers: a matrix,
+// one, so the warnings-as-errors path runs too), and with a vendor sheet's
+// layout description (marks, trip sides, footnotes). Expected answers: a matrix,
 // or a LoadError. Invariants of an accepted matrix: it passes the matrix
 // loader (the importer promises it was checked by parse_matrix), and the
 // record layout is lossless (export, import: the same canonical form).
@@ -53,5 +54,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   grid.orientation = formats::CsvOrientation::EffectsAsRows;
   grid.strict = true;
   import_with(text, grid);
+  // A vendor sheet's layout (docs/csv.md "The layout description"): marks,
+  // trip sides and footnotes given, a rule for deleted rows.
+  formats::CsvImportOptions vendor;
+  vendor.layout = formats::CsvLayoutKind::Grid;
+  vendor.sheet_layout = formats::SheetLayout{};
+  vendor.sheet_layout->marks["NP"] = formats::MarkMeaning{std::nullopt, ""};
+  vendor.sheet_layout->marks["S+"] = formats::MarkMeaning{model::IntersectionType::S, "*"};
+  vendor.sheet_layout->trip_sides["6"] = model::LimitType::High;
+  vendor.sheet_layout->footnotes["*"] = "footnote";
+  vendor.sheet_layout->deleted.words = {"DELETED", "VOID"};
+  import_with(text, vendor);
   return 0;
 }

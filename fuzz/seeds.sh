@@ -10,7 +10,7 @@ cemv=$1
 out=$2
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"
-mkdir -p "$out"/{matrix_json,csv,scenario,properties,workbook}
+mkdir -p "$out"/{matrix_json,csv,scenario,properties,workbook,sheet_layout}
 
 matrices=$(grep -rl '"cemv-matrix/1"' --include='*.json' tests examples | sort)
 i=0
@@ -107,4 +107,10 @@ entries = [
 open(os.path.join(out, "listing-grid.xlsx.txt"), "w").write(listing(entries))
 PY
 
-for t in matrix_json csv scenario properties workbook; do echo "$t: $(ls "$out/$t" | wc -l) seeds, $(du -sh "$out/$t" | cut -f1)"; done
+# The layout descriptions of the vendor workbook's tests.
+i=0
+for f in tests/formats/vendor_cases/layout-*.json; do
+  i=$((i + 1)); cp "$f" "$out/sheet_layout/$(printf %03d $i)-$(basename "$f")"
+done
+
+for t in matrix_json csv scenario properties workbook sheet_layout; do echo "$t: $(ls "$out/$t" | wc -l) seeds, $(du -sh "$out/$t" | cut -f1)"; done

@@ -41,6 +41,9 @@ struct CauseTag {
   std::string name;
   bool ett = false;                  // energize-to-trip; default de-energize-to-trip
   bool soft_bypass_allowed = true;
+  // Whether the operator may simulate the tag (O.8; the manual's F-channel
+  // driver interconnection for "Simulating a tag", 10.7.3.4).
+  bool simulation_allowed = true;
 };
 
 struct AnalogParams {
@@ -91,6 +94,7 @@ struct Cause {
 struct EffectTag {
   std::string name;
   bool ett = false;                  // DTT: output 0 while the effect is active
+  bool simulation_allowed = true;    // as CauseTag::simulation_allowed (O.8)
 };
 
 struct Override {
@@ -142,6 +146,51 @@ struct GroupDeactivation {
   std::string set_tag;
 };
 
+// Where a matrix came from (docs/format.md "Provenance"): written by the
+// importers and by `cemv apply-params`, covered by the signature, read by the
+// evidence report; no scan-cycle meaning (M.5).
+struct ImportRecord {
+  std::string file;                   // the source's base name
+  std::string sha256;                 // of the source's bytes
+  std::string reader;                 // "import-csv grid", "import-workbook grid", ...
+  std::string encoding;               // "UTF-8", "Windows-1252"
+  std::string summary;                // how the source was read
+  std::vector<std::string> warnings;  // the import's warnings, as printed
+  std::vector<std::string> defaults;  // what the source does not state and the import took from the format
+};
+
+// One value a parameters file set (cemv-params/1, docs/params.md).
+struct ParameterValue {
+  std::string element;   // "matrix", "cause[3] NAME", "effect[1] NAME", "tag NAME", "intersection cause[1]/effect[2]"
+  std::string field;     // the field's path in the element: "override.max_s", "tags[1].simulation_allowed"
+  std::string value;     // JSON text of the value set
+  std::string previous;  // JSON text of the value it replaced
+  std::string origin;    // where the value comes from, as the parameters file says
+};
+
+// A footnote of the source sheet and what the model makes of it.
+struct FootnoteRecord {
+  std::string mark;          // "(1)"
+  std::string text;          // the legend's text
+  std::string modelled;      // how the parameters express it ("" = not)
+  std::string not_modelled;  // why the model cannot express it ("" = it can)
+};
+
+struct ParameterRecord {
+  std::string file;                      // the parameters file's base name
+  std::string sha256;                    // of its bytes
+  std::string origin;                    // what the file as a whole rests on
+  std::vector<ParameterValue> values;    // in the order applied
+  std::vector<FootnoteRecord> footnotes;
+  std::vector<std::string> limitations;  // what the source states and the model does not
+};
+
+struct Provenance {
+  std::vector<ImportRecord> imports;
+  std::vector<ParameterRecord> parameters;
+  bool empty() const { return imports.empty() && parameters.empty(); }
+};
+
 struct Matrix {
   std::string name;
   std::string title;
@@ -158,6 +207,10 @@ struct Matrix {
   std::vector<Cause> causes;          // kept sorted by id
   std::vector<Effect> effects;        // kept sorted by id
   std::vector<Intersection> intersections;  // sorted by (cause, effect)
+  // Descriptions of tags (documentation, M.5), by tag name as written; names
+  // compare case-insensitively (6.1.4), so no two keys differ only in case.
+  std::map<std::string, std::string> tag_descriptions;
+  Provenance provenance;
 
   // Restores the order the fields above promise (find_* binary-search it).
   // Stable, so elements with a repeated id (validate() reports them) keep

@@ -93,7 +93,9 @@ const std::vector<RuleInfo> kRules = {
     {"W-SIF-NO-PST", W, "HIMatrix 3.2.1", "a SIF group with members declares no process safety time"},
     {"W-SIF-PST-NO-MEMBERS", W, "6.2.1", "a SIF group declares a process safety time but has no members"},
     {"W-SIF-UNDEFINED", W, "6.2.1", "an element names a SIF group that sif_groups does not define"},
+    {"W-SIMULATION-UNRESTRICTED", W, "10.7.3.4", "every cause input tag and output tag may be simulated: no tag restricts simulation (simulation_allowed)"},
     {"W-SOFT-BYPASS-PREALARM", W, "6.3.6", "the soft bypass prealarm is set without a bypass time or is not shorter than it"},
+    {"W-SOFT-BYPASS-UNTIMED", W, "6.3.6", "a SIL-rated cause may be soft-bypassed without a time limit (soft_bypass.max_s 0)"},
     {"W-SOFT-BYPASS-UNUSED", W, "6.3.6", "a soft bypass time on a cause whose soft bypass is not allowed"},
     {"W-TIME-UNUSED", W, "6.3.6", "a cause with time mode none has a duration, which is ignored"},
     {"W-TIME-ZERO", W, "6.3.6", "an ON or OFF delay of 0 ms acts as no delay"},
@@ -167,6 +169,7 @@ class Validator {
     tags();
     references();
     connectivity();
+    simulation();
     for (auto& f : detail::timing_findings(m_)) add(f.rule, Where{f.rank, f.id, 0, f.element}, std::move(f.message));
     std::stable_sort(out_.begin(), out_.end(), [](const Finding& x, const Finding& y) {
       return std::tie(x.d.rule, x.where.rank, x.where.a, x.where.b, x.d.message) <
@@ -376,6 +379,11 @@ class Validator {
                         : "soft_bypass.prealarm_s = " + std::to_string(sb.prealarm_s) +
                               " >= max_s = " + std::to_string(sb.max_s) +
                               ": the prealarm never comes before the timeout");
+    if (sb.allowed && sb.max_s == 0 && c.sil >= 1)
+      add("W-SOFT-BYPASS-UNTIMED", w,
+          "a SIL " + std::to_string(c.sil) + " cause whose soft bypass is allowed without a time limit "
+          "(soft_bypass.max_s = 0): a forgotten bypass disables it for good; set a maximum bypass time or "
+          "disallow the soft bypass");
     if (sb.allowed) {
       rounding(w, "soft_bypass.max_s", std::uint64_t{sb.max_s} * 1000, true);
       rounding(w, "soft_bypass.prealarm_s", std::uint64_t{sb.prealarm_s} * 1000, true);
@@ -787,6 +795,34 @@ class Validator {
     for (const auto& e : m_.effects)
       if (processed(e) && !effect_linked.count(e.id))
         add("W-EFFECT-UNDRIVEN", at(e), "no cause is linked to the effect: it never trips");
+  }
+
+  // ---- maintenance permissions (10.7.3.4) --------------------------------------
+
+  // The format lets every tag be simulated unless the matrix says otherwise;
+  // a matrix that restricts none was most likely never asked the question.
+  void simulation() {
+    std::size_t tags = 0;
+    for (const auto& c : m_.causes) {
+      if (!processed(c)) continue;
+      for (const auto& t : c.tags) {
+        if (parse_internal_ref(t.name)) continue;
+        if (!t.simulation_allowed) return;
+        ++tags;
+      }
+    }
+    for (const auto& e : m_.effects) {
+      if (!processed(e)) continue;
+      for (const auto& t : e.tags) {
+        if (!t.simulation_allowed) return;
+        ++tags;
+      }
+    }
+    if (tags == 0) return;
+    add("W-SIMULATION-UNRESTRICTED", at_matrix(),
+        "all " + std::to_string(tags) + " cause input and output tags may be simulated (no tag has "
+        "simulation_allowed false)" + (m_.secure_write ? "" : " and no secure write gates the command") +
+        ": a simulated tag overrides the plant; restrict simulation to the tags that need it");
   }
 };
 

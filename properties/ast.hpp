@@ -190,6 +190,9 @@ struct PropertyFile {
   std::string file_name;
   std::vector<Assumption> assumptions;  // apply to every property of the file
   std::vector<Property> properties;
+  // Traps found when the file was read (properties/traps.hpp), as
+  // `FILE:LINE:COL: warning: ...`; the affected properties' notes say them too.
+  std::vector<std::string> warnings;
 };
 
 }  // namespace cemv::properties

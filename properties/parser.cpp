@@ -2,11 +2,14 @@
 // (docs/properties.md, "Files and properties").
 #include "properties/parser.hpp"
 
+#include <cctype>
 #include <cstring>
 #include <map>
 
 #include "formats/diagnostics.hpp"
+#include "formats/text_encoding.hpp"
 #include "properties/parser_impl.hpp"
+#include "properties/traps.hpp"
 
 namespace cemv::properties {
 
@@ -177,12 +180,21 @@ Property Parser::property() {
   return p;
 }
 
+// Milliseconds per unit of a duration; 0 for "cycles", which counts cycles.
+std::uint64_t unit_ms(const std::string& unit) {
+  if (unit == "ms") return 1;
+  if (unit == "s") return 1000;
+  if (unit == "min") return 60'000;
+  if (unit == "h") return 3'600'000;
+  return 0;
+}
+
 int Parser::duration() {
   SourceLoc loc = peek().loc;
   std::string number, unit;
   if (peek().kind == Token::Kind::Number) {
     number = next().text;
-    if (peek().kind != Token::Kind::Identifier) fail_expected("a unit (ms, s or cycles)");
+    if (peek().kind != Token::Kind::Identifier) fail_expected("a unit (ms, s, min, h or cycles)");
     unit = next().text;
   } else if (peek().kind == Token::Kind::Word) {
     const std::string& w = peek().text;
@@ -192,26 +204,35 @@ int Parser::duration() {
     unit = w.substr(i);
     next();
   } else {
-    fail_expected("a duration (e.g. 500 ms, 2 s, 3 cycles)");
+    fail_expected("a duration (e.g. 500 ms, 2 s, 10 min, 3 cycles)");
   }
-  if (unit != "ms" && unit != "s" && unit != "cycle" && unit != "cycles")
-    fail_at(loc, "expected a unit (ms, s or cycles), found " + in_quotes(unit));
-  // Whole milliseconds in exact decimal arithmetic: "2.5 s" is 2500 ms, "0.0001 s" is refused.
+  if (unit != "ms" && unit != "s" && unit != "min" && unit != "h" && unit != "cycle" && unit != "cycles")
+    fail_at(loc, "expected a unit (ms, s, min, h or cycles), found " + in_quotes(unit));
+  // Whole milliseconds in exact decimal arithmetic: "2.5 s" is 2500 ms,
+  // "1.5 min" 90000 ms, "0.0001 s" is refused.
   std::size_t dot = number.find('.');
   std::string whole = number.substr(0, dot);
   std::string fraction = dot == std::string::npos ? "" : number.substr(dot + 1);
-  if (number.find_first_of("eE-") != std::string::npos || whole.size() > 12)
-    fail_at(loc, "expected a duration (e.g. 500 ms, 2 s, 3 cycles), found " + in_quotes(number + " " + unit));
-  std::size_t scale = unit == "s" ? 3 : 0;
   while (!fraction.empty() && fraction.back() == '0') fraction.pop_back();
-  if (fraction.size() > scale)
-    fail_at(loc, unit == "s" ? "a duration must be a whole number of milliseconds"
-                             : "a duration in " + unit + " must be a whole number");
-  fraction.resize(scale, '0');
-  std::uint64_t value = std::stoull(whole + fraction);
+  if (number.find_first_of("eE-") != std::string::npos || whole.size() > 12 || fraction.size() > 9 ||
+      whole + fraction == "")
+    fail_at(loc, "expected a duration (e.g. 500 ms, 2 s, 10 min, 3 cycles), found " + in_quotes(number + " " + unit));
+  const std::uint64_t scale = unit_ms(unit);
+  unsigned __int128 digits = std::stoull(whole.empty() ? "0" : whole);
+  unsigned __int128 ten = 1;
+  for (char c : fraction) digits = digits * 10 + static_cast<unsigned>(c - '0'), ten *= 10;
+  const unsigned __int128 scaled = digits * (scale ? scale : 1);
+  if (scaled % ten != 0)
+    fail_at(loc, scale ? "a duration must be a whole number of milliseconds"
+                       : "a duration in " + unit + " must be a whole number");
+  const unsigned __int128 value128 = scaled / ten;
+  if (value128 > static_cast<unsigned __int128>(kMaxDurationCycles) * 4'294'967'295ULL)
+    fail_at(loc, "duration of " + number + " " + unit + " is longer than the limit of " +
+                     std::to_string(kMaxDurationCycles) + " cycles");
+  const auto value = static_cast<std::uint64_t>(value128);
   std::uint64_t cycles = value;
   std::uint64_t cycle_ms = names_.matrix().cycle_ms;
-  if (unit == "ms" || unit == "s") {
+  if (scale) {
     cycles = (value + cycle_ms - 1) / cycle_ms;  // docs/semantics.md T.2: D = ceil(ms / cycle_ms)
     if (value % cycle_ms != 0 && notes_)
       notes_->push_back("line " + std::to_string(loc.line) + ": " + number + " " + unit + " rounded up to " +
@@ -228,7 +249,50 @@ int Parser::duration() {
 PropertyFile parse_properties(std::string_view text, const model::Matrix& m, const std::string& file_name) {
   if (text.size() > formats::kMaxFileBytes)
     throw formats::LoadError({{file_name, "file larger than " + std::to_string(formats::kMaxFileBytes) + " bytes"}});
-  return Parser(text, m, file_name).parse_file();
+  // Text is UTF-8 (docs/properties.md): a file in another encoding is refused
+  // at its first bad byte, never read as garbled names or descriptions.
+  if (auto bad = formats::first_invalid_utf8(text)) {
+    auto [line, byte_column] = formats::line_and_column(text, *bad);
+    std::size_t column = 1;  // in characters, as every message of the language counts them
+    for (std::size_t i = *bad - (byte_column - 1); i < *bad; ++i) column += (text[i] & 0xC0) != 0x80;
+    throw formats::LoadError({{place(file_name.empty() ? "<properties>" : file_name,
+                                     {static_cast<int>(line), static_cast<int>(column)}),
+                               "this byte is not UTF-8; save the file as UTF-8"}});
+  }
+  PropertyFile f = Parser(text, m, file_name).parse_file();
+  f.warnings = find_traps(f, m);
+  return f;
+}
+
+void check_distinct_names(const std::vector<PropertyFile>& files) {
+  struct First {
+    std::string file, name;
+    SourceLoc loc;
+  };
+  std::map<std::string, First> seen;  // lower-case name -> first definition
+  for (const auto& f : files)
+    for (const auto& p : f.properties) {
+      std::string key = p.name;
+      for (char& c : key) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+      auto [it, fresh] = seen.emplace(key, First{f.file_name, p.name, p.loc});
+      if (fresh) continue;
+      const First& first = it->second;
+      const bool first_standard = first.loc.line == 0, this_standard = p.loc.line == 0;
+      const std::string same = first.name == p.name ? "" : " (differs only in case: their counterexample files "
+                                                           "would be one file on a case-insensitive file system)";
+      if (first_standard || this_standard) {  // the place to fix is the user's file
+        const std::string file = this_standard ? first.file : f.file_name;
+        const SourceLoc loc = this_standard ? first.loc : p.loc;
+        throw formats::LoadError({{place(file, loc), "property " + in_quotes(this_standard ? first.name : p.name) +
+                                                         " is also the name of a standard property (--standard)" +
+                                                         same + "; rename it: the standard set's names are fixed"}});
+      }
+      throw formats::LoadError({{place(f.file_name, p.loc),
+                                 "property " + in_quotes(p.name) + " is already defined at " +
+                                     place(first.file, first.loc) + same +
+                                     "; every property of one run needs its own name (the reports and the "
+                                     "counterexample files are named after it)"}});
+    }
 }
 
 PropertyFile load_properties(const std::filesystem::path& file, const model::Matrix& m) {

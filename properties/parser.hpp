@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "model/matrix.hpp"
 #include "properties/ast.hpp"
@@ -20,6 +21,15 @@ PropertyFile parse_properties(std::string_view text, const model::Matrix& m, con
 
 // Reads a file (size-guarded) and parses it; the file name in messages is `file` as given.
 PropertyFile load_properties(const std::filesystem::path& file, const model::Matrix& m);
+
+// Property names are unique across every file of one run (and the standard
+// set): reports, JUnit test cases and counterexample files are named after
+// them, and two properties of one name would give two rows with opposite
+// verdicts and one scenario file written twice. Names that differ only in
+// case count as the same (their files would collide on a case-insensitive
+// file system). Throws LoadError at the second definition (FILE:LINE:COL),
+// naming the first.
+void check_distinct_names(const std::vector<PropertyFile>& files);
 
 // The verdicts a `# expect:` comment may name.
 bool is_verdict(std::string_view word);

@@ -30,7 +30,7 @@ ordered_json property_json(const checker::PropertyResult& p) {
   j["name"] = p.name;
   j["description"] = p.description;
   j["kind"] = p.kind;
-  j["file"] = optional_text(p.file);
+  j["file"] = is_standard(p) ? ordered_json() : ordered_json(p.file);  // null for the standard set
   j["line"] = p.line > 0 ? ordered_json(p.line) : ordered_json();
   j["column"] = p.line > 0 ? ordered_json(p.column) : ordered_json();
   j["verdict"] = verdict_name(p.verdict);
@@ -46,6 +46,11 @@ ordered_json property_json(const checker::PropertyResult& p) {
   j["diagram"] = optional_text(p.diagram_file);
   j["waveforms"] = optional_text(p.vcd_file);
   j["violation_cycle"] = p.violation_cycle >= 0 ? ordered_json(p.violation_cycle) : ordered_json();
+  j["expected"] = optional_text(p.expected);
+  ordered_json why = ordered_json::array();  // "why, per step": one entry per change of a signal it reads
+  for (const auto& s : p.explanation)
+    why.push_back({{"cycle", s.cycle}, {"signal", s.signal}, {"before", s.before}, {"after", s.after}, {"why", s.why}});
+  j["explanation"] = std::move(why);
   return j;
 }
 

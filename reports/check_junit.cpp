@@ -20,7 +20,7 @@ std::string attr(std::string_view s) { return xml_escape(s, true); }
 std::string text(std::string_view s) { return xml_escape(s, false); }
 
 std::string class_name(const checker::CheckResult& r, const PropertyResult& p) {
-  if (p.file.empty()) return r.matrix_name + ".standard";
+  if (is_standard(p)) return r.matrix_name + ".standard";
   std::string stem = p.file.substr(p.file.find_last_of('/') + 1);
   return r.matrix_name + "." + stem.substr(0, stem.find('.'));
 }
@@ -30,6 +30,9 @@ std::string class_name(const checker::CheckResult& r, const PropertyResult& p) {
 std::string detail_text(const PropertyResult& p) {
   std::ostringstream s;
   s << p.name << ": " << outcome_text(p) << "\n";
+  if (!p.expected.empty())
+    s << "expected: " << p.expected << (p.expected_from.empty() ? "" : " (" + p.expected_from + ")")
+      << (as_expected(p) ? ", as expected" : "") << "\n";
   if (!p.description.empty()) s << "requirement: " << p.description << "\n";
   for (const auto& n : p.notes) s << "note: " << n << "\n";
   if (!p.scenario_file.empty()) s << "scenario: " << p.scenario_file << "\n";
@@ -47,11 +50,13 @@ std::string detail_text(const PropertyResult& p) {
 }  // namespace
 
 std::string check_junit(const checker::CheckResult& r, const CheckReportInputs& in) {
-  auto counts = verdict_counts(r);
-  int failures = counts[static_cast<std::size_t>(PropertyVerdict::Falsified)] +
-                 counts[static_cast<std::size_t>(PropertyVerdict::Unreachable)] +
-                 counts[static_cast<std::size_t>(PropertyVerdict::Vacuous)];
-  int errors = counts[static_cast<std::size_t>(PropertyVerdict::Unknown)];
+  // A test fails when its verdict is not the one expected: a negative
+  // verdict, or with a gate (--expect, --baseline) any other than the gate's.
+  int failures = 0, errors = 0;
+  for (const auto& p : r.properties) {
+    if (p.verdict == PropertyVerdict::Unknown) ++errors;
+    else if (!as_expected(p)) ++failures;
+  }
   std::string totals = " tests=\"" + std::to_string(r.properties.size()) + "\" failures=\"" +
                        std::to_string(failures) + "\" errors=\"" + std::to_string(errors) + "\"";
   std::ostringstream out;
@@ -70,16 +75,16 @@ std::string check_junit(const checker::CheckResult& r, const CheckReportInputs& 
   for (const auto& p : r.properties) {
     out << "    <testcase name=\"" << attr(p.name) << "\" classname=\"" << attr(class_name(r, p))
         << "\"";
-    if (!p.file.empty()) out << " file=\"" << attr(p.file) << "\"";
+    if (!is_standard(p)) out << " file=\"" << attr(p.file) << "\"";
     if (p.line > 0) out << " line=\"" << p.line << "\"";
     out << ">\n";
     std::string body = text(detail_text(p));
     std::string message = attr(outcome_text(p));
-    if (is_failure(p.verdict))
-      out << "      <failure type=\"" << verdict_name(p.verdict) << "\" message=\"" << message
-          << "\">" << body << "</failure>\n";
-    else if (p.verdict == PropertyVerdict::Unknown)
+    if (p.verdict == PropertyVerdict::Unknown)
       out << "      <error type=\"unknown\" message=\"" << message << "\">" << body << "</error>\n";
+    else if (!as_expected(p))
+      out << "      <failure type=\"" << verdict_name(p.verdict) << "\" message=\"" << message
+          << (p.expected.empty() ? "" : ", expected " + attr(p.expected)) << "\">" << body << "</failure>\n";
     else
       out << "      <system-out>" << body << "</system-out>\n";
     out << "    </testcase>\n";

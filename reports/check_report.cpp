@@ -7,6 +7,7 @@
 #include "reports/check_junit.hpp"
 #include "reports/check_sarif.hpp"
 #include "reports/check_text.hpp"
+#include "reports/sarif.hpp"
 
 namespace cemv::reports {
 
@@ -82,6 +83,51 @@ std::string outcome_text(const checker::PropertyResult& p) {
     case PropertyVerdict::Unknown: return "unknown" + with_reason(p);
   }
   return "unknown";
+}
+
+bool is_standard(const checker::PropertyResult& p) { return p.file.empty() || p.file == "<standard>"; }
+
+bool as_expected(const checker::PropertyResult& p) {
+  if (p.expected.empty()) return !is_failure(p.verdict) && p.verdict != PropertyVerdict::Unknown;
+  return p.expected == verdict_name(p.verdict);
+}
+
+std::string finding_line(const checker::PropertyResult& p, const CheckReportInputs& in) {
+  const bool expected = as_expected(p);
+  const bool negative = is_failure(p.verdict) || p.verdict == PropertyVerdict::Unknown;
+  if (expected && !negative) return "";
+  std::string place = is_standard(p) ? in.matrix_file : p.file;
+  if (p.line > 0) {
+    place += ":" + std::to_string(p.line) + ":" + std::to_string(std::max(p.column, 1));
+  } else if (is_standard(p)) {
+    // A standard property is derived from its element: placed at its line.
+    auto elements = property_elements(p);
+    if (!elements.empty())
+      if (auto at = MatrixLines(in.matrix_text).find(elements.front()))
+        place += ":" + std::to_string(at->first) + ":" + std::to_string(at->second);
+  }
+  const char* severity = expected ? "note" : p.verdict == PropertyVerdict::Unknown ? "warning" : "error";
+  std::string line = place + ": " + severity + ": property '" + p.name + "' " + outcome_text(p);
+  if (expected)
+    line += " (as expected)";
+  else if (!p.expected.empty())
+    line += ", expected " + p.expected + (p.expected_from.empty() ? "" : " (" + p.expected_from + ")");
+  return line;
+}
+
+std::string check_findings(const checker::CheckResult& r, const CheckReportInputs& in) {
+  std::string out;
+  for (const auto& p : r.properties)
+    if (std::string line = finding_line(p, in); !line.empty()) out += line + "\n";
+  return out;
+}
+
+std::vector<std::string> explanation_lines(const checker::PropertyResult& p) {
+  std::vector<std::string> out;
+  for (const auto& s : p.explanation)
+    out.push_back("cycle " + std::to_string(s.cycle) + ": " + s.signal + " " + (s.before.empty() ? "" : s.before + " -> ") +
+                  s.after + ": " + s.why);
+  return out;
 }
 
 }  // namespace cemv::reports

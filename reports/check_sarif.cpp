@@ -6,11 +6,12 @@
 // every run.
 #include "reports/check_sarif.hpp"
 
+#include <iterator>
+#include <vector>
+
 #include <nlohmann/json.hpp>
 
-#ifndef CEMV_HOME_URI
-#define CEMV_HOME_URI "https://cemv.invalid/"
-#endif
+#include "reports/sarif.hpp"
 
 namespace cemv::reports {
 
@@ -52,29 +53,27 @@ const Rule kRules[] = {
      "warning"},
 };
 
-const Rule* rule_for(PropertyVerdict v) {
+// A passing verdict where a gate expected another (cemv check --expect,
+// --baseline): the seeded defect or the known finding is gone.
+const Rule kNotAsExpected = {PropertyVerdict::Proved, "CEMV-NOT-AS-EXPECTED", "VerdictNotAsExpected",
+                             "A property did not get the verdict it is expected to get.",
+                             "The property passed, but its `# expect:` comment or the baseline result "
+                             "(cemv check --expect, --baseline) says it should not: the expectation is out "
+                             "of date, or the defect it records is no longer found.",
+                             "error"};
+
+// The rule of a property's result; nullptr when it passed as expected.
+const Rule* rule_for(const PropertyResult& p) {
   for (const auto& r : kRules)
-    if (r.verdict == v) return &r;
-  return nullptr;
+    if (r.verdict == p.verdict) return &r;
+  return as_expected(p) ? nullptr : &kNotAsExpected;
 }
 
-// A relative path as a URI reference: percent-encode what a path may hold but
-// a URI may not (RFC 3986 section 2).
-std::string uri_of_path(const std::string& path) {
-  static const char* hex = "0123456789ABCDEF";
-  std::string out;
-  for (unsigned char c : path) {
-    bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
-                 c == '-' || c == '.' || c == '_' || c == '~' || c == '/';
-    if (plain) {
-      out += static_cast<char>(c);
-    } else {
-      out += '%';
-      out += hex[c >> 4];
-      out += hex[c & 15];
-    }
-  }
-  return out;
+ordered_json matrix_location(const std::string& uri, std::pair<std::size_t, std::size_t> at) {
+  ordered_json physical;
+  physical["artifactLocation"] = {{"uri", uri}};
+  physical["region"] = {{"startLine", at.first}, {"startColumn", at.second}};
+  return physical;
 }
 
 ordered_json result_json(const checker::CheckResult& r, const CheckReportInputs& in,
@@ -82,18 +81,27 @@ ordered_json result_json(const checker::CheckResult& r, const CheckReportInputs&
   std::vector<std::string> elements = property_elements(p);
   std::string about;
   for (const auto& e : elements) about += (about.empty() ? "" : ", ") + e;
-  std::string message = "Property '" + p.name + "' " + outcome_text(p) + "; it concerns " +
+  std::string message = "Property '" + p.name + "' " + outcome_text(p) +
+                        (p.expected.empty() ? ""
+                         : as_expected(p)   ? " (as expected)"
+                                            : ", expected " + p.expected + " (" + p.expected_from + ")") +
+                        "; it concerns " +
                         (about.empty() ? "the whole" : about + " of") + " matrix " +
                         r.matrix_name + ".";
   if (!p.scenario_file.empty()) message += " Counterexample scenario: " + p.scenario_file + ".";
   if (!p.diagram_file.empty()) message += " Timing diagram: " + p.diagram_file + ".";
   if (!p.vcd_file.empty()) message += " Waveforms (VCD): " + p.vcd_file + ".";
 
+  const MatrixLines lines(in.matrix_text);
+  const std::string matrix_uri = uri_of_path(in.matrix_file);
   ordered_json physical;
-  // Standard properties are derived from the matrix: they live in its file.
-  physical["artifactLocation"] = {{"uri", uri_of_path(p.file.empty() ? in.matrix_file : p.file)}};
+  // Standard properties are derived from the matrix: they live in its file,
+  // at the line of the element they are about.
+  physical["artifactLocation"] = {{"uri", is_standard(p) ? matrix_uri : uri_of_path(p.file)}};
   if (p.line > 0)
     physical["region"] = {{"startLine", p.line}, {"startColumn", p.column > 0 ? p.column : 1}};
+  else if (is_standard(p) && !elements.empty())
+    if (auto at = lines.find(elements.front())) physical = matrix_location(matrix_uri, *at);
   ordered_json logical = ordered_json::array();
   for (const auto& e : elements.empty() ? std::vector<std::string>{r.matrix_name} : elements)
     logical.push_back({{"name", e},
@@ -109,9 +117,32 @@ ordered_json result_json(const checker::CheckResult& r, const CheckReportInputs&
   j["level"] = rule.level;
   j["message"] = {{"text", message}};
   j["locations"] = ordered_json::array({location});
+  // A counterexample's cells at their lines in the matrix file, which is what
+  // a change under review touches (the elements the property reads when no
+  // single cell carries the run).
+  if (p.verdict == PropertyVerdict::Falsified) {
+    ordered_json related = ordered_json::array();
+    const bool cells = !p.counterexample_support.empty();
+    for (const auto& e : cells ? p.counterexample_support : elements)
+      if (auto at = lines.find(e))
+        related.push_back({{"id", related.size()},
+                           {"physicalLocation", matrix_location(matrix_uri, *at)},
+                           {"message", {{"text", e + (cells ? ": a cell of the counterexample (deleting it, the "
+                                                              "run satisfies the property)"
+                                                            : ": an element the property reads")}}}});
+    if (!related.empty()) j["relatedLocations"] = std::move(related);
+  }
   // Stable identity of a finding across commits: the property, not its line.
   j["partialFingerprints"] = {{"cemvProperty/v1", r.matrix_name + "/" + p.file + "/" + p.name}};
+  // A negative verdict the gate expects: suppressed, with where the
+  // expectation is recorded (`# expect:` in the file, or the baseline).
+  if (!p.expected.empty() && as_expected(p))
+    j["suppressions"] = ordered_json::array(
+        {{{"kind", p.expected_from.rfind("baseline", 0) == 0 ? "external" : "inSource"},
+          {"status", "accepted"},
+          {"justification", "expected " + p.expected + " (" + p.expected_from + ")"}}});
   j["properties"] = {{"verdict", verdict_name(p.verdict)}, {"property", p.name}, {"kind", p.kind}};
+  if (!p.expected.empty()) j["properties"]["expected"] = p.expected;
   // The files of the run beside the finding, as SARIF result attachments.
   ordered_json attachments = ordered_json::array();
   auto attach = [&](const std::string& file, const char* what) {
@@ -137,26 +168,31 @@ std::string shard_label(const std::string& shard) {
 
 std::string check_sarif(const checker::CheckResult& r, const CheckReportInputs& in) {
   ordered_json rules = ordered_json::array();
-  for (const auto& rule : kRules) {
+  std::vector<const Rule*> all_rules;
+  for (const auto& rule : kRules) all_rules.push_back(&rule);
+  all_rules.push_back(&kNotAsExpected);
+  for (const Rule* rule_ptr : all_rules) {
+    const Rule& rule = *rule_ptr;
     ordered_json d;
     d["id"] = rule.id;
     d["name"] = rule.name;
     d["shortDescription"] = {{"text", rule.short_text}};
     d["fullDescription"] = {{"text", rule.full_text}};
     d["defaultConfiguration"] = {{"level", rule.level}};
-    d["helpUri"] = std::string(CEMV_HOME_URI) + "docs/checker.md";
+    d["helpUri"] = sarif_help_uri("checker.md");
     rules.push_back(std::move(d));
   }
   ordered_json driver;
   driver["name"] = "cemv";
   driver["version"] = r.tool_version;
-  driver["informationUri"] = CEMV_HOME_URI;
+  driver["informationUri"] = kSarifInformationUri;
   driver["rules"] = std::move(rules);
 
   ordered_json results = ordered_json::array();
   for (const auto& p : r.properties) {
-    const Rule* rule = rule_for(p.verdict);
-    if (rule) results.push_back(result_json(r, in, p, *rule, static_cast<std::size_t>(rule - kRules)));
+    const Rule* rule = rule_for(p);
+    std::size_t index = rule == &kNotAsExpected ? std::size(kRules) : static_cast<std::size_t>(rule - kRules);
+    if (rule) results.push_back(result_json(r, in, p, *rule, index));
   }
 
   ordered_json run;

@@ -26,15 +26,6 @@ std::string upper(std::string s) {
   return s;
 }
 
-// FILE:LINE:COL of the property, the matrix file for a standard property
-// (it is derived from the matrix), so editors and CI logs can jump there.
-std::string place(const PropertyResult& p, const CheckReportInputs& in) {
-  if (p.file.empty()) return in.matrix_file;
-  std::string s = p.file;
-  if (p.line > 0) s += ":" + std::to_string(p.line) + ":" + std::to_string(std::max(p.column, 1));
-  return s;
-}
-
 std::string method_column(const PropertyResult& p) {
   if (p.verdict == PropertyVerdict::Unknown || p.verdict == PropertyVerdict::Vacuous)
     return p.reason.empty() ? std::string("-") : p.reason;
@@ -53,9 +44,8 @@ void indented(std::ostringstream& out, const std::string& block, const char* ind
 
 void details(std::ostringstream& out, const PropertyResult& p, const CheckReportInputs& in) {
   for (const auto& n : p.notes) out << "    note: " << n << "\n";
-  if (is_failure(p.verdict) || p.verdict == PropertyVerdict::Unknown)
-    out << "    " << place(p, in) << ": " << (p.verdict == PropertyVerdict::Unknown ? "warning" : "error")
-        << ": property '" << p.name << "' " << outcome_text(p) << "\n";
+  // FILE:LINE:COL: error: ..., so editors and CI logs can jump there.
+  if (std::string line = finding_line(p, in); !line.empty()) out << "    " << line << "\n";
   if (p.verdict == PropertyVerdict::Proved && !p.support.empty()) {
     out << "    support (" << (p.support_minimal ? "minimal" : "not minimised") << "):";
     for (const auto& s : p.support) out << " " << s.key;
@@ -68,6 +58,10 @@ void details(std::ostringstream& out, const PropertyResult& p, const CheckReport
     if (!p.diagram_file.empty()) out << "    diagram: " << p.diagram_file << "\n";
     if (!p.vcd_file.empty()) out << "    waveforms: " << p.vcd_file << "\n";
     if (!p.timing_table.empty()) indented(out, p.timing_table, "    ");
+    if (!p.explanation.empty()) {
+      out << "    why, per step (docs/semantics.md):\n";
+      for (const auto& s : explanation_lines(p)) out << "      " << s << "\n";
+    }
   }
 }
 
@@ -88,7 +82,8 @@ std::string check_text(const checker::CheckResult& r, const CheckReportInputs& i
     std::string method = method_column(p);
     out << verdict << std::string(12 - std::min<std::size_t>(verdict.size(), 11), ' ') << p.name
         << std::string(name_width - p.name.size() + 2, ' ') << method
-        << std::string(method_width - method.size() + 2, ' ') << seconds_text(p.seconds) << "\n";
+        << std::string(method_width - method.size() + 2, ' ') << (p.cached ? "cached" : seconds_text(p.seconds))
+        << "\n";
     details(out, p, in);
     total += p.seconds;
   }
@@ -106,6 +101,8 @@ std::string check_text(const checker::CheckResult& r, const CheckReportInputs& i
     sep = ", ";
   }
   out << "; " << seconds_text(total) << " of checking";
+  auto cached = std::count_if(r.properties.begin(), r.properties.end(), [](const PropertyResult& p) { return p.cached; });
+  if (cached) out << "; " << cached << " from the cache";
   if (!r.shard.empty()) out << "; shard " << r.shard;
   if (r.interrupted) out << "; INTERRUPTED by the overall time limit";
   out << "\n";

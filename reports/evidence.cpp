@@ -1,19 +1,36 @@
+// The evidence report as printable HTML (docs/reports.md, "Evidence report"):
+// the cover, the contents with page numbers, the user's requirements first
+// with their formal text and source, the standard set per element, the grid,
+// validation, provenance, response time and tests, limitations, the
+// conclusion with the sign-off block, and the standard set in detail as an
+// appendix. The pages are laid out here (evidence_pages.hpp), so that the
+// contents can name the page of each chapter.
 #include "reports/evidence.hpp"
 
 #include <cstdio>
 #include <ctime>
 #include <map>
-#include <set>
-#include <type_traits>
+#include <regex>
 #include <sstream>
 
 #include "reports/check_report.hpp"
+#include "reports/evidence_document.hpp"
+#include "reports/evidence_pages.hpp"
+#include "reports/evidence_style.hpp"
 #include "reports/timing_svg.hpp"
 #include "reports/xml_text.hpp"
 
 namespace cemv::reports {
 
 namespace {
+
+using checker::PropertyResult;
+using checker::PropertyVerdict;
+using evidence_detail::Cell;
+using evidence_detail::Document;
+using evidence_detail::Pages;
+using evidence_detail::Table;
+using evidence_detail::passed;
 
 std::string base64(const std::string& s) {
   static const char* t = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
@@ -33,253 +50,443 @@ std::string base64(const std::string& s) {
   return out;
 }
 
-// Colours after the manual's online view (10.6.1): red for "Active - Alarm
-// profile" (here: stored trips and elements a counterexample involves),
-// yellow for "Bypass, simulation", orange for "Override", grey where nothing
-// is processed ("Comment only", "X", "*").
-const char* kCss = R"(
-body{font-family:"DejaVu Sans",Arial,Helvetica,sans-serif;font-size:11pt;color:#111827;margin:24px}
-h1{font-size:18pt;margin:0 0 4px}h2{font-size:14pt;border-bottom:2px solid #1f2937;padding-bottom:2px;margin-top:28px}
-h3{font-size:12pt;margin:18px 0 6px}.meta{color:#374151}
-table{border-collapse:collapse;margin:6px 0}th,td{border:1px solid #9ca3af;padding:3px 6px;vertical-align:top;text-align:left}
-th{background:#f3f4f6}.num{text-align:right}
-.pagehead,.pagefoot{font-size:8.5pt;color:#4b5563}
-.pagehead{border-bottom:1px solid #d1d5db;margin-bottom:12px;padding-bottom:4px}
-.pagefoot{border-top:1px solid #d1d5db;margin-top:24px;padding-top:4px}
-.ok{background:#dcfce7}.bad{background:#fee2e2}.warn{background:#fef3c7}.unk{background:#e5e7eb}
-table.grid td,table.grid th{text-align:center;min-width:22px;padding:2px 4px;font-size:9.5pt}
-table.grid td.cause,table.grid th.effect{text-align:left}
-th.effect{writing-mode:vertical-rl;transform:rotate(180deg);white-space:nowrap;height:auto}
-.t-N{background:#dbeafe}.t-S{background:#fecaca}.t-V{background:#fed7aa}.t-R{background:#bbf7d0}
-.t-X,.comment{background:#e5e7eb;color:#6b7280}.t-Note{color:#6b7280}
-.bypass{box-shadow:inset 4px 0 0 #facc15}.involved{outline:2px solid #dc2626;outline-offset:-2px}
-.legend span{display:inline-block;padding:1px 6px;margin-right:6px;border:1px solid #9ca3af}
-img.diagram{max-width:100%;border:1px solid #d1d5db}
-pre{white-space:pre-wrap;font-size:9pt;background:#f9fafb;border:1px solid #e5e7eb;padding:6px}
-@media print{
- @page{size:A4;margin:18mm 12mm 16mm 12mm}
- body{margin:0;font-size:9.5pt}
- .pagehead.screen,.pagefoot.screen{display:none}
- section.page{break-before:page}
- h2,h3{break-after:avoid}tr,img,.cex{break-inside:avoid}
-}
-)";
-
-const char* verdict_class(checker::PropertyVerdict v) {
+const char* verdict_class(PropertyVerdict v) {
   switch (v) {
-    case checker::PropertyVerdict::Proved:
-    case checker::PropertyVerdict::Reachable: return "ok";
-    case checker::PropertyVerdict::Unknown: return "unk";
+    case PropertyVerdict::Proved:
+    case PropertyVerdict::Reachable: return "ok";
+    case PropertyVerdict::Unknown: return "unk";
     default: return "bad";
   }
 }
 
-// A CSS string literal of `s`: quotes and backslashes escaped, control
-// characters and '<' (which could end the <style> element) as hex escapes.
-std::string css_string(const std::string& s) {
-  std::string out = "\"";
-  for (unsigned char c : s) {
-    if (c == '"' || c == '\\') {
-      out += '\\';
-      out += static_cast<char>(c);
-    } else if (c < 0x20 || c == 0x7f || c == '<') {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\%X ", c);
-      out += buf;
-    } else {
-      out += static_cast<char>(c);
-    }
-  }
-  return out + "\"";
+// A cell of text; line breaks in it are kept.
+Cell text_cell(const std::string& text, const std::string& css = "", double pt = 0) {
+  std::string html = html_escape(text);
+  for (std::size_t at = html.find('\n'); at != std::string::npos; at = html.find('\n', at))
+    html.replace(at, 1, "<br>");
+  return {html, text, css, pt};
 }
 
-// The header and footer of every printed page, in the page margins (CSS
-// paged media margin boxes), so they never cover the text: position:fixed
-// blocks were drawn over the first and last lines of each page's content.
-std::string page_boxes(const std::string& stamp) {
-  const char* box = "font-family:\"DejaVu Sans\",Arial,Helvetica,sans-serif;font-size:7.5pt;color:#4b5563;";
-  return std::string("@media print{@page{\n @top-left{content:") + css_string("Evidence report · " + stamp) + ";" +
-         box + "vertical-align:bottom;padding-bottom:3mm}\n @bottom-left{content:" + css_string(stamp) + ";" + box +
-         "vertical-align:top;padding-top:3mm}\n @bottom-right{content:\"page \" counter(page) \" of \" counter(pages);" +
-         box + "vertical-align:top;padding-top:3mm;white-space:nowrap}}}\n";
+// A support element as a reader finds it in the grid: "intersection[21,1]"
+// -> "C21 TMA_D_21 -> E1 TMA_A_1 (N)".
+std::string support_text(const model::Matrix& m, const checker::SupportElement& s) {
+  static const std::regex cell(R"(intersection\[(\d+),(\d+)\])");
+  std::smatch mt;
+  if (!std::regex_match(s.key, mt, cell)) return s.key + (s.description.empty() ? "" : " (" + s.description + ")");
+  const int c = std::stoi(mt[1].str()), e = std::stoi(mt[2].str());
+  const auto* cause = m.find_cause(c);
+  const auto* effect = m.find_effect(e);
+  const auto* x = m.find_intersection(c, e);
+  return "C" + std::to_string(c) + (cause ? " " + cause->name : "") + " \u2192 E" + std::to_string(e) +
+         (effect ? " " + effect->name : "") + (x ? std::string(" (") + model::to_string(x->type) + ")" : "");
+}
+
+// The timing diagram of a result without the explanation lines, which the
+// report prints as a table beside it.
+std::string report_diagram(const model::Matrix& m, const PropertyResult& p) {
+  TimingDiagram d = diagram_of(p);
+  d.notes.clear();
+  return timing_svg(m, *p.trace, d);
+}
+
+std::string anchor(const std::string& name) {
+  std::string s = "p-";
+  for (char c : name) s += std::isalnum(static_cast<unsigned char>(c)) ? c : '-';
+  return s;
+}
+
+// A key-value table of two columns.
+Table pairs(const std::vector<std::pair<std::string, std::string>>& rows, double key_mm = 52) {
+  Table t;
+  t.widths_mm = {key_mm, evidence_detail::kPageWidthMm - key_mm};
+  t.font_pt = 8.5;
+  for (const auto& [k, v] : rows) t.rows.push_back({text_cell(k, "key"), text_cell(v)});
+  return t;
+}
+
+// A timing diagram scaled to the page's width (and to at most 150 mm high),
+// its size written out so that the layout knows it.
+void diagram(Pages& pages, const std::string& svg, const std::string& alt) {
+  double w = 600, h = 300;
+  std::smatch mt;
+  static const std::regex size(R"re(width="([0-9.]+)" height="([0-9.]+)")re");
+  if (std::regex_search(svg, mt, size)) w = std::stod(mt[1].str()), h = std::stod(mt[2].str());
+  double width_mm = w * 0.2646, height_mm = h * 0.2646;  // 96 px per inch
+  const double scale = std::min({1.0, evidence_detail::kPageWidthMm / width_mm, 150.0 / height_mm});
+  width_mm *= scale;
+  height_mm *= scale;
+  char style[96];
+  std::snprintf(style, sizeof style, "width:%.1fmm;height:%.1fmm", width_mm, height_mm);
+  pages.block("<img class=\"diagram\" style=\"" + std::string(style) + "\" alt=\"" + html_escape(alt) +
+                  "\" src=\"data:image/svg+xml;base64," + base64(svg) + "\">\n",
+              height_mm + 3);
+}
+
+// A monospace text, split into blocks of whole lines so a long one can run
+// over pages.
+void preformatted(Pages& pages, const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string l; std::getline(in, l);) lines.push_back(l);
+  const double pt = 7.5;
+  for (std::size_t i = 0; i < lines.size(); i += 40) {
+    std::string chunk;
+    int n = 0;
+    for (std::size_t k = i; k < lines.size() && k < i + 40; ++k) {
+      chunk += (chunk.empty() ? "" : "\n") + lines[k];
+      n += evidence_detail::lines_of(lines[k], evidence_detail::kPageWidthMm - 4, pt);
+    }
+    pages.block("<pre>" + html_escape(chunk) + "</pre>\n", evidence_detail::lines_height(n, pt) + 4);
+  }
 }
 
 class Writer {
  public:
-  Writer(const model::Matrix& m, const EvidenceInputs& in) : m_(m), in_(in) {
-    for (const auto& p : in.check.properties)
-      if (p.verdict == checker::PropertyVerdict::Falsified)
-        for (const auto& e : property_elements(p)) involved_.insert(e);
-  }
+  Writer(const model::Matrix& m, const EvidenceInputs& in) : m_(m), in_(in), d_(evidence_detail::build_document(m, in)) {}
 
   std::string html() {
-    std::string stamp = "matrix " + m_.name + " · signature " + in_.check.matrix_signature + " · cemv " +
-                        in_.check.tool_version + " · " + in_.date;
-    o_ << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>Evidence: "
-       << html_escape(m_.name) << "</title>\n<style>" << kCss << page_boxes(stamp) << "</style>\n</head>\n<body>\n";
-    o_ << "<div class=\"pagehead screen\">" << html_escape(stamp) << "</div>\n";
-    summary();
-    grid();
-    validation();
-    properties();
-    evidence_detail::response_section(o_, m_, in_);
-    evidence_detail::tests_section(o_, in_);
-    o_ << "<div class=\"pagefoot screen\">" << html_escape(stamp) << "</div>\n</body>\n</html>\n";
-    return o_.str();
+    if (!d_.valid) {
+      chapter_banner();
+      evidence_detail::validation_chapter(pages_, d_, "1");
+      evidence_detail::grid_chapter(pages_, d_, "2");
+      evidence_detail::provenance_chapter(pages_, d_, "3");
+      limitations("4");
+      conclusion("5");
+    } else {
+      requirements("1");
+      standard("2");
+      evidence_detail::grid_chapter(pages_, d_, "3");
+      evidence_detail::validation_chapter(pages_, d_, "4");
+      evidence_detail::provenance_chapter(pages_, d_, "5");
+      evidence_detail::response_section(pages_, m_, in_, "6");
+      evidence_detail::tests_section(pages_, in_, "7");
+      limitations("8");
+      conclusion("9");
+      appendix("A");
+    }
+    return assemble();
   }
 
  private:
-  void summary() {
-    o_ << "<section>\n<h1>Evidence report: " << html_escape(m_.name) << "</h1>\n";
-    if (!m_.title.empty()) o_ << "<p class=\"meta\">" << html_escape(m_.title) << "</p>\n";
-    std::size_t errors = 0, warnings = 0;
-    for (const auto& d : in_.validation) (d.severity == model::Severity::Error ? errors : warnings)++;
-    auto counts = verdict_counts(in_.check);
-    o_ << "<table>\n";
-    row("Matrix file", html_escape(in_.matrix_file));
-    row("Matrix signature (SHA-256 of the canonical form)", "<code>" + html_escape(in_.check.matrix_signature) + "</code>");
-    row("Size", std::to_string(m_.causes.size()) + " causes, " + std::to_string(m_.effects.size()) +
-                    " effects, " + std::to_string(m_.intersections.size()) + " intersections; cycle " +
-                    std::to_string(m_.cycle_ms) + " ms");
-    row("Validation (11.5)", std::to_string(errors) + " errors, " + std::to_string(warnings) + " warnings");
-    std::string v;
-    for (std::size_t i = 0; i < counts.size(); ++i)
-      if (counts[i])
-        v += (v.empty() ? "" : ", ") + std::to_string(counts[i]) + " " +
-             verdict_name(static_cast<checker::PropertyVerdict>(i));
-    row("Properties", std::to_string(in_.check.properties.size()) + (v.empty() ? "" : ": " + v));
-    std::string files;
-    for (const auto& f : in_.check.property_files) files += (files.empty() ? "" : ", ") + html_escape(f);
-    if (in_.check.standard) files += std::string(files.empty() ? "" : ", ") + "the standard properties";
-    row("Property sources", files.empty() ? "none given" : files);
-    std::string resp = "not analysed";
-    if (in_.response) {
-      std::map<std::string, int> n;
-      for (const auto& p : in_.response->paths) n[p.verdict]++;
-      resp = std::to_string(in_.response->paths.size()) + " paths";
-      const char* sep = ": ";
-      for (const auto& [v, k] : n) resp += sep + std::to_string(k) + " " + v, sep = ", ";
-    }
-    row("Response time", html_escape(resp));
-    std::string cov = "no test generation results given";
-    if (in_.coverage)
-      cov = std::to_string(in_.coverage->covered) + " of " + std::to_string(in_.coverage->objectives) +
-            " objectives covered, " + std::to_string(in_.coverage->infeasible) + " infeasible, " +
-            std::to_string(in_.coverage->undecided) + " undecided; " + std::to_string(in_.coverage->tests) + " tests";
-    row("Test generation", html_escape(cov));
-    std::string mut = "no mutation figures given";
-    if (in_.mutation)
-      mut = std::to_string(in_.mutation->mutants) + " mutants: " + std::to_string(in_.mutation->detected) +
-            " detected, " + std::to_string(in_.mutation->equivalent) + " equivalent, " +
-            std::to_string(in_.mutation->survived) + " survived, " + std::to_string(in_.mutation->undecided) +
-            " undecided";
-    row("Mutation", html_escape(mut));
-    row("Tool", "cemv " + html_escape(in_.check.tool_version));
-    row("Date", html_escape(in_.date));
-    o_ << "</table>\n</section>\n";
+  std::string stamp() const {
+    return "matrix " + m_.name + " · signature " + in_.check.matrix_signature + " · cemv " + in_.check.tool_version +
+           " · " + in_.date;
   }
 
-  void row(const std::string& k, const std::string& v) { o_ << "<tr><th>" << k << "</th><td>" << v << "</td></tr>\n"; }
+  // ---- the cover and the contents ------------------------------------------
 
-  void grid() {
-    o_ << "<section class=\"page\">\n<h2>1. Cause &amp; effect matrix</h2>\n";
-    o_ << "<p class=\"legend\">Intersections: <span class=\"t-N\">N normal</span><span class=\"t-S\">S stored"
-          "</span><span class=\"t-V\">V override</span><span class=\"t-R\">R reset</span><span class=\"t-X\">X "
-          "not specified</span>* note only. Rows and columns: <span class=\"bypass\">bypass possible</span>"
-          "<span class=\"comment\">comment only</span><span class=\"involved\">in a counterexample</span></p>\n";
-    o_ << "<table class=\"grid\">\n<thead><tr><th>Cause</th><th>Tags</th>";
-    for (const auto& e : m_.effects)
-      o_ << "<th class=\"effect " << element_class(e) << "\" title=\"" << html_escape(e.description) << "\">E"
-         << e.id << " " << html_escape(e.name) << "</th>";
-    o_ << "</tr></thead>\n";
-    for (const auto& c : m_.causes) {
-      o_ << "<tr><td class=\"cause " << element_class(c) << "\" title=\"" << html_escape(c.description) << "\">C" << c.id
-         << " " << html_escape(c.name) << "</td><td>";
-      for (std::size_t i = 0; i < c.tags.size(); ++i) o_ << (i ? ", " : "") << html_escape(c.tags[i].name);
-      o_ << "</td>";
-      for (const auto& e : m_.effects) {
-        const auto* x = m_.find_intersection(c.id, e.id);
-        if (!x) {
-          o_ << "<td></td>";
-          continue;
-        }
-        std::string t = model::to_string(x->type);
-        o_ << "<td class=\"t-" << (x->type == model::IntersectionType::Note ? "Note" : t) << "\">" << html_escape(t);
-        if (x->xoon) o_ << "<sub>" << *x->xoon << "</sub>";
-        o_ << "</td>";
+  std::string cover() const {
+    std::ostringstream o;
+    o << "<section class=\"sheet cover\">\n";
+    if (!d_.valid)
+      o << "<p class=\"banner\">This matrix has " << d_.errors
+        << " validation errors: it cannot be executed, so nothing was checked. The validation findings come "
+           "first (chapter 1).</p>\n";
+    o << "<h1>Evidence report</h1>\n<p class=\"subtitle\">" << html_escape(m_.name)
+      << (m_.title.empty() ? "" : ": " + html_escape(m_.title)) << "</p>\n";
+    std::vector<std::pair<std::string, std::string>> rows = {
+        {"Matrix file", in_.matrix_file},
+        {"Matrix signature (SHA-256 of the canonical form)", in_.check.matrix_signature},
+        {"Size", std::to_string(m_.causes.size()) + " causes, " + std::to_string(m_.effects.size()) + " effects, " +
+                     std::to_string(m_.intersections.size()) + " intersections; scan cycle " +
+                     std::to_string(m_.cycle_ms) + " ms"},
+        {"Validation (11.5)", std::to_string(d_.errors) + " errors, " + std::to_string(d_.warnings) + " warnings"}};
+    for (const auto& rec : m_.provenance.imports)
+      rows.push_back({"Source", rec.file + " (" + rec.reader + ", " + rec.encoding + ")\nSHA-256 " + rec.sha256 +
+                                    "\n" + std::to_string(rec.warnings.size()) + " import warnings, " +
+                                    std::to_string(rec.defaults.size()) + " defaults adopted (chapter Provenance)"});
+    for (const auto& rec : m_.provenance.parameters)
+      rows.push_back({"Parameters", rec.file + "\nSHA-256 " + rec.sha256 + "\n" + std::to_string(rec.values.size()) +
+                                        " values set, " + std::to_string(rec.footnotes.size()) +
+                                        " footnotes explained, " + std::to_string(rec.limitations.size()) +
+                                        " limitations stated" + (rec.origin.empty() ? "" : "\nOrigin: " + rec.origin)});
+    if (m_.provenance.imports.empty() && m_.provenance.parameters.empty())
+      rows.push_back({"Source", "no import or parameters recorded in the matrix: it was written as cemv-matrix/1"});
+    for (const auto& f : in_.property_files)
+      rows.push_back({"Requirements", f.file + "\nSHA-256 " + f.sha256 + "\n" +
+                                          (d_.valid ? std::to_string(f.properties) + " properties"
+                                                    : std::string("not read: nothing is checked on a matrix with "
+                                                                  "validation errors"))});
+    if (in_.check.standard && d_.valid)
+      rows.push_back({"Standard properties", "derived from the matrix (docs/properties.md)"});
+    std::string verdicts;
+    for (std::size_t v = 0; v < d_.counts.size(); ++v)
+      if (d_.counts[v])
+        verdicts += (verdicts.empty() ? "" : ", ") + std::to_string(d_.counts[v]) + " " +
+                    verdict_name(static_cast<PropertyVerdict>(v));
+    rows.push_back({"Properties", d_.valid ? std::to_string(in_.check.properties.size()) +
+                                                 (verdicts.empty() ? "" : ": " + verdicts)
+                                           : "not checked"});
+    if (d_.valid) {
+      std::string resp = "not analysed (cemv evidence --response)";
+      if (in_.response) {
+        std::map<std::string, int> n;
+        for (const auto& p : in_.response->paths) n[p.verdict]++;
+        resp = std::to_string(in_.response->paths.size()) + " paths";
+        const char* sep = ": ";
+        for (const auto& [v, k] : n) resp += sep + std::to_string(k) + " " + v, sep = ", ";
       }
-      o_ << "</tr>\n";
+      rows.push_back({"Response time", resp});
+      if (in_.coverage)
+        rows.push_back({"Test generation", std::to_string(in_.coverage->covered) + " of " +
+                                               std::to_string(in_.coverage->objectives) + " objectives covered, " +
+                                               std::to_string(in_.coverage->infeasible) + " infeasible, " +
+                                               std::to_string(in_.coverage->undecided) + " undecided; " +
+                                               std::to_string(in_.coverage->tests) + " tests"});
+      if (in_.mutation)
+        rows.push_back({"Mutation", std::to_string(in_.mutation->mutants) + " mutants: " +
+                                        std::to_string(in_.mutation->detected) + " detected, " +
+                                        std::to_string(in_.mutation->equivalent) + " equivalent, " +
+                                        std::to_string(in_.mutation->survived) + " survived, " +
+                                        std::to_string(in_.mutation->undecided) + " undecided"});
     }
-    o_ << "</table>\n</section>\n";
+    rows.push_back({"Tool", "cemv " + in_.check.tool_version});
+    rows.push_back({"Date", in_.date});
+    o << "<table class=\"fixed cover-table\"><colgroup><col style=\"width:52mm\"><col style=\"width:134mm\"></colgroup>\n";
+    for (const auto& [k, v] : rows) {
+      std::string value = html_escape(v);
+      value = std::regex_replace(value, std::regex("\n"), "<br>");
+      o << "<tr><th>" << html_escape(k) << "</th><td>" << value << "</td></tr>\n";
+    }
+    o << "</table>\n<h3>Conclusion</h3>\n";
+    for (const auto& s : d_.conclusion) o << "<p>" << html_escape(s) << "</p>\n";
+    o << "</section>\n";
+    return o.str();
   }
 
-  template <class E>
-  std::string element_class(const E& e) const {
-    std::string cls;
-    std::string key = (std::is_same_v<E, model::Cause> ? "cause[" : "effect[") + std::to_string(e.id) + "]";
-    if constexpr (std::is_same_v<E, model::Cause>) {
-      if (e.function == model::CauseFunction::Comment) cls += " comment";
-      if (e.bypass_tag || e.soft_bypass.allowed) cls += " bypass";
-    } else {
-      if (e.function == model::EffectFunction::Comment) cls += " comment";
-      if (e.bypass_tag || e.soft_bypass_allowed) cls += " bypass";
+  // The contents: every chapter and listed section with its printed page.
+  std::vector<std::string> contents(int first_page) const {
+    const auto& toc = pages_.toc();
+    const int per_sheet = 46;
+    std::vector<std::string> sheets;
+    for (std::size_t i = 0; i < toc.size(); i += per_sheet) {
+      std::ostringstream o;
+      o << "<section class=\"sheet toc\">\n";
+      if (i == 0) o << "<h2 id=\"contents\">Contents</h2>\n";
+      o << "<table class=\"toc\">\n";
+      for (std::size_t k = i; k < toc.size() && k < i + per_sheet; ++k) {
+        const auto& e = toc[k];
+        o << "<tr class=\"l" << e.level << "\"><td class=\"n\">" << html_escape(e.number) << "</td><td><a href=\"#"
+          << e.id << "\">" << html_escape(e.title) << "</a></td><td class=\"pg\">" << first_page + e.sheet - 1
+          << "</td></tr>\n";
+      }
+      o << "</table>\n</section>\n";
+      sheets.push_back(o.str());
     }
-    if (involved_.count(key)) cls += " involved";
-    return cls;
+    return sheets;
   }
 
-  void validation() {
-    o_ << "<section class=\"page\">\n<h2>2. Validation (11.5)</h2>\n";
-    if (in_.validation.empty()) {
-      o_ << "<p class=\"ok\">No findings: the matrix passes every validation rule.</p>\n</section>\n";
+  std::string assemble() const {
+    const int toc_sheets = std::max<int>(1, static_cast<int>((pages_.toc().size() + 45) / 46));
+    const int first = 2 + toc_sheets;  // the cover is page 1
+    std::ostringstream o;
+    o << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>Evidence: "
+      << html_escape(m_.name) << "</title>\n<style>" << evidence_detail::kEvidenceCss
+      << evidence_detail::page_boxes(stamp()) << "</style>\n</head>\n<body>\n";
+    o << "<div class=\"pagehead screen\">" << html_escape(stamp()) << "</div>\n";
+    o << cover();
+    for (const auto& s : contents(first)) o << s;
+    for (const auto& s : pages_.sheets()) o << "<section class=\"sheet\">\n" << s << "</section>\n";
+    o << "<div class=\"pagefoot screen\">" << html_escape(stamp()) << "</div>\n</body>\n</html>\n";
+    return o.str();
+  }
+
+  void chapter_banner() {}
+
+  // ---- 1. the user's requirements ------------------------------------------
+
+  void requirements(const std::string& n) {
+    pages_.chapter("requirements", n, "Requirements");
+    if (d_.requirements.empty()) {
+      pages_.paragraph(in_.property_files.empty() ? "No requirement file was given (cemv evidence MATRIX PROPS...)."
+                                                  : "The requirement files hold no property.");
       return;
     }
-    o_ << "<table>\n<thead><tr><th>Severity</th><th>Rule</th><th>Element</th><th>Section</th><th>Finding</th>"
-          "</tr></thead>\n";
-    for (const auto& d : in_.validation)
-      o_ << "<tr class=\"" << (d.severity == model::Severity::Error ? "bad" : "warn") << "\"><td>"
-         << model::to_string(d.severity) << "</td><td>" << html_escape(d.rule) << "</td><td>" << html_escape(d.element)
-         << "</td><td>" << html_escape(d.section) << "</td><td>" << html_escape(d.message) << "</td></tr>\n";
-    o_ << "</table>\n</section>\n";
+    pages_.paragraph("Each requirement with its formal text as checked, its source (file, line and the SHA-256 "
+                     "of the file, which ties the verdict to one version of the text), the verdict and how it was "
+                     "reached, the cells its proof rests on, or its counterexample or witness explained step by "
+                     "step. Every answer was checked independently: counterexamples and witnesses replayed on the "
+                     "reference runtime and judged by the concrete evaluator, proofs re-checked by a fresh solver "
+                     "(docs/checker.md).");
+    Table overview;
+    overview.widths_mm = {8, 70, 22, 26, 60};
+    overview.head = {"", "Requirement", "Kind", "Verdict", "Method"};
+    int k = 0;
+    for (const auto& r : d_.requirements) {
+      const auto& p = *r.result;
+      overview.rows.push_back({text_cell(n + "." + std::to_string(++k)), text_cell(p.name), text_cell(p.kind),
+                               text_cell(verdict_name(p.verdict), verdict_class(p.verdict)),
+                               text_cell(p.method.empty() ? "-" : p.method)});
+    }
+    pages_.table(overview);
+    k = 0;
+    for (const auto& r : d_.requirements) requirement(r, n + "." + std::to_string(++k));
   }
 
-  void properties() {
-    o_ << "<section class=\"page\">\n<h2>3. Properties</h2>\n";
-    if (in_.check.properties.empty()) {
-      o_ << "<p>No properties given.</p>\n</section>\n";
+  void requirement(const evidence_detail::Requirement& r, const std::string& number) {
+    const auto& p = *r.result;
+    pages_.section(anchor(p.name), number, p.name);
+    if (!p.description.empty()) pages_.paragraph(p.description, "desc");
+    if (r.text) preformatted(pages_, evidence_detail::formal_text(*r.text));
+    std::vector<std::pair<std::string, std::string>> rows;
+    rows.push_back({"Source", p.file + ":" + std::to_string(p.line) + ":" + std::to_string(p.column)});
+    rows.push_back({"SHA-256 of the file", r.file_sha256.empty() ? "(not recorded)" : r.file_sha256});
+    rows.push_back({"Verdict", outcome_text(p)});
+    for (const auto& note : p.notes) rows.push_back({"Note", note});
+    if (p.verdict == PropertyVerdict::Proved) {
+      std::string support;
+      for (const auto& s : p.support) support += (support.empty() ? "" : "\n") + support_text(m_, s);
+      rows.push_back({p.support_minimal ? "Rests on (minimal support)" : "Rests on (support)",
+                      support.empty() ? "not computed for this proof (docs/checker.md, \"Support\")" : support});
+    }
+    Table t = pairs(rows);
+    t.rows[2][1].css = verdict_class(p.verdict);
+    pages_.table(t);
+    if (!p.trace) return;
+    const bool witness = p.verdict == PropertyVerdict::Reachable;
+    pages_.paragraph(std::string(witness ? "Witness" : "Counterexample") + ": " + std::to_string(p.trace->inputs.size()) +
+                         (p.trace->inputs.size() == 1 ? " cycle" : " cycles") + " of " + std::to_string(m_.cycle_ms) +
+                         " ms" + (p.scenario_file.empty() ? "" : "; scenario " + p.scenario_file) +
+                         ". Timing diagram (rows named cause/effect NUMBER NAME field):",
+                     "", 8.5);
+    diagram(pages_, report_diagram(m_, p), "timing diagram of " + p.name);
+    why_table(p);
+  }
+
+  // "Why, per step" of a trace, captioned so that it names its property
+  // when it starts a page.
+  void why_table(const PropertyResult& p) {
+    if (p.explanation.empty()) return;
+    pages_.caption("Why, per step: " + p.name + " (the rules of docs/semantics.md the runtime applied)");
+    Table why;
+    why.widths_mm = {12, 44, 18, 112};
+    why.head = {"Cycle", "Signal", "Change", "Why (docs/semantics.md)"};
+    why.font_pt = 7.5;
+    for (const auto& s : p.explanation)
+      why.rows.push_back({text_cell(std::to_string(s.cycle), "num"), text_cell(s.signal),
+                          text_cell((s.before.empty() ? "" : s.before + " → ") + s.after), text_cell(s.why)});
+    pages_.table(why);
+  }
+
+  // ---- 2. the standard set -------------------------------------------------
+
+  void standard(const std::string& n) {
+    pages_.chapter("standard", n, "Standard properties");
+    if (d_.standard.empty()) {
+      pages_.paragraph("The standard property set was not checked (cemv evidence --standard adds it).");
       return;
     }
-    o_ << "<p>Every answer is checked independently before it is reported: counterexamples and witnesses are "
-          "replayed on the reference runtime and judged by the concrete property evaluator; proofs are "
-          "re-proved by a fresh solver (docs/checker.md).</p>\n";
-    o_ << "<table>\n<thead><tr><th>Property</th><th>Kind</th><th>Verdict</th><th>Method</th><th>Source</th>"
-          "</tr></thead>\n";
-    for (const auto& p : in_.check.properties) {
-      o_ << "<tr><td><b>" << html_escape(p.name) << "</b>";
-      if (!p.description.empty()) o_ << "<br>" << html_escape(p.description);
-      o_ << "</td><td>" << html_escape(p.kind) << "</td><td class=\"" << verdict_class(p.verdict) << "\">"
-         << html_escape(outcome_text(p)) << "</td><td>" << html_escape(p.method.empty() ? "-" : p.method) << "</td><td>"
-         << html_escape(p.file.empty() ? "standard" : p.file + ":" + std::to_string(p.line)) << "</td></tr>\n";
+    pages_.paragraph("The standard set restates rules of docs/semantics.md over the matrix's own wiring (every "
+                     "intersection trips its effect, every effect can trip, stored effects can be reset, failed "
+                     "sensors trip: docs/properties.md). " + std::to_string(d_.standard.size()) +
+                     " properties, summarised per element; each is listed in Appendix A.");
+    Table t;
+    t.widths_mm = {66, 20, 20, 20, 20, 20, 20};
+    t.head = {"Element", "Properties", "Proved", "Reachable", "Falsified", "Unreach./vacuous", "Unknown"};
+    for (const auto& e : d_.standard_by_element) {
+      const auto& v = e.verdicts;
+      int total = 0;
+      for (int x : v) total += x;
+      const int bad = v[1] + v[3] + v[4];
+      t.rows.push_back({text_cell(e.label), text_cell(std::to_string(total), "num"),
+                        text_cell(std::to_string(v[0]), "num"), text_cell(std::to_string(v[2]), "num"),
+                        text_cell(std::to_string(v[1]), v[1] ? "num bad" : "num"),
+                        text_cell(std::to_string(v[3] + v[4]), v[3] + v[4] ? "num bad" : "num"),
+                        text_cell(std::to_string(v[5]), v[5] ? "num unk" : "num")});
+      t.row_css.push_back(bad ? "bad" : "");
     }
-    o_ << "</table>\n";
-    for (const auto& p : in_.check.properties) {
-      if (!p.trace) continue;
-      o_ << "<div class=\"cex\">\n<h3>" << html_escape(p.name) << ": "
-         << (p.verdict == checker::PropertyVerdict::Reachable ? "witness" : "counterexample") << "</h3>\n";
-      o_ << "<p>" << html_escape(outcome_text(p)) << ", " << p.trace->inputs.size()
-         << (p.trace->inputs.size() == 1 ? " cycle" : " cycles") << ".</p>\n";
-      o_ << "<img class=\"diagram\" alt=\"timing diagram of " << html_escape(p.name)
-         << "\" src=\"data:image/svg+xml;base64," << base64(timing_svg(m_, *p.trace, diagram_of(p))) << "\">\n";
-      if (!p.timing_table.empty()) o_ << "<pre>" << html_escape(p.timing_table) << "</pre>\n";
-      o_ << "</div>\n";
+    pages_.table(t);
+  }
+
+  // ---- limitations, conclusion, appendix ------------------------------------
+
+  void limitations(const std::string& n) {
+    pages_.chapter("limitations", n, "Limitations");
+    pages_.paragraph("What the source states that the model does not express, what the model assumes without the "
+                     "source saying it (values supplied by the parameters, defaults the import adopted) and the "
+                     "operations the requirements assume away. Every verdict holds only within these.");
+    if (d_.limitations.empty()) {
+      pages_.paragraph("None recorded.", "ok");
+      return;
     }
-    o_ << "</section>\n";
+    Table t;
+    t.widths_mm = {30, 124, 32};
+    t.head = {"Kind", "Limitation", "Source"};
+    t.font_pt = 8;
+    for (const auto& l : d_.limitations) t.rows.push_back({text_cell(l.kind), text_cell(l.text), text_cell(l.source)});
+    pages_.table(t);
+  }
+
+  void conclusion(const std::string& n) {
+    pages_.chapter("conclusion", n, "Conclusion and sign-off");
+    for (const auto& s : d_.conclusion) pages_.paragraph(s);
+    if (d_.valid && !d_.requirements.empty()) {
+      Table t;
+      t.widths_mm = {56, 20, 20, 20, 20, 25, 25};
+      t.head = {"Properties", "Total", "Proved", "Reachable", "Falsified", "Unreach./vacuous", "Unknown"};
+      auto row = [&](const std::string& what, const std::array<int, 6>& v) {
+        int total = 0;
+        for (int x : v) total += x;
+        t.rows.push_back({text_cell(what), text_cell(std::to_string(total), "num"), text_cell(std::to_string(v[0]), "num"),
+                          text_cell(std::to_string(v[2]), "num"), text_cell(std::to_string(v[1]), v[1] ? "num bad" : "num"),
+                          text_cell(std::to_string(v[3] + v[4]), v[3] + v[4] ? "num bad" : "num"),
+                          text_cell(std::to_string(v[5]), v[5] ? "num unk" : "num")});
+      };
+      row("Requirements", d_.requirement_counts);
+      std::array<int, 6> standard{};
+      for (const auto* p : d_.standard) standard[static_cast<int>(p->verdict)]++;
+      if (!d_.standard.empty()) row("Standard set", standard);
+      pages_.table(t);
+    }
+    pages_.section("signoff", "", "Assessment and sign-off", false);
+    pages_.paragraph("The assessor records the conclusion of the functional safety assessment (IEC 61508-1, "
+                     "clause 8) for the matrix version named by the signature above.");
+    Table s;
+    s.widths_mm = {52, 134};
+    s.font_pt = 9;
+    for (const char* k : {"Assessor's name", "Role / organisation", "Date", "Conclusion (accepted / accepted with "
+                                                                            "conditions / not accepted)",
+                          "Conditions, remarks", "Signature"})
+      s.rows.push_back({text_cell(k, "key"), {"&nbsp;", "x\nx", "signfield", 0}});
+    pages_.table(s);
+  }
+
+  void appendix(const std::string& n) {
+    if (d_.standard.empty()) return;
+    pages_.chapter("appendix-standard", n, "Appendix: the standard properties");
+    pages_.paragraph("Every property of the standard set with its formal text and verdict, element by element "
+                     "(docs/properties.md, \"Standard properties\").");
+    std::map<std::pair<std::string, std::string>, const PropertyText*> texts;
+    for (const auto& t : in_.texts) texts[{t.file, t.name}] = &t;
+    Table t;
+    t.widths_mm = {28, 36, 86, 18, 18};
+    t.head = {"Element", "Property", "Formal text", "Verdict", "Method"};
+    t.font_pt = 7;
+    for (const auto& e : d_.standard_by_element)
+      for (const auto* p : e.properties) {
+        auto it = texts.find({p->file, p->name});
+        std::string formal = it == texts.end() ? "" : evidence_detail::formal_text(*it->second);
+        t.rows.push_back({text_cell(e.label), text_cell(p->name), text_cell(formal, "mono"),
+                          text_cell(verdict_name(p->verdict), verdict_class(p->verdict)),
+                          text_cell(p->method.empty() ? p->reason : p->method)});
+      }
+    pages_.table(t);
+    // The counterexamples of the standard set in full; its witnesses (a
+    // reachable effect, a resettable latch) are the table's "reachable".
+    for (const auto& e : d_.standard_by_element)
+      for (const auto* p : e.properties)
+        if (p->trace && !passed(p->verdict)) {
+          pages_.section("std-" + anchor(p->name), "", p->name, false);
+          pages_.paragraph(outcome_text(*p), "bad", 8.5);
+          diagram(pages_, report_diagram(m_, *p), "timing diagram of " + p->name);
+          why_table(*p);
+        }
   }
 
   const model::Matrix& m_;
   const EvidenceInputs& in_;
-  std::set<std::string> involved_;
-  std::ostringstream o_;
+  Document d_;
+  Pages pages_;
 };
 
 }  // namespace

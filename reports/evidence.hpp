@@ -62,6 +62,26 @@ struct ResponseFigures {
   std::vector<Path> paths;
 };
 
+// A property as written, for the report's formal text (docs/properties.md):
+// its statement and the assumptions it is judged under, as properties/print
+// writes them.
+struct PropertyText {
+  std::string file;                      // "" for the standard set
+  std::string name;
+  std::string statement;                 // "always ...", "whenever ... then ... within 5 cycles"
+  std::vector<std::string> assumptions;  // "assume ..." (the file's first, marked "(every property of the file)")
+};
+
+// A property file as given: its SHA-256 ties a verdict to one version of the
+// requirement text.
+struct PropertyFileInfo {
+  std::string file;                      // as given on the command line
+  std::string sha256;                    // of its bytes
+  std::size_t properties = 0;
+  std::vector<std::string> assumptions;  // its top-level `assume` texts
+  std::vector<std::string> warnings;     // traps found when it was read (properties/traps.hpp)
+};
+
 struct EvidenceInputs {
   std::string matrix_file;                    // as given on the command line
   std::vector<model::Diagnostic> validation;  // model::validate(m)
@@ -70,17 +90,21 @@ struct EvidenceInputs {
   std::optional<ResponseFigures> response;    // absent: not analysed (the report says how to add it)
   std::optional<CoverageFigures> coverage;    // absent: none given
   std::optional<MutationFigures> mutation;
+  std::vector<PropertyFileInfo> property_files;  // the user's, in command-line order
+  std::vector<PropertyText> texts;               // every property checked, user's and standard
 };
 
+// The report as one printable HTML file (docs/reports.md, "Evidence report").
+// A matrix with validation errors is reported too: a banner, its validation
+// findings first, nothing checked.
 std::string evidence_html(const model::Matrix& m, const EvidenceInputs& in);
+// The same content as `cemv-evidence/1` JSON, for a quality system to file
+// (docs/reports.md, "cemv-evidence/1").
+std::string evidence_json(const model::Matrix& m, const EvidenceInputs& in);
 
 // "YYYY-MM-DD HH:MM UTC" of a Unix time.
 std::string utc_date(long long epoch_seconds);
 
-namespace evidence_detail {
-// The sections on response time and on test generation (evidence_tests.cpp).
-void response_section(std::ostream& o, const model::Matrix& m, const EvidenceInputs& in);
-void tests_section(std::ostream& o, const EvidenceInputs& in);
-}  // namespace evidence_detail
+
 
 }  // namespace cemv::reports

@@ -5,9 +5,9 @@
 // every objective or mutant that is not settled.
 #include <cstdio>
 #include <map>
-#include <ostream>
 
-#include "reports/evidence.hpp"
+#include "reports/evidence_document.hpp"
+#include "reports/evidence_pages.hpp"
 #include "reports/xml_text.hpp"
 
 namespace cemv::reports::evidence_detail {
@@ -30,150 +30,154 @@ const char* verdict_css(const std::string& v) {
   return "unk";
 }
 
-void cell(std::ostream& o, const std::string& text, const char* cls = nullptr) {
-  o << "<td" << (cls ? std::string(" class=\"") + cls + "\"" : "") << ">" << html_escape(text) << "</td>";
+Cell cell(const std::string& text, const std::string& css = "") { return {html_escape(text), text, css, 0}; }
+Cell number(long long v, const std::string& extra = "") {
+  return cell(std::to_string(v), extra.empty() ? "num" : "num " + extra);
 }
 
-void coverage(std::ostream& o, const CoverageFigures& c) {
-  o << "<h3>Coverage</h3>\n<p>From <code>" << html_escape(c.file) << "</code> (cemv-coverage/1; the same matrix "
-    << "signature). Each covered objective is reached by a generated test that was replayed on the reference "
-       "runtime; an infeasible one was proved unreachable.</p>\n";
-  o << "<table>\n<tr><th>Objectives</th><th>Covered</th><th>Infeasible</th><th>Undecided</th><th>Coverage of the "
-       "feasible</th><th>Tests</th><th>Steps</th><th>Cycles</th></tr>\n<tr>";
-  for (long long v : {c.objectives, c.covered, c.infeasible, c.undecided}) o << "<td class=\"num\">" << v << "</td>";
-  o << "<td class=\"num " << (c.undecided ? "warn" : "ok") << "\">"
-    << percent(double(c.covered), double(c.objectives - c.infeasible)) << "</td>";
-  for (long long v : {c.tests, c.steps, c.cycles}) o << "<td class=\"num\">" << v << "</td>";
-  o << "</tr>\n</table>\n";
+void coverage(Pages& pages, const CoverageFigures& c, const std::string& n) {
+  pages.section("coverage", n + ".1", "Coverage");
+  pages.paragraph_html("From <code>" + html_escape(c.file) +
+                           "</code> (cemv-coverage/1; the same matrix signature). Each covered objective is reached "
+                           "by a generated test that was replayed on the reference runtime; an infeasible one was "
+                           "proved unreachable.",
+                       "From " + c.file + " (cemv-coverage/1; the same matrix signature). Each covered objective is "
+                                          "reached by a generated test that was replayed on the reference runtime; an "
+                                          "infeasible one was proved unreachable.");
+  Table t;
+  t.widths_mm = {22, 22, 22, 22, 30, 22, 22, 22};
+  t.head = {"Objectives", "Covered", "Infeasible", "Undecided", "Coverage of the feasible", "Tests", "Steps", "Cycles"};
+  t.rows.push_back({number(c.objectives), number(c.covered), number(c.infeasible), number(c.undecided),
+                    cell(percent(double(c.covered), double(c.objectives - c.infeasible)),
+                         c.undecided ? "num warn" : "num ok"),
+                    number(c.tests), number(c.steps), number(c.cycles)});
+  pages.table(t);
 
   std::map<std::string, std::map<std::string, long long>> by_kind;  // kind -> status -> count
   for (const auto& ob : c.list) by_kind[ob.kind][ob.status]++, by_kind[ob.kind]["all"]++;
-  o << "<h3>Objectives by kind</h3>\n<table>\n<thead><tr><th>Kind</th><th>Objectives</th><th>Covered</th>"
-       "<th>Infeasible</th><th>Undecided</th></tr></thead>\n";
-  for (const auto& [kind, n] : by_kind) {
-    auto get = [&n = n](const char* k) { auto it = n.find(k); return it == n.end() ? 0LL : it->second; };
-    o << "<tr>";
-    cell(o, kind);
-    o << "<td class=\"num\">" << get("all") << "</td><td class=\"num\">" << get("covered")
-      << "</td><td class=\"num\">" << get("infeasible") << "</td><td class=\"num" << (get("undecided") ? " warn" : "")
-      << "\">" << get("undecided") << "</td></tr>\n";
+  pages.section("coverage-kinds", n + ".2", "Objectives by kind");
+  Table k;
+  k.widths_mm = {66, 30, 30, 30, 30};
+  k.head = {"Kind", "Objectives", "Covered", "Infeasible", "Undecided"};
+  for (const auto& [kind, counts] : by_kind) {
+    auto get = [&counts = counts](const char* key) {
+      auto it = counts.find(key);
+      return it == counts.end() ? 0LL : it->second;
+    };
+    k.rows.push_back({cell(kind), number(get("all")), number(get("covered")), number(get("infeasible")),
+                      number(get("undecided"), get("undecided") ? "warn" : "")});
   }
-  o << "</table>\n";
+  pages.table(k);
 
-  o << "<h3>Tests</h3>\n<table>\n<thead><tr><th>Test</th><th>File</th><th>SIF</th><th>Steps</th><th>Cycles</th>"
-       "<th>Objectives covered</th></tr></thead>\n";
-  for (const auto& t : c.test_list) {
-    o << "<tr>";
-    cell(o, t.id);
-    cell(o, t.file);
-    o << "<td class=\"num\">" << t.sif << "</td><td class=\"num\">" << t.steps << "</td><td class=\"num\">" << t.cycles
-      << "</td><td class=\"num\">" << t.objectives << "</td></tr>\n";
-  }
-  o << "</table>\n";
+  pages.section("coverage-tests", n + ".3", "Tests");
+  Table tt;
+  tt.widths_mm = {20, 96, 14, 16, 16, 24};
+  tt.head = {"Test", "File", "SIF", "Steps", "Cycles", "Objectives covered"};
+  tt.font_pt = 8;
+  for (const auto& x : c.test_list)
+    tt.rows.push_back({cell(x.id), cell(x.file), number(x.sif), number(x.steps), number(x.cycles),
+                       number(static_cast<long long>(x.objectives))});
+  pages.table(tt);
 
   std::size_t open = 0;
   for (const auto& ob : c.list) open += ob.status != "covered";
   if (open == 0) {
-    o << "<p class=\"ok\">Every objective is covered.</p>\n";
+    pages.paragraph("Every objective is covered.", "ok");
     return;
   }
-  o << "<h3>Objectives not covered</h3>\n<table>\n<thead><tr><th>Objective</th><th>Element</th><th>Status</th>"
-       "<th>What it asks</th><th>Method</th></tr></thead>\n";
-  for (const auto& ob : c.list) {
-    if (ob.status == "covered") continue;
-    o << "<tr>";
-    cell(o, ob.id);
-    cell(o, ob.element);
-    cell(o, ob.status, verdict_css(ob.status));
-    cell(o, ob.text);
-    cell(o, ob.method.empty() ? "-" : ob.method);
-    o << "</tr>\n";
-  }
-  o << "</table>\n";
+  pages.section("coverage-open", n + ".4", "Objectives not covered");
+  Table o;
+  o.widths_mm = {30, 30, 22, 74, 30};
+  o.head = {"Objective", "Element", "Status", "What it asks", "Method"};
+  o.font_pt = 8;
+  for (const auto& ob : c.list)
+    if (ob.status != "covered")
+      o.rows.push_back({cell(ob.id), cell(ob.element), cell(ob.status, verdict_css(ob.status)), cell(ob.text),
+                        cell(ob.method.empty() ? "-" : ob.method)});
+  pages.table(o);
 }
 
-void mutation(std::ostream& o, const MutationFigures& f) {
-  o << "<h3>Mutation adequacy</h3>\n<p>From <code>" << html_escape(f.file) << "</code> (cemv-mutation-report/1): "
-    << "every single-point change of the matrix, and whether the suite notices it. A mutant that survives is a "
-       "change the tests would let through.</p>\n";
-  o << "<table>\n<tr><th>Mutants</th><th>Equivalent</th><th>Detected</th><th>Survived</th><th>Undecided</th>"
-       "<th>Refused edits</th><th>Mutation score</th></tr>\n<tr>";
-  for (long long v : {f.mutants, f.equivalent, f.detected}) o << "<td class=\"num\">" << v << "</td>";
-  o << "<td class=\"num" << (f.survived ? " bad" : "") << "\">" << f.survived << "</td><td class=\"num"
-    << (f.undecided ? " warn" : "") << "\">" << f.undecided << "</td><td class=\"num\">" << f.refused << "</td>";
-  o << "<td class=\"num\">" << percent(double(f.detected), double(f.mutants - f.equivalent)) << "</td></tr>\n</table>\n";
+void mutation(Pages& pages, const MutationFigures& f, const std::string& n) {
+  pages.section("mutation", n + ".5", "Mutation adequacy");
+  pages.paragraph("From " + f.file + " (cemv-mutation-report/1): every single-point change of the matrix, and whether "
+                  "the suite notices it. A mutant that survives is a change the tests would let through.");
+  Table t;
+  t.widths_mm = {26, 26, 26, 26, 26, 26, 30};
+  t.head = {"Mutants", "Equivalent", "Detected", "Survived", "Undecided", "Refused edits", "Mutation score"};
+  t.rows.push_back({number(f.mutants), number(f.equivalent), number(f.detected),
+                    number(f.survived, f.survived ? "bad" : ""), number(f.undecided, f.undecided ? "warn" : ""),
+                    number(f.refused), cell(percent(double(f.detected), double(f.mutants - f.equivalent)), "num")});
+  pages.table(t);
   if (f.open.empty()) return;
-  o << "<table>\n<thead><tr><th>Mutant</th><th>Element</th><th>Change</th><th>Status</th></tr></thead>\n";
-  for (const auto& mu : f.open) {
-    o << "<tr>";
-    cell(o, mu.id);
-    cell(o, mu.element);
-    cell(o, mu.description);
-    cell(o, mu.status, verdict_css(mu.status));
-    o << "</tr>\n";
-  }
-  o << "</table>\n";
+  Table o;
+  o.widths_mm = {30, 36, 96, 24};
+  o.head = {"Mutant", "Element", "Change", "Status"};
+  o.font_pt = 8;
+  for (const auto& mu : f.open)
+    o.rows.push_back({cell(mu.id), cell(mu.element), cell(mu.description), cell(mu.status, verdict_css(mu.status))});
+  pages.table(o);
 }
 
 }  // namespace
 
-void response_section(std::ostream& o, const model::Matrix& m, const EvidenceInputs& in) {
-  o << "<section class=\"page\">\n<h2>4. Response time of the safety functions</h2>\n";
+void response_section(Pages& pages, const model::Matrix& m, const EvidenceInputs& in, const std::string& n) {
+  pages.chapter("response", n, "Response time of the safety functions");
   if (!in.response) {
-    o << "<p class=\"warn\">Not analysed (<code>cemv evidence --response</code> adds the worst-case response "
-         "time of every SIF path, as <code>cemv response</code> computes it).</p>\n</section>\n";
+    pages.paragraph("Not analysed (cemv evidence --response adds the worst-case response time of every SIF path, as "
+                    "cemv response computes it).",
+                    "warn");
     return;
   }
   const auto& r = *in.response;
   if (r.paths.empty()) {
-    o << "<p>The matrix declares no SIF group with a path from a cause to an effect.</p>\n</section>\n";
+    pages.paragraph("The matrix declares no SIF group with a path from a cause to an effect.");
     return;
   }
-  o << "<p>Logic response: the least number of cycles T proved for \"whenever the trigger rises and holds, the "
-       "response holds within T\", with T - 1 falsified by a counterexample replayed on the runtime. Total = "
-       "sensor + T x cycle (" << m.cycle_ms << " ms) + controller's share (" << html_escape(r.controller)
-    << ") + actuator (docs/response-time.md). Sensor and actuator times are declared in the matrix, not "
-       "measured.</p>\n";
-  int sif = -1;
-  for (const auto& p : r.paths) {
-    if (p.sif != sif) {
-      if (sif != -1) o << "</table>\n";
-      sif = p.sif;
-      o << "<h3>SIF " << p.sif << " " << html_escape(p.sif_name) << ": process safety time "
-        << (p.process_safety_time_ms ? html_escape(ms(p.process_safety_time_ms)) : "not declared")
-        << "</h3>\n<table>\n<thead><tr><th>Path</th><th>Logic</th><th>Total</th><th>Margin</th><th>Verdict</th>"
-           "<th>Degraded total</th></tr></thead>\n";
+  pages.paragraph("Logic response: the least number of cycles T proved for \"whenever the trigger rises and holds, "
+                  "the response holds within T\", with T - 1 falsified by a counterexample replayed on the runtime. "
+                  "Total = sensor + T x cycle (" + std::to_string(m.cycle_ms) + " ms) + controller's share (" +
+                  r.controller + ") + actuator (docs/response-time.md). Sensor and actuator times are declared in the "
+                  "matrix, not measured.");
+  std::size_t i = 0;
+  while (i < r.paths.size()) {
+    const int sif = r.paths[i].sif;
+    const auto& first = r.paths[i];
+    pages.section("sif-" + std::to_string(sif), "",
+                  "SIF " + std::to_string(sif) + " " + first.sif_name + ": process safety time " +
+                      (first.process_safety_time_ms ? ms(first.process_safety_time_ms) : std::string("not declared")),
+                  false);
+    Table t;
+    t.widths_mm = {52, 34, 22, 30, 20, 28};
+    t.head = {"Path", "Logic", "Total", "Margin", "Verdict", "Degraded total"};
+    for (; i < r.paths.size() && r.paths[i].sif == sif; ++i) {
+      const auto& p = r.paths[i];
+      std::string margin = ms(p.margin_ms);
+      if (p.margin_percent) {
+        char buf[32];
+        std::snprintf(buf, sizeof buf, " (%.1f %%)", *p.margin_percent);
+        margin += buf;
+      }
+      t.rows.push_back({cell(p.path), cell(p.logic), cell(ms(p.total_ms), "num"), cell(margin, "num"),
+                        cell(p.verdict, verdict_css(p.verdict)), cell(ms(p.degraded_total_ms), "num")});
     }
-    std::string margin = ms(p.margin_ms);
-    if (p.margin_percent) {
-      char buf[32];
-      std::snprintf(buf, sizeof buf, " (%.1f %%)", *p.margin_percent);
-      margin += buf;
-    }
-    o << "<tr>";
-    cell(o, p.path);
-    cell(o, p.logic);
-    o << "<td class=\"num\">" << html_escape(ms(p.total_ms)) << "</td><td class=\"num\">" << html_escape(margin)
-      << "</td>";
-    cell(o, p.verdict, verdict_css(p.verdict));
-    o << "<td class=\"num\">" << html_escape(ms(p.degraded_total_ms)) << "</td></tr>\n";
+    pages.table(t);
   }
-  o << "</table>\n</section>\n";
 }
 
-void tests_section(std::ostream& o, const EvidenceInputs& in) {
-  o << "<section class=\"page\">\n<h2>5. Test generation: coverage and mutation figures</h2>\n";
+void tests_section(Pages& pages, const EvidenceInputs& in, const std::string& n) {
+  pages.chapter("tests", n, "Test generation: coverage and mutation figures");
   if (!in.coverage)
-    o << "<p class=\"warn\">No test generation results given (<code>cemv evidence --coverage "
-         "DIR/coverage.json</code> adds those of <code>cemv testgen</code>).</p>\n";
+    pages.paragraph("No test generation results given (cemv evidence --coverage DIR/coverage.json adds those of cemv "
+                    "testgen).",
+                    "warn");
   else
-    coverage(o, *in.coverage);
+    coverage(pages, *in.coverage, n);
   if (!in.mutation)
-    o << "<p class=\"warn\">No mutation figures given (<code>cemv evidence --mutation "
-         "DIR/mutation-report.json</code> adds those of <code>cemv testgen --mutation-report</code>).</p>\n";
+    pages.paragraph("No mutation figures given (cemv evidence --mutation DIR/mutation-report.json adds those of cemv "
+                    "testgen --mutation-report).",
+                    "warn");
   else
-    mutation(o, *in.mutation);
-  o << "</section>\n";
+    mutation(pages, *in.mutation, n);
 }
 
 }  // namespace cemv::reports::evidence_detail

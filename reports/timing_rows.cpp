@@ -78,10 +78,25 @@ std::string output_name(const model::Matrix& m, const model::Observable& o) {
   return e->tags[static_cast<std::size_t>(o.tag - 1)].name;
 }
 
+// A row as a reader names it: "cause 1 LT100_HH active", "effect 2 TRIP_PUMP
+// tag[1]" (the key alone when the element has no name).
+std::string observable_label(const model::Matrix& m, const model::Observable& o) {
+  const bool cause = o.kind == model::Node::Kind::Cause;
+  std::string name;
+  if (cause) {
+    if (const auto* c = m.find_cause(o.id)) name = c->name;
+  } else if (const auto* e = m.find_effect(o.id)) {
+    name = e->name;
+  }
+  std::string field = o.field == "tag" ? "tag[" + std::to_string(o.tag) + "]" : o.field;
+  return std::string(cause ? "cause " : "effect ") + std::to_string(o.id) + (name.empty() ? "" : " " + name) + " " +
+         field;
+}
+
 Row observable_row(const model::Matrix& m, const checker::ConcreteTrace& t, const model::Observable& o,
                    std::size_t index) {
   Row r;
-  r.label = o.key;
+  r.label = observable_label(m, o);
   r.kind = o.type != model::FieldType::Bool ? RowKind::Bus : is_timer(m, o) ? RowKind::Timer : RowKind::Digital;
   if (r.kind == RowKind::Timer) {
     r.duration_ms = timer_duration(m, o);

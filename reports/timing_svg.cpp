@@ -4,10 +4,13 @@
 // legend under them. The geometry is timing_layout.hpp's.
 #include "reports/timing_svg.hpp"
 
+#include "reports/check_report.hpp"
+
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "reports/check_report.hpp"
 #include "reports/timing_layout.hpp"
 #include "reports/timing_rows.hpp"
 #include "reports/xml_text.hpp"
@@ -114,6 +117,10 @@ class Drawing {
 
   std::vector<std::string> footer() const {
     std::vector<std::string> out;
+    if (!l_.d.notes.empty()) {
+      out.push_back("Why, per step (the rules of docs/semantics.md the runtime applied):");
+      for (const auto& n : l_.d.notes) out.push_back("\u2022 " + n);
+    }
     // The legend names only what this picture draws.
     bool levels = false, bad = false, timers = false;
     for (const auto& r : l_.rows) {
@@ -225,6 +232,7 @@ TimingDiagram diagram_of(const checker::PropertyResult& p) {
   if (p.violation_cycle >= 0)
     d.marks.push_back({static_cast<std::size_t>(p.violation_cycle),
                        std::string(witness ? "reached: " : "violated: ") + p.name});
+  d.notes = explanation_lines(p);  // "why, per step", under the picture
   return d;
 }
 

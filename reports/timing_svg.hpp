@@ -39,6 +39,9 @@ struct TimingDiagram {
   // Cycles (0-based) at which a test checks its expectations: small ticks
   // under the cycle axis, without a line of text each (a test has many).
   std::vector<std::size_t> checks;
+  // Lines written under the picture, before the legend: the explanation of
+  // a counterexample, one line per change (checker::StepNote).
+  std::vector<std::string> notes;
 };
 
 // The diagram of `trace` (inputs indexed by model::InputTable(m), observables

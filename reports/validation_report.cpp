@@ -8,11 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "reports/sarif.hpp"
 #include "reports/xml_text.hpp"
-
-#ifndef CEMV_HOME_URI
-#define CEMV_HOME_URI "https://cemv.invalid/"
-#endif
 
 namespace cemv::reports {
 
@@ -211,24 +208,7 @@ std::string junit(const std::vector<ValidatedFile>& files, const ValidationSumma
   return out.str();
 }
 
-// A relative path as a URI reference (RFC 3986 section 2).
-std::string uri_of_path(const std::string& path) {
-  static const char* hex = "0123456789ABCDEF";
-  std::string out;
-  for (unsigned char c : path) {
-    bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' ||
-                 c == '.' || c == '_' || c == '~' || c == '/';
-    if (plain) {
-      out += static_cast<char>(c);
-    } else {
-      out += '%';
-      out += hex[c >> 4];
-      out += hex[c & 15];
-    }
-  }
-  return out;
-}
-
+// A finding's place in SARIF: the file, the line and column.
 ordered_json sarif_location(const std::string& file, std::size_t line, std::size_t column) {
   ordered_json physical;
   physical["artifactLocation"] = {{"uri", uri_of_path(file)}};
@@ -250,7 +230,7 @@ std::string sarif(const std::vector<ValidatedFile>& files, const ValidationOptio
     r["fullDescription"] = {{"text", section.empty() ? meaning : meaning + " (manual section " + section + ")"}};
     r["help"] = {{"text", "Rule " + id + (section.empty() ? "" : " of manual section " + section) + ": " + meaning +
                               ". docs/validation.md lists every rule."}};
-    r["helpUri"] = std::string(CEMV_HOME_URI) + "docs/validation.md";
+    r["helpUri"] = sarif_help_uri("validation.md");
     r["defaultConfiguration"] = {{"level", level}};
     r["properties"] = {{"section", section}};
     rules.push_back(std::move(r));
@@ -296,7 +276,7 @@ std::string sarif(const std::vector<ValidatedFile>& files, const ValidationOptio
   ordered_json driver;
   driver["name"] = "cemv";
   driver["version"] = o.tool_version;
-  driver["informationUri"] = CEMV_HOME_URI;
+  driver["informationUri"] = kSarifInformationUri;
   driver["rules"] = std::move(rules);
   ordered_json run;
   run["tool"] = {{"driver", std::move(driver)}};

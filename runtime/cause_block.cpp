@@ -79,6 +79,12 @@ bool CauseBlock::tag_tripped(float value, bool bad, int position, float threshol
 // used only here) so that the split costs no calls (bench_runtime).
 void CauseBlock::evaluate(const Signals& s, std::uint64_t k) {
   active_before_ = active_;  // prev(active), for first out (C.11)
+  facts_.soft_bypass_expired = false;
+  facts_.ack_cleared = facts_.ack_ignored = false;
+  facts_.was_timed = timed_before_;
+  facts_.was_bypassed = bypassed_;
+  facts_.was_inhibited = inhibited_;
+  facts_.was_latched = ack_latch_;
   expire_soft_bypass(k);                                  // C.1
   TagReadings tags{};
   read_tags(s, tags);                                     // C.2
@@ -91,6 +97,10 @@ void CauseBlock::evaluate(const Signals& s, std::uint64_t k) {
   latch_acknowledgement(tr, tm);                          // C.7
   // C.8 Active.
   active_ = (tm || ack_latch_) && !bypassed_ && !inhibited_;
+  facts_.value = tags.value;
+  facts_.bad = tags.bad;
+  facts_.votes = out.votes;
+  facts_.timed = tm;
   trip_requested_ = tr;
   // Memory for the next cycle.
   trip_requested_before_ = tr;
@@ -102,6 +112,7 @@ inline void CauseBlock::expire_soft_bypass(std::uint64_t k) {
   if (soft_bypass_ && cfg_.soft_bypass_timed && k - soft_bypass_start_ >= cfg_.soft_bypass_cycles) {
     soft_bypass_ = false;
     bypass_timeout_ = true;
+    facts_.soft_bypass_expired = true;
   }
   bypass_prealarm_ = soft_bypass_ && cfg_.soft_bypass_timed && cfg_.soft_bypass_prealarm &&
                      k - soft_bypass_start_ >= cfg_.soft_bypass_prealarm_cycles;
@@ -133,19 +144,25 @@ inline bool CauseBlock::vote(const TagReadings& tags, const TakenOut& out) {
   const float threshold = hysteresis_mode ? cfg_.relaxed_threshold : cfg_.limit;
   int tripped = 0;
   int tripped_strict = 0;
+  facts_.tripped = {};
+  facts_.threshold = threshold;
+  facts_.hysteresis_mode = hysteresis_mode;
+  facts_.voting_tags = voting_tags;
   for (int i = 0; i < cfg_.tag_count; ++i) {
     if (!out.votes[i]) continue;
-    if (tag_tripped(tags.value[i], tags.bad[i], i, threshold)) ++tripped;
+    if (tag_tripped(tags.value[i], tags.bad[i], i, threshold)) ++tripped, facts_.tripped[i] = true;
     if (tag_tripped(tags.value[i], tags.bad[i], i, cfg_.limit)) ++tripped_strict;
   }
   bool trip_requested = false;
   bool strict_request = false;
   if (voting_tags == 0) {
+    facts_.needed = 0;  // every tag taken out
     trip_requested = out.for_bad_quality;  // the "(1oo1)" rows of appendix B
     strict_request = trip_requested;
     voting_ = out.for_bad_quality ? model::Voting::OneOoOne : model::Voting::Bypass;
   } else {
     const int x = std::max(1, cfg_.configured_x - out.count);
+    facts_.needed = x;
     trip_requested = tripped >= x;
     strict_request = tripped_strict >= x;
     voting_ = voting_of(x, voting_tags);
@@ -225,6 +242,7 @@ inline bool CauseBlock::time_function(bool tr, std::uint64_t k) {
 // C.8 (inputs) Bypass and inhibit of this cycle.
 inline void CauseBlock::read_bypass_and_inhibit(const Signals& s) {
   const bool hard_bypass = cfg_.has_bypass_tag && s.read_bool(cfg_.bypass_tag);
+  facts_.hard_bypass = hard_bypass;
   bypassed_ = hard_bypass || soft_bypass_;
   inhibited_ = cfg_.has_inhibit_tag && s.read_bool(cfg_.inhibit_tag);
 }
@@ -234,6 +252,8 @@ inline void CauseBlock::read_bypass_and_inhibit(const Signals& s) {
 // inhibited.
 inline void CauseBlock::latch_acknowledgement(bool tr, bool tm) {
   if (cfg_.has_ack_latch) {
+    facts_.ack_cleared = ack_requested_ && !tr && ack_latch_;
+    facts_.ack_ignored = ack_requested_ && tr;
     if (ack_requested_ && !tr) ack_latch_ = false;
     if (tm && !bypassed_ && !inhibited_) ack_latch_ = true;
   }

@@ -63,6 +63,27 @@ struct CauseConfig {
   bool mutually_locked = false;
 };
 
+// What the last evaluation of a cause did (C.1-C.8), for the explanations of
+// runtime/explain.hpp: plain values written by every evaluation, read only
+// when a caller asks why a field changed.
+struct CauseFacts {
+  std::array<float, model::kMaxCauseTags> value{};  // C.2
+  std::array<bool, model::kMaxCauseTags> bad{};
+  std::array<bool, model::kMaxCauseTags> votes{};   // not taken out (C.3)
+  std::array<bool, model::kMaxCauseTags> tripped{}; // among the voting tags, at the threshold in use (C.3)
+  int needed = 1;                    // X' of the resulting logic (C.4)
+  int voting_tags = 0;               // m (C.4)
+  float threshold = 0.0f;            // analog: the threshold in use (C.4)
+  bool hysteresis_mode = false;      // C.4
+  bool timed = false;                // TM (C.6)
+  bool soft_bypass_expired = false;  // C.1
+  bool hard_bypass = false;          // C.8
+  bool ack_cleared = false;          // C.7: an accepted ack_cause cleared the latch
+  bool ack_ignored = false;          // C.7: an ack while the trip was still requested
+  // The previous cycle's values the rules compare with.
+  bool was_timed = false, was_bypassed = false, was_inhibited = false, was_latched = false;
+};
+
 class CauseBlock {
  public:
   CauseBlock() = default;
@@ -88,6 +109,7 @@ class CauseBlock {
 
   bool active() const { return active_; }
   int field(CauseField f) const;
+  const CauseFacts& facts() const { return facts_; }
 
  private:
   // The per-cycle values passed between the steps of evaluate(), on the stack.
@@ -143,6 +165,7 @@ class CauseBlock {
   bool timer_running_ = false;
   bool bypass_timeout_ = false;
   bool bypass_prealarm_ = false;
+  CauseFacts facts_;
 };
 
 }  // namespace cemv::runtime

@@ -57,6 +57,7 @@ void EffectBlock::end_maintenance() {
 void EffectBlock::evaluate(Signals& s, int slot, std::uint64_t k) {
   // E.1 Reads: bypass, reset-tag edge (no edge in cycle 1, T.4).
   const bool hard_bypass = cfg_.has_bypass_tag && s.read_bool(cfg_.bypass_tag);
+  const bool bypassed_before = bypassed_;
   bypassed_ = hard_bypass || soft_bypass_;
   bool reset_tag_edge = false;
   if (cfg_.has_reset_tag) {
@@ -64,6 +65,20 @@ void EffectBlock::evaluate(Signals& s, int slot, std::uint64_t k) {
     reset_tag_edge = k > 1 && value && !reset_tag_before_;
     reset_tag_before_ = value;
   }
+
+  const std::array<bool, 4> was_request = facts_.request;
+  facts_ = EffectFacts{};
+  facts_.was_request = was_request;
+  facts_.was_bypassed = bypassed_before;
+  facts_.was_override = override_running_before_;
+  facts_.was_s_latch = s_latch_;
+  facts_.was_r_latch = r_latch_;
+  facts_.was_output_state = output_state_before_;
+  facts_.hard_bypass = hard_bypass;
+  facts_.toggle_by_tag = reset_tag_edge;
+  facts_.toggle_by_command = toggle_requested_;
+  facts_.reset_by_command = reset_requested_;
+  facts_.requesting_slot = {-1, -1, -1, -1};
 
   // E.2 Requests per intersection type: N, S, V, R.
   std::array<bool, 4> req{};
@@ -73,11 +88,15 @@ void EffectBlock::evaluate(Signals& s, int slot, std::uint64_t k) {
     if (link.in_xoon) {
       if (cause_active) ++xoon_active;
     } else if (cause_active) {
-      req[type_index(link.type)] = true;
+      const int t = type_index(link.type);
+      req[t] = true;
+      if (facts_.requesting_slot[t] < 0) facts_.requesting_slot[t] = link.cause_slot;
     }
   }
   if (cfg_.has_xoon && xoon_active >= cfg_.xoon_x) req[type_index(cfg_.xoon_type)] = true;
   const bool req_n = req[0], req_s = req[1], req_v = req[2], req_r = req[3];
+  facts_.request = req;
+  facts_.xoon_active = xoon_active;
 
   // E.3 Override. `was_running`: at the end of the previous cycle (so also
   // when a group deactivation ended it in phase 1 of this cycle).
@@ -92,15 +111,20 @@ void EffectBlock::evaluate(Signals& s, int slot, std::uint64_t k) {
     if (timeout) failed_timeout_ = true;
     if (new_cause) failed_cause_ = true;
     if (timeout || new_cause || no_request) override_running_ = false;
+    facts_.end_timeout = timeout;
+    facts_.end_new_cause = new_cause;
+    facts_.end_no_request = no_request;
   }
   // Step 2: a toggle request stops, else starts, else falls through to a reset.
   bool reset_request = reset_requested_;
   if (reset_tag_edge || toggle_requested_) {
     if (override_running_) {
       override_running_ = false;
+      facts_.override_stopped = true;
     } else if ((req_v || req_r) && !bypassed_ && !output_delay_running_before_ &&
                cfg_.has_override) {
       override_running_ = true;
+      facts_.override_started = true;
       override_start_ = k;
       for (std::size_t i = 0; i < cfg_.links.size(); ++i)
         active_at_override_start_[i] = s.cause_active[cfg_.links[i].cause_slot];
@@ -108,6 +132,7 @@ void EffectBlock::evaluate(Signals& s, int slot, std::uint64_t k) {
       failed_cause_ = false;
     } else {
       reset_request = true;
+      facts_.toggle_as_reset = true;
     }
   }
   reset_requested_ = false;
@@ -118,6 +143,9 @@ void EffectBlock::evaluate(Signals& s, int slot, std::uint64_t k) {
 
   // E.4 Reset: only once the request is gone and no output delay runs.
   if (reset_request) {
+    facts_.reset_cleared_s = s_latch_ && !req_s && !output_delay_running_before_;
+    facts_.reset_cleared_r = r_latch_ && !req_r && !output_delay_running_before_;
+    facts_.reset_blocked = (s_latch_ || r_latch_) && !facts_.reset_cleared_s && !facts_.reset_cleared_r;
     if (!req_s && !output_delay_running_before_) s_latch_ = false;
     if (!req_r && !output_delay_running_before_) r_latch_ = false;
   }
@@ -125,7 +153,10 @@ void EffectBlock::evaluate(Signals& s, int slot, std::uint64_t k) {
   // E.5 Latches; R needs no reset when its request falls during an override.
   if (req_s) s_latch_ = true;
   if (req_r) r_latch_ = true;
-  if (was_running && req_r_before_ && !req_r) r_latch_ = false;
+  if (was_running && req_r_before_ && !req_r) {
+    facts_.r_cleared_by_override = r_latch_;
+    r_latch_ = false;
+  }
 
   // E.6 Active.
   active_ = (req_n || s_latch_ || ((req_v || r_latch_) && !override_running_)) && !bypassed_;

@@ -60,6 +60,30 @@ struct EffectConfig {
   bool mutually_locked = false;
 };
 
+// What the last evaluation of an effect did, step by step (E.1-E.5), for the
+// explanations of runtime/explain.hpp. Plain values written by every
+// evaluation (no allocation), read only when a caller asks why a field changed.
+struct EffectFacts {
+  std::array<bool, 4> request{};           // req_N, req_S, req_V, req_R (E.2)
+  std::array<int, 4> requesting_slot{};    // per type: the first active cause outside XooN (-1: none)
+  int xoon_active = 0;                     // active causes of the XooN assignment
+  bool hard_bypass = false;                // E.1
+  bool toggle_by_tag = false;              // a rising edge of the reset tag (E.1)
+  bool toggle_by_command = false;          // an accepted override_effect / stop_override (O.3)
+  bool reset_by_command = false;           // an accepted reset_effect (O.2)
+  bool toggle_as_reset = false;            // a toggle with no override to start or stop (E.3 step 2)
+  bool override_started = false;           // E.3 step 2
+  bool override_stopped = false;           // E.3 step 2
+  bool end_timeout = false, end_new_cause = false, end_no_request = false;  // E.3 step 1
+  bool reset_cleared_s = false, reset_cleared_r = false;                    // E.4
+  bool r_cleared_by_override = false;      // E.5
+  bool reset_blocked = false;              // a reset request while a request or the delay held the latch (E.4)
+  // The previous cycle's values the rules compare with.
+  std::array<bool, 4> was_request{};
+  bool was_bypassed = false, was_override = false, was_s_latch = false, was_r_latch = false;
+  bool was_output_state = false;
+};
+
 class EffectBlock {
  public:
   EffectBlock() = default;
@@ -87,6 +111,8 @@ class EffectBlock {
   bool active() const { return active_; }
   bool output(int position) const { return output_[position]; }
   int field(EffectField f) const;
+  const EffectFacts& facts() const { return facts_; }
+  bool output_state() const { return output_state_; }  // OS of E.7
 
  private:
   EffectConfig cfg_;
@@ -124,6 +150,7 @@ class EffectBlock {
   bool output_state_ = false;
   bool output_delay_running_ = false;
   std::array<bool, model::kMaxEffectTags> output_{};
+  EffectFacts facts_;
 };
 
 }  // namespace cemv::runtime

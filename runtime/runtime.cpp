@@ -12,6 +12,7 @@
 #include "model/vocabulary.hpp"
 #include "runtime/cause_block.hpp"
 #include "runtime/effect_block.hpp"
+#include "runtime/explain_rules.hpp"
 #include "runtime/signals.hpp"
 
 namespace cemv::runtime {
@@ -49,6 +50,7 @@ struct CompiledObservable {
 struct SimulationTarget {
   std::string key;
   int input_index = -1;                          // cause input tag
+  bool allowed = true;                           // no reader or writer forbids it (O.8)
   std::vector<std::pair<int, int>> readers;      // (cause slot, position) reading it
   std::vector<std::pair<int, int>> outputs;      // (effect slot, position) writing it
 };
@@ -78,6 +80,14 @@ struct Runtime::Impl {
 
   std::uint64_t cycle = 0;
   int refused = 0;
+  bool group_deactivated = false;  // M.2 fired in the last cycle
+
+  // Explanations (explain.hpp), only while explaining.
+  bool explaining = false;
+  std::vector<int> before;
+  std::vector<std::uint8_t> accepted;  // per command of the cycle
+  std::vector<Explanation> explanations;
+  void explain_cycle(const model::CycleInput& in);
 
   explicit Impl(const model::Matrix& m);
   int cause_slot(int id) const;
@@ -276,7 +286,7 @@ Runtime::Impl::Impl(const model::Matrix& m) : matrix(m), inputs(m) {
   auto target = [&](const std::string& key) -> SimulationTarget& {
     for (auto& t : simulation_targets)
       if (t.key == key) return t;
-    simulation_targets.push_back(SimulationTarget{key, -1, {}, {}});
+    simulation_targets.push_back(SimulationTarget{key, -1, true, {}, {}});
     return simulation_targets.back();
   };
   for (std::size_t slot = 0; slot < causes.size(); ++slot) {
@@ -286,12 +296,16 @@ Runtime::Impl::Impl(const model::Matrix& m) : matrix(m), inputs(m) {
       SimulationTarget& t = target(cfg.tag_key[i]);
       t.input_index = cfg.input_index[i];
       t.readers.emplace_back(static_cast<int>(slot), i);
+      if (!matrix.find_cause(cause_ids[slot])->tags[i].simulation_allowed) t.allowed = false;
     }
   }
   for (std::size_t slot = 0; slot < effects.size(); ++slot) {
     const EffectConfig& cfg = effects[slot].config();
-    for (int j = 0; j < cfg.tag_count; ++j)
-      target(cfg.tag_key[j]).outputs.emplace_back(static_cast<int>(slot), j);
+    for (int j = 0; j < cfg.tag_count; ++j) {
+      SimulationTarget& t = target(cfg.tag_key[j]);
+      t.outputs.emplace_back(static_cast<int>(slot), j);
+      if (!matrix.find_effect(effect_ids[slot])->tags[j].simulation_allowed) t.allowed = false;
+    }
   }
 
   if (matrix.secure_write && !matrix.secure_write->enable_tag.empty()) {
@@ -354,6 +368,12 @@ void Runtime::Impl::step(const model::CycleInput& in) {
   const std::uint64_t k = cycle;
   signals.input = &in;
   refused = 0;
+  group_deactivated = false;
+  if (explaining) {
+    before.resize(observables.size());
+    for (std::size_t i = 0; i < observables.size(); ++i) before[i] = read(observables[i]);
+    accepted.clear();
+  }
 
   // Phase 1: group deactivation (M.2).
   if (has_group_deactivation) {
@@ -361,13 +381,16 @@ void Runtime::Impl::step(const model::CycleInput& in) {
     const bool set = signals.read_bool(gdm_set);
     const bool edge = k > 1 && set && !gdm_set_before;
     gdm_set_before = set;
-    if (enable && edge) group_deactivation();
+    group_deactivated = enable && edge;
+    if (group_deactivated) group_deactivation();
   }
 
   // Phase 2: operator commands, in order, gated by secure write (M.3).
   const bool secure_write_open = !has_secure_write || signals.read_bool(secure_write_enable);
   for (const model::Command& c : in.commands) {
-    if (!secure_write_open || !apply(c)) ++refused;
+    const bool ok = secure_write_open && apply(c);
+    if (!ok) ++refused;
+    if (explaining) accepted.push_back(ok);
   }
 
   // Phase 3: every cause and effect in the evaluation order (I.4).
@@ -393,7 +416,33 @@ void Runtime::Impl::step(const model::CycleInput& in) {
         break;
       }
   }
+  if (explaining) explain_cycle(in);
   signals.input = nullptr;
+}
+
+// Every observable that changed in this cycle, with the rule that changed it
+// (explain_rules.cpp reads what each block recorded in its facts).
+void Runtime::Impl::explain_cycle(const model::CycleInput& in) {
+  explanations.clear();
+  const CycleView view{matrix, in, accepted, group_deactivated, cause_ids, effect_ids, causes, effects};
+  for (std::size_t i = 0; i < observables.size(); ++i) {
+    const CompiledObservable& o = observables[i];
+    const int after = read(o);
+    if (after == before[i]) {
+      // An override that ended and was started again in the same cycle keeps
+      // its value but is a new override: worth saying (E.3 steps 1 and 2).
+      if (!o.is_cause && o.field == static_cast<int>(EffectField::OverrideActive) && after) {
+        const EffectFacts& f = effects[static_cast<std::size_t>(o.slot)].facts();
+        if (f.override_started && (f.end_timeout || f.end_new_cause || f.end_no_request))
+          explanations.push_back({i, before[i], after, why_effect(view, o.slot, o.field, 0, 1, 0) +
+                                                           "; in the same cycle a new override started (E.3 step 2)"});
+      }
+      continue;
+    }
+    std::string why = o.is_cause ? why_cause(view, o.slot, static_cast<CauseField>(o.field), before[i], after)
+                                 : why_effect(view, o.slot, o.field, o.tag, before[i], after);
+    explanations.push_back({i, before[i], after, std::move(why)});
+  }
 }
 
 void Runtime::Impl::group_deactivation() {
@@ -433,6 +482,7 @@ void Runtime::Impl::end_simulation(SimulationTarget& t) {
 bool Runtime::Impl::simulate(const model::Command& c) {
   for (SimulationTarget& t : simulation_targets) {
     if (!same_tag(t.key, c.tag_name)) continue;
+    if (!t.allowed) return false;  // simulation of this tag is not allowed (O.8)
     // Mutual lock (O.8).
     for (auto [slot, i] : t.readers)
       if (causes[slot].config().mutually_locked && another_tag_in_maintenance(slot, i)) return false;
@@ -568,5 +618,12 @@ std::optional<bool> Runtime::output(std::string_view tag) const {
 }
 
 int Runtime::commands_refused() const { return impl_->refused; }
+
+void Runtime::explain(bool on) {
+  impl_->explaining = on;
+  impl_->explanations.clear();
+}
+
+const std::vector<Explanation>& Runtime::explanations() const { return impl_->explanations; }
 
 }  // namespace cemv::runtime

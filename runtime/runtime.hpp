@@ -11,6 +11,7 @@
 
 #include "model/vocabulary.hpp"
 #include "model/matrix.hpp"
+#include "runtime/explain.hpp"
 
 namespace cemv::runtime {
 
@@ -43,6 +44,14 @@ class Runtime {
   std::optional<bool> output(std::string_view tag) const;
   // Commands refused in the last cycle (secure write, mutual lock, not allowed).
   int commands_refused() const;
+
+  // Explanations (runtime/explain.hpp): after explain(true), each step() also
+  // records why every observable that changed in that cycle changed, the
+  // rule of docs/semantics.md the blocks applied. Off by default, and then
+  // step() allocates nothing (bench_runtime).
+  void explain(bool on);
+  // The changes of the last step, in model::observables order (empty when off).
+  const std::vector<Explanation>& explanations() const;
 
  private:
   struct Impl;

@@ -143,12 +143,12 @@ cemv_cli_test(NAME cli_unknown_command_no_hint EXIT 2 MATCH "^error: unknown com
 
 # 4. Validation as a CI gate.
 cemv_cli_test(NAME cli_validate_many_summary EXIT 1
-  MATCH "^3 files: 2 clean, 1 with errors. 2 errors, 1 warnings$"
+  MATCH "^3 files: 2 clean, 1 with errors. 2 errors, 6 warnings$"
   COMMAND ${_c} validate ${_tank} ${_hipps} ${_errors})
 cemv_cli_test(NAME cli_validate_many_unreadable_exit_2 EXIT 2
-  MATCH "^3 files: 1 clean, 1 with errors, 1 unreadable. 2 errors, 1 warnings$"
+  MATCH "^3 files: 1 clean, 1 with errors, 1 unreadable. 2 errors, 3 warnings$"
   COMMAND ${_c} validate ${_tank} ${_errors} no/such.json)
-cemv_cli_test(NAME cli_validate_warnings_as_errors EXIT 1 MATCH "^1 files: 0 clean, 1 with errors. 0 errors, 2 warnings$"
+cemv_cli_test(NAME cli_validate_warnings_as_errors EXIT 1 MATCH "^1 files: 0 clean, 1 with errors. 0 errors, 3 warnings$"
   COMMAND ${_c} validate tests/model/validate_cases/warnings.json --format gcc --warnings-as-errors)
 cemv_cli_test(NAME cli_validate_warnings_as_errors_are_errors EXIT 1
   MATCH "^tests/model/validate_cases/warnings.json:6:5: error: \\[W-TIMER-ROUNDING\\] cause\\[1\\] PSH_1: "

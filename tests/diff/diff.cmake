@@ -29,7 +29,7 @@ if(TARGET cemv_diff)
     COMMAND $<TARGET_FILE:cemv> diff ${DIFF_CASES}/small_old.json ${DIFF_CASES}/small_invalid.json)
   cemv_cli_test(NAME cli_diff_missing_file_exit2 EXIT 2 MATCH "no_such_file.json.*error|error.*no_such_file.json"
     COMMAND $<TARGET_FILE:cemv> diff ${DIFF_CASES}/no_such_file.json ${DIFF_CASES}/small_new.json)
-  cemv_cli_test(NAME cli_diff_bad_format_exit2 EXIT 2 MATCH "--format 'xml': expected text, md, html or json"
+  cemv_cli_test(NAME cli_diff_bad_format_exit2 EXIT 2 MATCH "--format 'xml': expected text, md, html, json or sarif"
     COMMAND $<TARGET_FILE:cemv> diff ${DIFF_CASES}/small_old.json ${DIFF_CASES}/small_new.json --format xml)
   cemv_cli_test(NAME cli_diff_unwritable_exit2 EXIT 2 MATCH "error"
     COMMAND $<TARGET_FILE:cemv> diff ${DIFF_CASES}/small_old.json ${DIFF_CASES}/small_new.json

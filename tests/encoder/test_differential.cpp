@@ -60,6 +60,24 @@ TEST_P(LargeShard, RuntimeAndEncoderAgreeEveryCycle) {
 }
 INSTANTIATE_TEST_SUITE_P(Shards, LargeShard, ::testing::Range(0, 2));
 
+// Tags whose simulation is not allowed (O.8): both refuse simulate_tag on
+// them, whatever the value, and agree on everything else.
+TEST(SimulationRestricted, RuntimeAndEncoderAgreeEveryCycle) {
+  testsupport::MatrixOptions opt;
+  opt.p_simulation_forbidden = 0.4;
+  int restricted = 0;
+  for (int i = 0; i < 40; ++i) {
+    std::uint64_t seed = 700000u + static_cast<std::uint64_t>(i);
+    model::Matrix m = testsupport::random_matrix(seed, opt);
+    for (const auto& c : m.causes)
+      for (const auto& t : c.tags) restricted += !t.simulation_allowed;
+    auto inputs = testsupport::random_inputs(m, seed, kCycles);
+    auto d = encoder_test::compare(m, inputs);
+    ASSERT_FALSE(d.has_value()) << encoder_test::report(seed, m, inputs, *d);
+  }
+  EXPECT_GT(restricted, 10);  // the option was exercised
+}
+
 // Regression (found by the differential test, seed 1169, while the runtime was
 // in progress): a group deactivation ends a running override in the cycle
 // where req_R falls. E.5 clears the R latch because the override was running

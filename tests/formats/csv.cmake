@@ -1,6 +1,7 @@
 # Spreadsheet import/export (6.6, docs/csv.md).
 add_executable(test_formats_csv ${CMAKE_CURRENT_LIST_DIR}/test_csv.cpp ${CMAKE_CURRENT_LIST_DIR}/test_csv_grid.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/test_csv_layouts.cpp)
+  ${CMAKE_CURRENT_LIST_DIR}/test_csv_layouts.cpp ${CMAKE_CURRENT_LIST_DIR}/test_sheet_layout.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/test_csv_vendor.cpp)
 target_link_libraries(test_formats_csv PRIVATE cemv_formats GTest::gtest_main)
 target_compile_definitions(test_formats_csv PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 gtest_discover_tests(test_formats_csv DISCOVERY_MODE PRE_TEST)
@@ -77,3 +78,23 @@ foreach(matrix ${example_matrices})
     COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/csv_cases/cli_grid_round_trip.sh $<TARGET_FILE:cemv>
             ${matrix} ${CSV_TMP}/grid_round_trip)
 endforeach()
+
+# Vendor sheets (docs/csv.md "Vendor sheets"): the layout description through
+# the command line: a malformed one refused at its line and column, the layout
+# used saved and given again, and what a grid cannot take refused.
+file(WRITE ${CSV_TMP}/bad_layout.json "{\"format\": \"cemv-sheet-layout/1\",\n \"marks\": {\"NP\": {\"type\": \"nothing\"}}}\n")
+cemv_cli_test(NAME cli_import_csv_sheet_layout_malformed EXIT 2
+  MATCH "bad_layout.json:2:19: error: marks.NP.type: must be N, S, V, R, X, \\* or none, not \"nothing\""
+  COMMAND $<TARGET_FILE:cemv> import-csv ${LSST} --sheet-layout ${CSV_TMP}/bad_layout.json -o ${CSV_TMP}/bad_layout_out.json)
+cemv_cli_test(NAME cli_import_csv_sheet_layout_saved_and_given_again EXIT 0
+  MATCH "^same matrix with the layout saved: [0-9a-f]+$"
+  COMMAND bash -c "$0 import-csv ${LSST} -o ${CSV_TMP}/first.json --save-layout ${CSV_TMP}/lsst_layout.json 2>/dev/null && $0 import-csv ${LSST} --sheet-layout ${CSV_TMP}/lsst_layout.json -o ${CSV_TMP}/again.json 2>/dev/null && python3 $1 ${CSV_TMP}/first.json ${CSV_TMP}/first_bare.json && python3 $1 ${CSV_TMP}/again.json ${CSV_TMP}/again_bare.json && cmp ${CSV_TMP}/first_bare.json ${CSV_TMP}/again_bare.json && echo \"same matrix with the layout saved: $($0 signature ${CSV_TMP}/again_bare.json)\"" $<TARGET_FILE:cemv> ${CMAKE_CURRENT_LIST_DIR}/without_import_records.py)
+cemv_cli_test(NAME cli_import_csv_layout_used_note EXIT 0
+  MATCH "note: layout used \\(found in the sheet. --save-layout keeps it\\): \\{\"format\":\"cemv-sheet-layout/1\",\"orientation\":\"causes-as-rows\",\"causes\":\\{\"id\":\"B\",\"description\":\"A\"\\},\"effects\":\\{\"id\":2,\"description\":1\\}"
+  COMMAND $<TARGET_FILE:cemv> import-csv ${LSST} -o ${CSV_TMP}/lsst_note.json)
+cemv_cli_test(NAME cli_import_csv_sheet_layout_with_records_refused EXIT 2
+  MATCH "--separator, --name and --orientation apply to grids, not to --layout records \\(so do --sheet-layout and --save-layout\\)"
+  COMMAND $<TARGET_FILE:cemv> import-csv ${LSST} --layout records --sheet-layout ${CSV_TMP}/bad_layout.json)
+cemv_cli_test(NAME cli_import_workbook_sheet_for_six_tables_refused EXIT 2
+  MATCH "holds the six tables of 6.6.2 \\(sheet 'Causes configuration'\\), which say where everything is"
+  COMMAND bash -c "$0 export-workbook examples/tank-overfill/matrix.json -o ${CSV_TMP}/tables.ods && $0 import-workbook ${CSV_TMP}/tables.ods --sheet 2" $<TARGET_FILE:cemv>)

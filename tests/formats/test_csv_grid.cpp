@@ -203,18 +203,44 @@ TEST(GridImport, LegendRowsExplainFootnotes) {
   EXPECT_FALSE(has_warning(r, "", "footnotes"));
 }
 
-TEST(GridImport, StrayValuesAreReportedAndNeverGuessed) {
-  auto r = import_csv(std::string(kHeader) +
-                          "High level;C-1;Yes;n;extra\n"
-                          "Low flow;C-2;R 1;S ( 2 )\n",
-                      "stray.csv");
-  EXPECT_TRUE(has_warning(r, "line 3, column 3", "stray value 'Yes'")) << warnings_text(r);
+TEST(GridImport, MarksWithoutMeaningAreRefusedNeverDropped) {
+  // A cell that is no mark may be a trip the sheet writes its own way (S*,
+  // NP, Yes): refused at its cell, every one of them, never dropped.
+  const std::string stray = std::string(kHeader) +
+                            "High level;C-1;Yes;n;extra\n"
+                            "Low flow;C-2;R 1;S ( 2 )\n";
+  try {
+    import_csv(stray, "stray.csv");
+    FAIL() << "a mark without a meaning";
+  } catch (const LoadError& e) {
+    ASSERT_EQ(e.issues().size(), 2u);
+    EXPECT_EQ(e.issues()[0].where, "stray.csv: line 3, column 3");
+    EXPECT_NE(e.issues()[0].what.find("mark 'Yes' at cause C_1 / effect E_1 has no meaning"), std::string::npos);
+    EXPECT_EQ(e.issues()[1].where, "stray.csv: line 4, column 3");
+    EXPECT_NE(e.issues()[1].what.find("mark 'R 1'"), std::string::npos);
+  }
+  // The layout gives them a meaning: read.
+  CsvImportOptions opt;
+  opt.sheet_layout = SheetLayout{};
+  opt.sheet_layout->marks["Yes"] = MarkMeaning{IntersectionType::N, ""};
+  opt.sheet_layout->marks["R 1"] = MarkMeaning{IntersectionType::R, "(1)"};
+  auto r = import_csv(stray, "stray.csv", opt);
   EXPECT_TRUE(has_warning(r, "line 3, column 4", "lower-case mark 'n' read as 'N'"));
   EXPECT_TRUE(has_warning(r, "line 3, column 5", "stray value 'extra' right of the last effect column"));
-  EXPECT_TRUE(has_warning(r, "line 4, column 3", "stray value 'R 1'"));
-  EXPECT_EQ(r.matrix.intersections.size(), 2u);
+  EXPECT_EQ(r.matrix.intersections.size(), 4u);
+  EXPECT_EQ(r.matrix.find_intersection(1, 1)->type, IntersectionType::N);
   EXPECT_EQ(r.matrix.find_intersection(1, 2)->type, IntersectionType::N);
+  EXPECT_EQ(r.matrix.find_intersection(2, 1)->note, "(1)");
   EXPECT_EQ(r.matrix.find_intersection(2, 2)->note, "(2)");  // blanks around a footnote are fine
+  // A mark right of the last effect column trips an effect the sheet does not have.
+  const std::string beyond = std::string(kHeader) + "High level;C-1;N;;S\n";
+  try {
+    import_csv(beyond, "beyond.csv");
+    FAIL() << "a mark under no effect";
+  } catch (const LoadError& e) {
+    EXPECT_EQ(e.issues()[0].where, "beyond.csv: line 3, column 5");
+    EXPECT_NE(e.issues()[0].what.find("right of the last effect column, under no effect id"), std::string::npos);
+  }
 }
 
 TEST(GridImport, LongDescriptionsAreTruncatedWithTheFullTextInTheNote) {

@@ -25,10 +25,15 @@ const std::filesystem::path kLsst =
 
 using Table = std::vector<std::vector<std::string>>;
 
+// The shared data beside the checkout (../shared/external), where the issues
+// point every test of the published tables.
+const std::filesystem::path kShared =
+    std::filesystem::path(CEMV_SOURCE_DIR).parent_path() / "shared" / "external";
+
 // The published table split into cells (';', no quoted fields in it).
-Table read_table(const std::string& file) {
+Table split_table(const std::string& text) {
   Table t;
-  std::istringstream in(read_text_file(kLsst / file));
+  std::istringstream in(text);
   for (std::string line; std::getline(in, line);) {
     if (!line.empty() && line.back() == '\r') line.pop_back();
     std::vector<std::string> row;
@@ -42,6 +47,9 @@ Table read_table(const std::string& file) {
   }
   return t;
 }
+
+Table read_table(const std::string& file) { return split_table(read_text_file(kLsst / file)); }
+Table read_shared_table(const std::string& file) { return split_table(read_text_file(kShared / file)); }
 
 std::string join(const Table& t) {
   std::string s;
@@ -156,12 +164,73 @@ TEST_P(LsstLayouts, OrientationOptionReadsTheTransposedTable) {
   const auto r = import_csv(join(transpose(table_)), "transposed.csv", opt);
   expect_same_reading(r.matrix, published_, count());
   EXPECT_NE(r.summary.find("orientation effects-as-rows as given by --orientation"), std::string::npos);
-  // Forced the other way, the evidence against it is a warning (an error under --strict).
+  // Forced the other way, against the corner labels: refused, since every
+  // cause would be read as an effect.
   opt.orientation = CsvOrientation::CausesAsRows;
-  const auto wrong = import_csv(join(transpose(table_)), "transposed.csv", opt);
-  EXPECT_TRUE(has_warning(wrong, "line 2", "say effects-as-rows; read as causes-as-rows as --orientation says"));
+  const std::string wrong = refusal(join(transpose(table_)), "transposed.csv", opt);
+  EXPECT_NE(wrong.find("transposed.csv: line 2: the corner labels ('Causes/Detection' in line 1, column 2; "
+                       "'Effects/Actuation' in line 2, column 1) say effects-as-rows; --orientation "
+                       "causes-as-rows would read every cause as an effect"),
+            std::string::npos)
+      << wrong;
+  // Against the id patterns alone, a given orientation is read, with a warning
+  // (an error under --strict): ids are only letters.
+  Table unlabelled = transpose(table_);
+  unlabelled[0][1] = "";
+  unlabelled[1][0] = "";
+  const auto r2 = import_csv(join(unlabelled), "unlabelled.csv", opt);
+  EXPECT_TRUE(has_warning(r2, "line 2", "say effects-as-rows; read as causes-as-rows as --orientation says"));
   opt.strict = true;
-  EXPECT_NE(refusal(join(transpose(table_)), "transposed.csv", opt).find("--orientation"), std::string::npos);
+  EXPECT_NE(refusal(join(unlabelled), "unlabelled.csv", opt).find("--orientation"), std::string::npos);
+}
+
+// The layout the table was first published in (2023-10-05, before it was
+// transposed): effects as rows behind an empty first row and column, a blank
+// in B2, the corner labels 'Causes/Detection' (C2) and 'Effects/Actuation'
+// (B3) one cell apart, and a lone `N` between them in C3. Rebuilt here from
+// the shared table (which carries no licence, so the project keeps no copy of
+// this layout): the header block is found from the corner labels and the id
+// patterns, so the table reads right whether the orientation is found or given.
+Table first_published(const Table& published) {
+  Table t = transpose(published);
+  t[0][0] = " ";
+  t[1][1] = "N";
+  Table out;
+  const std::size_t width = t[0].size() + 1;
+  out.push_back(std::vector<std::string>(width, ""));
+  for (const auto& row : t) {
+    std::vector<std::string> padded{""};
+    padded.insert(padded.end(), row.begin(), row.end());
+    out.push_back(padded);
+  }
+  out.push_back(std::vector<std::string>(width, ""));
+  return out;
+}
+
+TEST_P(LsstLayouts, FirstPublishedLayoutIsReadRightInEitherWay) {
+  // From the shared table itself, as the issue asks (../shared/external).
+  const Table shared = read_shared_table(GetParam().first);
+  ASSERT_EQ(join(shared), join(table_));
+  const std::string text = join(first_published(shared));
+  ASSERT_EQ(text.rfind(std::string(38, ';') + "\n; ;Causes/Detection;Azimuth axis CW", 0), 0u) << text.substr(0, 80);
+  const std::string expected_summary =
+      "read 36 causes (columns 4-39, ids in row 3), 17 effects (rows 4-20, ids in column 3), " +
+      std::to_string(count()) + " intersections; orientation effects-as-rows ";
+  const auto found = import_csv(text, "first.csv");
+  EXPECT_EQ(found.orientation, CsvOrientation::EffectsAsRows);
+  expect_same_reading(found.matrix, published_, count());
+  EXPECT_NE(found.summary.find(expected_summary + "from the corner labels ('Causes/Detection' in line 2, "
+                               "column 3; 'Effects/Actuation' in line 3, column 2) and the id patterns"),
+            std::string::npos)
+      << found.summary;
+  CsvImportOptions opt;
+  opt.orientation = CsvOrientation::EffectsAsRows;
+  const auto given = import_csv(text, "first.csv", opt);
+  expect_same_reading(given.matrix, published_, count());
+  EXPECT_NE(given.summary.find(expected_summary + "as given by --orientation"), std::string::npos) << given.summary;
+  for (const auto& w : given.warnings) EXPECT_EQ(w.what.find("stray value"), std::string::npos) << w.str();
+  opt.orientation = CsvOrientation::CausesAsRows;
+  EXPECT_NE(refusal(text, "first.csv", opt).find("first.csv: line 3: the corner labels"), std::string::npos);
 }
 
 TEST_P(LsstLayouts, CornerBlockIsNeverData) {

@@ -1,6 +1,7 @@
 # Workbooks (6.6, docs/workbook.md): ODS and XLSX, the six tables, limits.
 add_executable(test_formats_workbook ${CMAKE_CURRENT_LIST_DIR}/test_workbook.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/test_workbook_malformed.cpp)
+  ${CMAKE_CURRENT_LIST_DIR}/test_workbook_malformed.cpp ${CMAKE_CURRENT_LIST_DIR}/test_workbook_formats.cpp
+  ${CMAKE_CURRENT_LIST_DIR}/test_workbook_vendor.cpp)
 target_link_libraries(test_formats_workbook PRIVATE cemv_formats cemv_testsupport GTest::gtest_main pugixml::pugixml)
 target_compile_definitions(test_formats_workbook PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
 gtest_discover_tests(test_formats_workbook DISCOVERY_MODE PRE_TEST)
@@ -68,6 +69,15 @@ if(SOFFICE)
     WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
   set_tests_properties(cli_workbook_libreoffice_lsst PROPERTIES TIMEOUT 600
     PASS_REGULAR_EXPRESSION "LSST saved as XLSX by LibreOffice imports as its CSV: 36 causes, 17 effects, 102 intersections")
+  # A contractor's SIS workbook (docs/workbook.md "Vendor C&E workbooks"), built
+  # by LibreOffice from the committed flat ODS as XLSX, ODS and the CSV of its
+  # matrix sheet: every variant read right or refused with the cell named.
+  add_test(NAME cli_workbook_libreoffice_vendor
+    COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/vendor_cases/vendor_workbook.sh $<TARGET_FILE:cemv> ${SOFFICE}
+            ${CMAKE_CURRENT_LIST_DIR}/vendor_cases ${WB_TMP}/libreoffice_vendor
+    WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+  set_tests_properties(cli_workbook_libreoffice_vendor PROPERTIES TIMEOUT 600
+    PASS_REGULAR_EXPRESSION "vendor workbook: all [0-9]+ variants read right \\(signature [0-9a-f]+\\) or refused with the cell named; none misread")
 endif()
 
 # Output is never lost silently (README): a full disk is exit 2 naming the

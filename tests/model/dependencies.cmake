@@ -21,3 +21,7 @@ cemv_cli_test(NAME layout_formats_includes_only_model EXIT 1
 cemv_cli_test(NAME layout_reports_includes_only_model_and_formats EXIT 1
   COMMAND bash -c "grep -rnE '${_cemv_inc}(runtime|encoder|properties|checker|testgen|cli)/' ${PROJECT_SOURCE_DIR}/reports | grep -v 'checker/result.hpp\"'"
 )
+# diff/ uses the checker, runtime, formats, model and reports' SARIF helpers;
+# never the command line, the test generator, mutation or response time.
+cemv_cli_test(NAME layout_diff_includes_only_its_row EXIT 1
+  COMMAND grep -rnE "${_cemv_inc}(properties|encoder|testgen|mutate|response|cli)/" ${PROJECT_SOURCE_DIR}/diff)

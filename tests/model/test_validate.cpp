@@ -592,6 +592,24 @@ const std::vector<RuleCase>& rule_cases() {
       {"SoftBypassPrealarmUntimed", "W-SOFT-BYPASS-PREALARM",
        [](Matrix& m) { cause(m, 1).soft_bypass = {true, 0, 10}; },
        [](Matrix& m) { cause(m, 1).soft_bypass = {true, 0, 0}; }, "cause[1] LT100_HH"},
+      {"SimulationUnrestricted", "W-SIMULATION-UNRESTRICTED",
+       [](Matrix& m) { effect(m, 3).tags[0].simulation_allowed = true; },
+       [](Matrix& m) {
+         effect(m, 3).tags[0].simulation_allowed = true;
+         cause(m, 2).tags[0].simulation_allowed = false;
+       },
+       "matrix"},
+      {"SoftBypassUntimed", "W-SOFT-BYPASS-UNTIMED",
+       [](Matrix& m) {
+         cause(m, 1).sil = 2;
+         cause(m, 1).soft_bypass = {true, 0, 0};
+       },
+       [](Matrix& m) {
+         cause(m, 1).soft_bypass = {true, 0, 0};  // SIL not stated: the import summary says it, not validate
+         cause(m, 2).sil = 2;
+         cause(m, 2).soft_bypass = {false, 0, 0};
+       },
+       "cause[1] LT100_HH"},
       {"SoftBypassUnused", "W-SOFT-BYPASS-UNUSED",
        [](Matrix& m) { cause(m, 4).soft_bypass = {false, 60, 0}; },
        [](Matrix& m) { cause(m, 4).soft_bypass = {true, 60, 0}; }, "cause[4] INLET_CLOSED"},

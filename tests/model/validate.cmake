@@ -12,7 +12,7 @@ cemv_cli_test(NAME cli_validate_errors_exit_1 EXIT 1
   MATCH "error   E-INTERSECTION-X  intersection cause\\[1\\]/effect\\[1\\]  \\[6\\.5\\.2\\]  intersection type X"
   COMMAND $<TARGET_FILE:cemv> validate ${VC}/errors.json)
 cemv_cli_test(NAME cli_validate_errors_summary EXIT 1
-  MATCH "^2 errors, 1 warnings$"
+  MATCH "^2 errors, 2 warnings$"
   COMMAND $<TARGET_FILE:cemv> validate ${VC}/errors.json)
 cemv_cli_test(NAME cli_validate_override_missing EXIT 1
   MATCH "error   E-OVERRIDE-TIME-MISSING  effect\\[2\\] CLOSE_2  \\[6\\.5\\.2\\]"

@@ -4,6 +4,7 @@
 
 #include "formats/matrix_json.hpp"
 #include "properties/parser.hpp"
+#include "properties/standard.hpp"
 
 namespace cemv::properties {
 namespace {
@@ -143,6 +144,19 @@ TEST(PropertiesParser, PastTimeOperatorsAndDurationRounding) {
   EXPECT_EQ(f.properties[0].notes[0], "line 1: 250 ms rounded up to 3 cycles of 100 ms (300 ms), as the runtime rounds timers");
 }
 
+// Minutes and hours, as the checklist writes long times (issue: durations
+// accept min and h): whole milliseconds, rounded to cycles like the others.
+TEST(PropertiesParser, DurationsInMinutesAndHours) {
+  auto m = tank();  // 100 ms cycles
+  EXPECT_EQ(body_of("held(cause[1].active, 10 min)", m).cycles, 6000);
+  EXPECT_EQ(body_of("held(cause[1].active, 1.5 min)", m).cycles, 900);
+  EXPECT_EQ(body_of("held(cause[1].active, 2min)", m).cycles, 1200);
+  EXPECT_EQ(body_of("held(cause[1].active, 0.5 h)", m).cycles, 18000);
+  EXPECT_EQ(body_of("held(cause[1].active, 1h)", m).cycles, 36000);
+  EXPECT_EQ(body_of("held(cause[1].active, 0.001 min)", m).cycles, 1);  // 60 ms, rounded up
+  EXPECT_EQ(body_of("held(cause[1].active, 1 h)", m).cycles, body_of("held(cause[1].active, 3600 s)", m).cycles);
+}
+
 TEST(PropertiesParser, CommandPatterns) {
   auto m = tank();
   Expr e = body_of("issued(soft_bypass_tag, cause = LT100_HH, tag = 2, on = true)", m);
@@ -196,6 +210,100 @@ TEST(PropertiesParser, PrecedenceOfConnectives) {
   e = body_of("(HS_100_BYP -> XV_101) <-> true", m);
   EXPECT_EQ(e.kind, Kind::Iff);
   EXPECT_EQ(e.args[0].kind, Kind::Implies);
+}
+
+}  // namespace
+}  // namespace cemv::properties
+
+// Traps (docs/properties.md, "Traps"): what parses but rarely means what was meant.
+namespace cemv::properties {
+namespace {
+
+TEST(PropertiesTraps, ExcludingOneOfTheTwoOverrideCommandsWarns) {
+  auto m = tank();
+  PropertyFile f = parse_properties(
+      "assume not issued(override_effect, effect = 2)\n"
+      "property p { always effect[2].active implies not effect[2].override_active }\n"
+      "property q { assume not issued(stop_override, effect = 2)\n"
+      "             always effect[2].active implies not effect[2].override_active }\n",
+      m, "t.props");
+  ASSERT_EQ(f.warnings.size(), 1u);
+  EXPECT_EQ(f.warnings[0],
+            "t.props:1:12: warning: the assumption excludes override_effect but not stop_override, the same button "
+            "(docs/semantics.md E.3, O.3: either command toggles the override): an override can still start or "
+            "stop; exclude both, e.g. `not issued(override_effect, effect = 2) and not issued(stop_override, "
+            "effect = 2)`");
+  // p carries the warning in its notes; q excludes both commands and carries none.
+  ASSERT_FALSE(f.properties[0].notes.empty());
+  EXPECT_EQ(f.properties[0].notes.back().rfind("warning: line 1: the assumption excludes override_effect", 0), 0u);
+  for (const auto& n : f.properties[1].notes) EXPECT_EQ(n.find("warning"), std::string::npos) << n;
+}
+
+TEST(PropertiesTraps, ExcludingTheCommandsOfAnEffectWithAResetTagWarns) {
+  auto m = tank();  // effect 1 has the reset tag HS_101_RST
+  PropertyFile f = parse_properties(
+      "property p { assume not issued(override_effect, effect = 1) and not issued(stop_override, effect = 1)\n"
+      "             always effect[1].latched implies effect[1].active }\n",
+      m, "t.props");
+  ASSERT_EQ(f.warnings.size(), 2u);
+  EXPECT_NE(f.warnings[0].find("which has the reset tag HS_101_RST: the effect refuses override commands"),
+            std::string::npos)
+      << f.warnings[0];
+  EXPECT_NE(f.warnings[0].find("assume `not rose(HS_101_RST)`"), std::string::npos);
+}
+
+TEST(PropertiesTraps, PositiveUseIsNoTrap) {
+  auto m = tank();
+  PropertyFile f = parse_properties(
+      "property p { whenever issued(override_effect, effect = 2) then true within 1 cycles }\n"
+      "property q { assume not issued(override_effect) and not issued(stop_override) always true }\n",
+      m, "t.props");
+  EXPECT_TRUE(f.warnings.empty()) << f.warnings[0];
+}
+
+// Names are unique across the files of a run and the standard set
+// (docs/properties.md): two rows with opposite verdicts, one scenario file.
+TEST(PropertiesNames, ARepeatAcrossFilesIsAnErrorAtTheRepeat) {
+  auto m = tank();
+  std::vector<PropertyFile> files = {parse_properties("property req1 { always true }\n", m, "a.props"),
+                                     parse_properties("\nproperty req1 { always true }\n", m, "b.props")};
+  try {
+    check_distinct_names(files);
+    FAIL() << "accepted";
+  } catch (const formats::LoadError& e) {
+    EXPECT_EQ(e.issues().front().message(),
+              "b.props:2:10: error: property 'req1' is already defined at a.props:1:10; every property of one run "
+              "needs its own name (the reports and the counterexample files are named after it)");
+  }
+  files[1] = parse_properties("property REQ1 { always true }\n", m, "b.props");
+  try {
+    check_distinct_names(files);
+    FAIL() << "names that differ only in case accepted";
+  } catch (const formats::LoadError& e) {
+    EXPECT_NE(e.issues().front().what.find("differs only in case"), std::string::npos);
+  }
+  files[1] = parse_properties("property std.reachable.e1 { always true }\n", m, "b.props");
+  files.push_back(standard_properties(m));
+  try {
+    check_distinct_names(files);
+    FAIL() << "a standard name accepted";
+  } catch (const formats::LoadError& e) {
+    EXPECT_EQ(e.issues().front().message(),
+              "b.props:1:10: error: property 'std.reachable.e1' is also the name of a standard property "
+              "(--standard); rename it: the standard set's names are fixed");
+  }
+  files[1] = parse_properties("property req2 { always true }\n", m, "b.props");
+  EXPECT_NO_THROW(check_distinct_names(files));
+}
+
+TEST(PropertiesEncoding, AFileThatIsNotUtf8IsRefusedAtItsByte) {
+  auto m = tank();
+  try {
+    parse_properties("property p \"Azimut \xDC" "berdrehzahl\" { always true }\n", m, "t.props");
+    FAIL() << "accepted";
+  } catch (const formats::LoadError& e) {
+    EXPECT_EQ(e.issues().front().message(), "t.props:1:20: error: this byte is not UTF-8; save the file as UTF-8");
+  }
 }
 
 }  // namespace

@@ -58,8 +58,12 @@ TEST(PropertiesParserErrors, ExactMessages) {
       {"property p { always cause[1].voting < 2oo3 }",
        "req.props:1:37: error: votings compare only with '==' and '!=', found '<'"},
       {"property p { always 90.0 }", "req.props:1:21: error: expected a Boolean expression, found number 90.0"},
-      {"property p { always held(cause[1].active, 2 min) }",
-       "req.props:1:43: error: expected a unit (ms, s or cycles), found 'min'"},
+      {"property p { always held(cause[1].active, 2 hours) }",
+       "req.props:1:43: error: expected a unit (ms, s, min, h or cycles), found 'hours'"},
+      {"property p { always held(cause[1].active, 1.5 cycles) }",
+       "req.props:1:43: error: a duration in cycles must be a whole number"},
+      {"property p { always held(cause[1].active, 0.00001 min) }",
+       "req.props:1:43: error: a duration must be a whole number of milliseconds"},
       {"property p { always held(cause[1].active, 2.0001 s) }",
        "req.props:1:43: error: a duration must be a whole number of milliseconds"},
       {"property p { always held(cause[1].active) }", "req.props:1:41: error: expected ',', found ')'"},
@@ -112,7 +116,7 @@ namespace {
 
 TEST(PropertiesParserErrors, SignsAreForNumbersOnly) {
   EXPECT_EQ(error_of("property p { always held(cause[1].active, -5 ms) }"),
-            "req.props:1:43: error: expected a duration (e.g. 500 ms, 2 s, 3 cycles), found '-5 ms'");
+            "req.props:1:43: error: expected a duration (e.g. 500 ms, 2 s, 10 min, 3 cycles), found '-5 ms'");
   EXPECT_EQ(error_of("property p { always cause[1].active - true }"), "req.props:1:37: error: unexpected character '-'");
   EXPECT_EQ(error_of("property p { always cause[-1].active }"), "req.props:1:27: error: no cause with id -1");
 }

@@ -3,7 +3,7 @@
 # the page must parse to its end (the DOM Chromium dumps holds the closing
 # footer and every section) with no console error, and a second run with the
 # same SOURCE_DATE_EPOCH must give the same bytes. Printed to PDF, every
-# chapter starts a page.
+# chapter starts a page and every entry of the contents is on its page.
 # usage: evidence_headless.sh CEMV MATRIX PROPS TMPDIR [EXTRA EVIDENCE OPTIONS... -- WANTED TEXT...]
 set -euo pipefail
 cemv=$1 matrix=$2 props=$3 tmp=$4
@@ -24,12 +24,15 @@ flags=(--headless --no-sandbox --disable-gpu --no-first-run --disable-background
 timeout 60 "$browser" "${flags[@]}" --enable-logging=stderr --v=0 \
   --dump-dom "file://$(realpath "$tmp/report.html")" >"$tmp/dom.html" 2>"$tmp/chromium.log"
 if grep -E "CONSOLE|Uncaught|Failed to load" "$tmp/chromium.log"; then echo "console errors"; exit 1; fi
-for want in "1. Cause &amp; effect matrix" "2. Validation" "3. Properties" "4. Response time" "5. Test generation" \
+for want in "Contents" "1. Requirements" "2. Standard properties" "3. Cause &amp; effect matrix" "4. Validation" \
+            "5. Provenance" "6. Response time" "7. Test generation" "8. Limitations" "9. Conclusion and sign-off" \
             'class="pagefoot screen"' "$@"; do
   grep -qF "$want" "$tmp/dom.html" || { echo "the loaded page lacks: $want"; exit 1; }
 done
 timeout 60 "$browser" "${flags[@]}" --no-pdf-header-footer --print-to-pdf="$tmp/report.pdf" \
   "file://$(realpath "$tmp/report.html")" >/dev/null 2>&1
 pages=$(grep -ao "/Count [0-9]*" "$tmp/report.pdf" | awk '$2 > n { n = $2 } END { print n + 0 }')
-[ "$pages" -ge 6 ] || { echo "printed to $pages PDF pages; expected the summary and 5 chapters on their own pages"; exit 1; }
+[ "$pages" -ge 11 ] || { echo "printed to $pages PDF pages; expected the cover, the contents and 9 chapters on their own pages"; exit 1; }
+# Every contents entry on the page it names.
+bash "$(dirname "$0")/evidence_pages.sh" "$tmp/report.html" "$tmp/pages" >/dev/null || { echo "contents pages wrong"; exit 1; }
 echo "evidence report loads in chromium: $(wc -c <"$tmp/report.html") bytes, reproducible, $pages printed pages"

@@ -3,8 +3,10 @@
 // XML and JSON must escape. Golden files under golden/ pin the exact bytes;
 // run with CEMV_UPDATE_GOLDEN=1 to rewrite them after an intended change (and
 // review the diff).
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 
@@ -65,6 +67,9 @@ CheckResult sample(double seconds_scale = 1.0) {
       "  LT_100A           1:0  3:95\n"
       "  effect[1].active  1:0  3:1  4:0\n";
   falsified.matters = {"effect[1].active", "cause[1].active"};
+  falsified.explanation = {{3, "LT_100A", "0", "95", "an input of the run (the plant or the operator's switch)"},
+                           {3, "effect[1].active", "0", "1", "N request: cause 1 LT100_HH is active on its N intersection (E.2, E.6)"},
+                           {4, "effect[1].active", "1", "0", "no request left: no linked cause is active (E.2, E.6)"}};
   falsified.seconds = 0.031 * seconds_scale;
   r.properties.push_back(falsified);
 
@@ -213,4 +218,106 @@ TEST(CheckPrinters, EveryFormatNamesTheDiagramFiles) {
       EXPECT_FALSE(res.contains("attachments"));
     }
   }
+}
+
+// A matrix text as a file holds it: the lines of its elements are what the
+// SARIF related locations and a standard property's place point at.
+const char* kMatrixText = R"({
+  "causes": [
+    {
+      "id": 1
+    }
+  ],
+  "effects": [
+    {
+      "id": 1
+    }
+  ],
+  "format": "cemv-matrix/1",
+  "intersections": [
+    {
+      "cause": 1,
+      "effect": 1
+    },
+    {
+      "cause": 2,
+      "effect": 1
+    }
+  ],
+  "name": "TANK_T100"
+}
+)";
+
+// A counterexample's cells become related locations at their lines in the
+// matrix file (line 18 is the object of intersection 2/1); a falsified
+// property with none gets the elements it reads (effect 1 at line 8).
+TEST(CheckPrinters, SarifRelatedLocationsAtTheMatrixLines) {
+  CheckResult r = sample();
+  r.properties[1].counterexample_support = {"intersection[2,1]"};
+  const cemv::reports::CheckReportInputs in{"examples/tank-overfill/matrix.json", kMatrixText};
+  auto s = nlohmann::json::parse(cemv::reports::check_report(r, in, CheckFormat::Sarif));
+  std::map<std::string, nlohmann::json> by_name;
+  for (const auto& res : s["runs"][0]["results"]) by_name[res["properties"]["property"]] = res;
+  const auto& cells = by_name["req5.stored_holds"]["relatedLocations"];
+  ASSERT_EQ(cells.size(), 1u);
+  EXPECT_EQ(cells[0]["physicalLocation"]["artifactLocation"]["uri"], "examples/tank-overfill/matrix.json");
+  EXPECT_EQ(cells[0]["physicalLocation"]["region"]["startLine"], 18);
+  EXPECT_NE(cells[0]["message"]["text"].get<std::string>().find("intersection[2,1]"), std::string::npos);
+  // The result itself stays at the property's line in its file.
+  EXPECT_EQ(by_name["req5.stored_holds"]["locations"][0]["physicalLocation"]["region"]["startLine"], 30);
+  // No cells: the elements it reads (the standard property "odd" reads none).
+  r.properties[1].counterexample_support.clear();
+  s = nlohmann::json::parse(cemv::reports::check_report(r, in, CheckFormat::Sarif));
+  for (const auto& res : s["runs"][0]["results"]) {
+    if (res["properties"]["property"] == "req5.stored_holds") {
+      ASSERT_EQ(res["relatedLocations"].size(), 2u);  // effect[1], cause[1]
+      EXPECT_EQ(res["relatedLocations"][0]["physicalLocation"]["region"]["startLine"], 8);
+      EXPECT_EQ(res["relatedLocations"][1]["physicalLocation"]["region"]["startLine"], 3);
+    }
+  }
+  // Only falsified properties get them.
+  for (const auto& res : s["runs"][0]["results"]) {
+    if (res["properties"]["verdict"] != "falsified") {
+      EXPECT_FALSE(res.contains("relatedLocations"));
+    }
+  }
+  // The documentation, relative to the repository: no invented host.
+  const auto& driver = s["runs"][0]["tool"]["driver"];
+  EXPECT_EQ(driver["informationUri"], "README.md");
+  for (const auto& rule : driver["rules"]) EXPECT_EQ(rule["helpUri"], "docs/checker.md");
+}
+
+// --expect / --baseline: an expected negative verdict is a note in text, no
+// failing test in JUnit, a suppressed result in SARIF; a verdict not as
+// expected is an error, a failing test and a result, whatever the verdict.
+TEST(CheckPrinters, ExpectedVerdictsInEveryFormat) {
+  CheckResult r = sample();
+  r.properties[1].expected = "falsified";  // req5.stored_holds: falsified, as expected
+  r.properties[1].expected_from = "# expect:";
+  r.properties[0].expected = "falsified";  // req1: proved, expected falsified
+  r.properties[0].expected_from = "baseline base.json";
+  const std::string text = render(r, CheckFormat::Text);
+  EXPECT_NE(text.find("requirements.props:30:10: note: property 'req5.stored_holds' falsified at cycle 4 "
+                      "(found by bmc) (as expected)"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("requirements.props:12:10: error: property 'req1.overfill_closes_xv101' proved by "
+                      "k-induction (k = 3), expected falsified (baseline base.json)"),
+            std::string::npos)
+      << text;
+  const std::string junit = render(r, CheckFormat::Junit);
+  EXPECT_NE(junit.find("failures=\"4\""), std::string::npos);  // req1, unreachable, vacuous, odd; not req5
+  EXPECT_NE(junit.find("<failure type=\"proved\""), std::string::npos);
+  auto s = nlohmann::json::parse(render(r, CheckFormat::Sarif));
+  std::map<std::string, nlohmann::json> by_name;
+  for (const auto& res : s["runs"][0]["results"]) by_name[res["properties"]["property"]] = res;
+  EXPECT_EQ(by_name["req5.stored_holds"]["suppressions"][0]["kind"], "inSource");
+  EXPECT_EQ(by_name["req1.overfill_closes_xv101"]["ruleId"], "CEMV-NOT-AS-EXPECTED");
+  EXPECT_FALSE(by_name["req1.overfill_closes_xv101"].contains("suppressions"));
+  auto j = nlohmann::json::parse(render(r, CheckFormat::Json));
+  EXPECT_EQ(j["properties"][1]["expected"], "falsified");
+  EXPECT_TRUE(j["properties"][2]["expected"].is_null());
+  // The lines -q prints: every property that did not pass, or not as expected.
+  const std::string quiet = cemv::reports::check_findings(r, kInputs);
+  EXPECT_EQ(std::count(quiet.begin(), quiet.end(), '\n'), 6) << quiet;  // all but the reachable one
 }

@@ -459,6 +459,13 @@ Matrix random_matrix(std::uint64_t seed, const MatrixOptions& opt) {
   // the matrices of earlier versions unchanged.
   Rng control_rng(mix(seed, 0x6374726c /* "ctrl" */));
   add_control_refs(control_rng, opt, m);
+  if (opt.p_simulation_forbidden > 0) {
+    Rng simulation_rng(mix(seed, 0x73696d75 /* "simu" */));
+    for (auto& c : m.causes)
+      for (auto& t : c.tags) t.simulation_allowed = !simulation_rng.chance(opt.p_simulation_forbidden);
+    for (auto& e : m.effects)
+      for (auto& t : e.tags) t.simulation_allowed = !simulation_rng.chance(opt.p_simulation_forbidden);
+  }
   return m;
 }
 

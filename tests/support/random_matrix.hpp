@@ -71,6 +71,10 @@ struct MatrixOptions {
   double p_note_intersection = 0.08; // '*' intersections
   double p_secure_write = 0.4;       // per matrix
   double p_group_deactivation = 0.5; // per matrix
+  // Per cause input tag and output tag: simulation_allowed false (O.8). 0 by
+  // default, so the matrices of earlier versions stay as they were; drawn
+  // from a stream of its own.
+  double p_simulation_forbidden = 0.0;
 };
 
 // A valid random matrix; the same seed and options give the same matrix.

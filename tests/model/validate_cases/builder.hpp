@@ -107,6 +107,7 @@ inline Matrix clean_matrix() {
   b.effect(2, "TRIP_PUMP", {"P_200_RUN"});
   b.last_effect().output_delay_ms = 500;
   b.effect(3, "ALARM_300", {"XA_300"});
+  b.last_effect().tags[0].simulation_allowed = false;  // not every tag may be simulated (10.7.3.4)
   b.link(1, 1, IntersectionType::R)
       .link(3, 1, IntersectionType::V)
       .link(2, 2, IntersectionType::N, 2)

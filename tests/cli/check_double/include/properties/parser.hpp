@@ -3,6 +3,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "model/matrix.hpp"
 #include "properties/ast.hpp"
@@ -10,5 +11,6 @@
 namespace cemv::properties {
 
 PropertyFile parse_properties(std::string_view text, const model::Matrix& m, const std::string& file_name);
+void check_distinct_names(const std::vector<PropertyFile>& files);
 
 }  // namespace cemv::properties

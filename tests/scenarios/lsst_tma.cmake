@@ -1,0 +1,15 @@
+# The LSST TMA example (examples/lsst-tma): the published sheet in
+# ../shared/external imported with the example's parameters, checked against
+# its requirements, compared with its 2023-10-05 version and reported, with
+# no JSON edited by hand (tests/scenarios/lsst_tma.sh, one stage per test).
+set(_lsst_external ${PROJECT_SOURCE_DIR}/../shared/external)
+if(EXISTS ${_lsst_external}/lsst-tma-interlock-table.csv AND TARGET cemv_checker)
+  set(_lsst_tmp ${CMAKE_CURRENT_BINARY_DIR}/lsst_tma)
+  foreach(_stage import check diff evidence)
+    cemv_cli_test(NAME examples.lsst-tma.${_stage} EXIT 0
+      COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/lsst_tma.sh ${_stage} $<TARGET_FILE:cemv> ${_lsst_external} ${_lsst_tmp})
+  endforeach()
+  set_tests_properties(examples.lsst-tma.import PROPERTIES FIXTURES_SETUP lsst_tma)
+  set_tests_properties(examples.lsst-tma.check examples.lsst-tma.diff examples.lsst-tma.evidence
+                       PROPERTIES FIXTURES_REQUIRED lsst_tma)
+endif()
