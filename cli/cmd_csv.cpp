@@ -146,6 +146,7 @@ void add_csv_commands(CLI::App& app, Context& ctx) {
     options.strict = im->strict;
     if (!im->separator.empty()) options.separator = im->separator == "tab" ? '\t' : im->separator[0];
     options.sheet_layout = load_sheet_layout(im->sheet);
+    options.parameter_trip_sides = parameter_trip_sides(im->params);
     const std::string name = input_name(im->input);
     const std::string bytes = read_input(im->input);
     const formats::TextEncoding encoding = *formats::text_encoding_from_string(im->encoding);

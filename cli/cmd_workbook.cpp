@@ -78,6 +78,7 @@ void add_workbook_commands(CLI::App& app, Context& ctx) {
     formats::WorkbookImportOptions options;
     options.sheet = im->sheet;
     options.sheet_layout = load_sheet_layout(im->layout);
+    options.parameter_trip_sides = parameter_trip_sides(im->params);
     try {
       result = formats::import_workbook(bytes, name, options);
     } catch (const formats::LoadError& e) {

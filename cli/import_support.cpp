@@ -8,6 +8,16 @@
 
 namespace cemv::cli {
 
+std::map<std::string, model::LimitType> parameter_trip_sides(const std::string& params_file) {
+  if (params_file.empty() || params_file == "-") return {};
+  const std::string name = input_name(params_file);
+  try {
+    return formats::params_trip_sides(read_input(params_file), name);
+  } catch (const formats::LoadError& e) {
+    throw e.in_file(name);
+  }
+}
+
 model::Matrix apply_params_file(const model::Matrix& m, const std::string& params_file, bool quiet, std::ostream& err) {
   const std::string name = input_name(params_file);
   formats::ParamsApplication applied;

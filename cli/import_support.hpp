@@ -5,6 +5,7 @@
 #pragma once
 
 #include <iosfwd>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,11 @@ struct ImportedSheet {
 // the defaults adopted to `err` (nothing when quiet). Throws LoadError for a
 // parameters file that cannot be applied.
 model::Matrix finish_import(ImportedSheet sheet, const std::string& params_file, bool quiet, std::ostream& err);
+
+// The trip sides a parameters file gives the sheet's setpoints, read before
+// the sheet (formats::params_trip_sides); none without a file or from
+// standard input (read once, when it is applied).
+std::map<std::string, model::LimitType> parameter_trip_sides(const std::string& params_file);
 
 // Applies one parameters file to `m` and prints what it set (unless quiet).
 model::Matrix apply_params_file(const model::Matrix& m, const std::string& params_file, bool quiet, std::ostream& err);

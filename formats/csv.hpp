@@ -12,6 +12,7 @@
 //    and column, and no safety parameter the grid does not state is invented.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -81,6 +82,9 @@ struct CsvImportOptions {
   // orientation, when not auto, is the one read (an orientation above too
   // must be the same). Whatever it leaves out is found from the sheet.
   std::optional<SheetLayout> sheet_layout;
+  // Grid layout only: the trip sides of the plant parameters (--params,
+  // params_trip_sides), by cause sheet id or name.
+  std::map<std::string, model::LimitType> parameter_trip_sides;
 };
 
 struct CsvImportResult {

@@ -52,9 +52,11 @@ std::string plural(std::size_t n, const std::string& word) {
 class GridImporter {
  public:
   GridImporter(const Sheet& sheet, const Shape& shape, OrientationDecision orientation, std::string source,
-               std::string name, const SheetLayout& layout)
+               std::string name, const SheetLayout& layout,
+               const std::map<std::string, model::LimitType>& parameter_trip_sides)
       : sheet_(sheet), shape_(shape), orientation_(std::move(orientation)), source_(std::move(source)),
-        name_(std::move(name)), layout_(layout), warnings_(source_), errors_(source_) {}
+        name_(std::move(name)), layout_(layout), parameter_trip_sides_(parameter_trip_sides), warnings_(source_),
+        errors_(source_) {}
 
   CsvImportResult run() {
     if (orientation_.disagreement) warnings_.add(sheet_.rows[shape_.id_row].line, *orientation_.disagreement);
@@ -88,7 +90,7 @@ class GridImporter {
   bool causes_are_rows() const { return orientation_.orientation != CsvOrientation::EffectsAsRows; }
   AxisElements& causes() { return causes_are_rows() ? rows_ : columns_; }
   AxisElements& effects() { return causes_are_rows() ? columns_ : rows_; }
-  AxisContext context(ElementKind kind) { return {kind, layout_, source_, warnings_, errors_}; }
+  AxisContext context(ElementKind kind) { return {kind, layout_, source_, warnings_, errors_, parameter_trip_sides_}; }
 
   // A cause's attribute (setpoint, unit, voting, trip side) on the effects'
   // axis: the orientation or the layout is wrong.
@@ -272,6 +274,7 @@ class GridImporter {
   std::string source_;
   std::string name_;  // the matrix name asked for; empty: from the file name
   const SheetLayout& layout_;
+  const std::map<std::string, model::LimitType>& parameter_trip_sides_;
   AxisElements columns_;  // one per column (a voting group: several) of the grid
   AxisElements rows_;
   std::map<std::string, std::string> legend_;
@@ -300,7 +303,8 @@ CsvImportResult import_grid(std::string_view text, const std::string& source, co
   sheet.extras = extras;
   const Shape shape = find_shape(sheet, source, layout);
   OrientationDecision orientation = decide_orientation(sheet, shape, requested, source, given_by);
-  return GridImporter(sheet, shape, std::move(orientation), source, options.matrix_name, layout).run();
+  return GridImporter(sheet, shape, std::move(orientation), source, options.matrix_name, layout,
+                      options.parameter_trip_sides).run();
 }
 
 }  // namespace cemv::formats::grid

@@ -245,6 +245,9 @@ struct AxisContext {
   const std::string& source;
   GridWarnings& warnings;
   GridErrors& errors;
+  // The trip sides the plant parameters give (`causes.ID.analog.limit_type`,
+  // by sheet id or cause name): one more source that must agree.
+  const std::map<std::string, model::LimitType>& parameter_trip_sides;
 };
 // The elements on the rows (every row below the header with text) and on the
 // columns (every column up to column_end): their attributes, voting groups

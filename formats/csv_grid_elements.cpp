@@ -369,6 +369,11 @@ void AxisReader::read_setpoint(SheetElement& e, const Group& g) {
   std::vector<std::pair<model::LimitType, std::string>> said;  // the side, and who says it
   if (auto it = ctx_.layout.trip_sides.find(e.sheet_id); it != ctx_.layout.trip_sides.end())
     said.push_back({it->second, "the layout's trip_sides"});
+  for (const std::string& key : {e.sheet_id, e.text})
+    if (auto it = ctx_.parameter_trip_sides.find(key); !key.empty() && it != ctx_.parameter_trip_sides.end()) {
+      said.push_back({it->second, "the parameters' causes." + key + ".analog.limit_type"});
+      break;
+    }
   if (!side_text.empty()) {
     const SlotCell* c = g.first.cell(SheetAttribute::TripSide);
     if (auto side = parse_trip_side(side_text)) said.push_back({*side, "the trip side " + in_quotes(side_text)});
@@ -391,8 +396,9 @@ void AxisReader::read_setpoint(SheetElement& e, const Group& g) {
               (both ? std::string(" (the description names both)") : std::string()) +
               ": not the layout's trip_sides, a trip-side column, the setpoint ('> 45', '45 HH') nor the "
               "description (high, low, HH, LL, ...); give \"trip_sides\": {\"" + e.sheet_id + "\"" +
-              ": \"high\"|\"low\"} in the layout (docs/csv.md \"Setpoints\"), or the plant parameters with "
-              "--params once they exist");
+              ": \"high\"|\"low\"} in the layout (docs/csv.md \"Setpoints\"), or "
+              "\"causes\": {\"" + e.sheet_id + "\": {\"analog\": {\"limit_type\": ...}}} in the plant parameters "
+              "(--params, docs/params.md)");
     return;
   }
   const float limit = static_cast<float>(sp->value);

@@ -584,6 +584,24 @@ ParamsApplication Applier::run() {
 
 }  // namespace
 
+std::map<std::string, model::LimitType> params_trip_sides(std::string_view text, const std::string& file_name) {
+  if (text.size() > kMaxFileBytes)
+    throw LoadError({{"", "file larger than " + std::to_string(kMaxFileBytes) + " bytes", file_name}});
+  std::vector<LoadIssue> issues;
+  auto parsed = parse_guarded_json(text, file_name, issues, {4096, "parameters file", 8});
+  if (!parsed) throw LoadError(issues);
+  std::map<std::string, model::LimitType> sides;
+  if (!parsed->is_object() || !parsed->contains("causes") || !(*parsed)["causes"].is_object()) return sides;
+  for (const auto& [key, cause] : (*parsed)["causes"].items()) {
+    if (!cause.is_object() || !cause.contains("analog") || !cause["analog"].is_object()) continue;
+    const Json& analog = cause["analog"];
+    const Json type = analog.contains("limit_type") ? analog["limit_type"] : Json();
+    if (type == "high") sides[key] = model::LimitType::High;
+    else if (type == "low") sides[key] = model::LimitType::Low;
+  }
+  return sides;
+}
+
 ParamsApplication apply_params(const model::Matrix& m, std::string_view text, const std::string& file_name) {
   if (text.size() > kMaxFileBytes)
     throw LoadError({{"", "file larger than " + std::to_string(kMaxFileBytes) + " bytes", file_name}});

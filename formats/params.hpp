@@ -6,6 +6,7 @@
 // (docs/format.md "Provenance"), and the signature covers it.
 #pragma once
 
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -28,6 +29,12 @@ struct ParamsApplication {
 // FILE:LINE:COL of the parameters file, for a file that is not
 // cemv-params/1, an element or tag the matrix does not have, a value the
 // matrix format refuses, a value set twice, or a file already applied.
+// The trip sides the parameters `text` give a sheet's setpoints before the
+// sheet is imported (docs/csv.md "Setpoints"): `limit_type` of each cause's
+// `analog`, by the cause's key (sheet id or name). Throws LoadError for text
+// that is not JSON; everything else is checked when the file is applied.
+std::map<std::string, model::LimitType> params_trip_sides(std::string_view text, const std::string& file_name);
+
 ParamsApplication apply_params(const model::Matrix& m, std::string_view text, const std::string& file_name);
 
 }  // namespace cemv::formats

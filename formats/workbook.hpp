@@ -12,6 +12,7 @@
 // problem is a LoadError placed at FILE:SHEET:ROW:COLUMN.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -44,6 +45,7 @@ struct WorkbookImportResult {
 struct WorkbookImportOptions {
   std::string sheet;                       // a name (any letter case) or a number 1-64; empty = the one with a grid
   std::optional<SheetLayout> sheet_layout; // its `sheet`, if any, is the sheet too
+  std::map<std::string, model::LimitType> parameter_trip_sides;  // as CsvImportOptions
 };
 
 // Reads a workbook from its bytes (no file system access). The format is told

@@ -11,6 +11,7 @@
 #include "formats/csv_grid.hpp"
 #include "formats/csv_grid_values.hpp"
 #include "formats/matrix_json.hpp"
+#include "formats/params.hpp"
 
 namespace cemv::formats {
 
@@ -118,6 +119,39 @@ TEST(VendorSheet, WhatTheSheetCannotSayIsRefusedAtItsCell) {
             std::string::npos)
       << all;
   EXPECT_EQ(std::count(all.begin(), all.end(), '\n'), 2);
+}
+
+// The plant parameters can say which side a setpoint trips on (docs/csv.md
+// "Setpoints"): read before the sheet, they are one more source that must
+// agree with the others.
+TEST(VendorSheet, TheParametersSayWhichSideTrips) {
+  SheetLayout layout = minimal_layout();
+  layout.trip_sides.clear();
+  const std::string params =
+      R"({"format": "cemv-params/1", "causes": {"6": {"analog": {"limit_type": "high", "limit": 180}}}})";
+  CsvImportOptions opt;
+  opt.sheet_layout = layout;
+  opt.parameter_trip_sides = params_trip_sides(params, "plant.json");
+  ASSERT_EQ(opt.parameter_trip_sides.size(), 1u);
+  const auto r = import_csv(kSheet, "sis.csv", opt);
+  EXPECT_EQ(r.matrix.find_cause(6)->analog->limit_type, LimitType::High);
+  EXPECT_EQ(r.matrix.find_cause(6)->analog->limit, 180.0f);
+  // A side the description contradicts is refused, naming both sources.
+  opt.parameter_trip_sides = params_trip_sides(
+      R"({"format": "cemv-params/1", "causes": {"2": {"analog": {"limit_type": "high"}}, "6": {"analog": {"limit_type": "low"}}}})",
+      "plant.json");
+  try {
+    import_csv(kSheet, "sis.csv", opt);
+    ADD_FAILURE() << "a contradicted trip side was imported";
+  } catch (const LoadError& e) {
+    std::string all;
+    for (const auto& i : e.issues()) all += i.str() + "\n";
+    EXPECT_NE(all.find("setpoint '20' of cause '2': the parameters' causes.2.analog.limit_type says high, the "
+                       "description says low"),
+              std::string::npos)
+        << all;
+  }
+  EXPECT_THROW(params_trip_sides("{not json", "plant.json"), LoadError);
 }
 
 TEST(VendorSheet, TheLayoutUsedReadsTheSheetTheSameWhenGivenAgain) {
