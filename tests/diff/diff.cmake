@@ -50,12 +50,10 @@ if(TARGET cemv_diff)
   add_test(NAME diff_html_headless
     COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/diff_html_headless.sh $<TARGET_FILE:cemv> ${DIFF_CASES} ${DIFF_TMP}/html)
   # The LSST pair, imported from the two published CSVs.
-  set(LSST_OLD ${PROJECT_SOURCE_DIR}/../shared/external/lsst-tma-interlock-table-2023-10-05.csv)
-  set(LSST_NEW ${PROJECT_SOURCE_DIR}/../shared/external/lsst-tma-interlock-table.csv)
-  if(EXISTS ${LSST_OLD} AND EXISTS ${LSST_NEW})
-    add_test(NAME diff_lsst_pair
-      COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/lsst_pair.sh $<TARGET_FILE:cemv> ${LSST_OLD} ${LSST_NEW} ${DIFF_TMP}/lsst)
-  endif()
+  set(LSST_OLD ${CEMV_LSST_DIR}/lsst-tma-interlock-table-2023-10-05.csv)
+  set(LSST_NEW ${CEMV_LSST_DIR}/lsst-tma-interlock-table.csv)
+  add_test(NAME diff_lsst_pair
+    COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/lsst_pair.sh $<TARGET_FILE:cemv> ${LSST_OLD} ${LSST_NEW} ${DIFF_TMP}/lsst)
 endif()
 
 # `cemv testgen NEW --changed-from OLD`: the tests the change needs.

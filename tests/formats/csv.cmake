@@ -3,12 +3,12 @@ add_executable(test_formats_csv ${CMAKE_CURRENT_LIST_DIR}/test_csv.cpp ${CMAKE_C
   ${CMAKE_CURRENT_LIST_DIR}/test_csv_layouts.cpp ${CMAKE_CURRENT_LIST_DIR}/test_sheet_layout.cpp
   ${CMAKE_CURRENT_LIST_DIR}/test_csv_vendor.cpp)
 target_link_libraries(test_formats_csv PRIVATE cemv_formats GTest::gtest_main)
-target_compile_definitions(test_formats_csv PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+target_compile_definitions(test_formats_csv PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}" CEMV_LSST_DIR="${CEMV_LSST_DIR}")
 gtest_discover_tests(test_formats_csv DISCOVERY_MODE PRE_TEST)
 
 # The command line: exit statuses and messages (cwd = repo root).
 set(CSV_CASES tests/formats/csv_cases)
-set(LSST ${CSV_CASES}/lsst/lsst-tma-interlock-table.csv)
+set(LSST ${CEMV_LSST_DIR}/lsst-tma-interlock-table.csv)
 set(CSV_TMP ${CMAKE_CURRENT_BINARY_DIR}/csv_cli)
 file(MAKE_DIRECTORY ${CSV_TMP})
 cemv_cli_test(NAME cli_import_csv_lsst EXIT 0

@@ -17,10 +17,9 @@ namespace cemv::formats {
 using namespace cemv::model;
 namespace {
 
-// A copy of ../shared/external (the published LSST TMA interlock table), so the
-// suite runs on a fresh clone; csv_cases/lsst/README.md says where it comes from.
-const std::filesystem::path kExternal =
-    std::filesystem::path(CEMV_SOURCE_DIR) / "tests" / "formats" / "csv_cases" / "lsst";
+// The published LSST TMA interlock table, where it is published beside the
+// project (CEMV_LSST_DIR, tests/CMakeLists.txt): not copied, it has no licence.
+const std::filesystem::path kExternal = std::filesystem::path(CEMV_LSST_DIR);
 
 CsvImportResult import_file(const std::filesystem::path& p) {
   return import_csv(read_text_file(p), p.filename().string());

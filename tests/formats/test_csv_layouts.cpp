@@ -20,8 +20,8 @@ namespace cemv::formats {
 using namespace cemv::model;
 namespace {
 
-const std::filesystem::path kLsst =
-    std::filesystem::path(CEMV_SOURCE_DIR) / "tests" / "formats" / "csv_cases" / "lsst";
+// The published tables, read beside the project (CEMV_LSST_DIR).
+const std::filesystem::path kLsst = std::filesystem::path(CEMV_LSST_DIR);
 
 using Table = std::vector<std::vector<std::string>>;
 

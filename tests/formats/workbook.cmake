@@ -65,7 +65,7 @@ if(SOFFICE)
     PASS_REGULAR_EXPRESSION "all ${wb_examples} matrices: same signature after LibreOffice re-saved them")
   add_test(NAME cli_workbook_libreoffice_lsst
     COMMAND bash ${WB_CASES}/libreoffice_lsst.sh $<TARGET_FILE:cemv> ${SOFFICE}
-            ${PROJECT_SOURCE_DIR}/tests/formats/csv_cases/lsst/lsst-tma-interlock-table.csv ${WB_TMP}/libreoffice_lsst
+            ${CEMV_LSST_DIR}/lsst-tma-interlock-table.csv ${WB_TMP}/libreoffice_lsst
     WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
   set_tests_properties(cli_workbook_libreoffice_lsst PROPERTIES TIMEOUT 600
     PASS_REGULAR_EXPRESSION "LSST saved as XLSX by LibreOffice imports as its CSV: 36 causes, 17 effects, 102 intersections")

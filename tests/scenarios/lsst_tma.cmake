@@ -2,8 +2,8 @@
 # ../shared/external imported with the example's parameters, checked against
 # its requirements, compared with its 2023-10-05 version and reported, with
 # no JSON edited by hand (tests/scenarios/lsst_tma.sh, one stage per test).
-set(_lsst_external ${PROJECT_SOURCE_DIR}/../shared/external)
-if(EXISTS ${_lsst_external}/lsst-tma-interlock-table.csv AND TARGET cemv_checker)
+set(_lsst_external ${CEMV_LSST_DIR})
+if(TARGET cemv_checker)
   set(_lsst_tmp ${CMAKE_CURRENT_BINARY_DIR}/lsst_tma)
   foreach(_stage import check diff evidence)
     cemv_cli_test(NAME examples.lsst-tma.${_stage} EXIT 0
