@@ -88,7 +88,7 @@ void run(benchmark::State& state, const Pair& p) {
       changed += e.result.verdict == checker::EquivalenceVerdict::Differs;
       equivalent += e.result.verdict == checker::EquivalenceVerdict::Equivalent;
       unknown += e.result.verdict == checker::EquivalenceVerdict::Unknown;
-      product += e.result.method != "identical cone";
+      product += e.result.basis != checker::EquivalenceBasis::IdenticalCone;
     }
   }
   state.counters["effects_changed"] = static_cast<double>(changed);

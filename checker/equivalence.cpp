@@ -18,6 +18,19 @@
 
 namespace cemv::checker {
 
+const char* to_string(EquivalenceBasis b) {
+  switch (b) {
+    case EquivalenceBasis::None:
+    case EquivalenceBasis::Engine: return "";
+    case EquivalenceBasis::Simulation: return "simulation";
+    case EquivalenceBasis::IdenticalCone: return "identical cone";
+    case EquivalenceBasis::Interface: return "interface";
+    case EquivalenceBasis::InterfaceOnly: return "interface-only";
+    case EquivalenceBasis::Suite: return "suite";
+  }
+  return "";
+}
+
 namespace {
 
 using model::Node;
@@ -49,6 +62,7 @@ class Decider {
         out.verdict != EquivalenceVerdict::Differs)
       out.unknown = UnknownReason::TimeLimit;
     if (out.verdict == EquivalenceVerdict::Unknown && out.unknown == UnknownReason::TimeLimit) {
+      out.basis = EquivalenceBasis::None;
       out.method.clear();
       out.reason = to_string(UnknownReason::TimeLimit);
       out.distinction.reset();
@@ -63,7 +77,7 @@ class Decider {
     std::vector<Node> group_roots = g_.roots;
     if (group_roots.empty() && o_.identical_cone_shortcut && !narrow_to_changed_nodes(group_roots)) {
       out.verdict = EquivalenceVerdict::Equivalent;
-      out.method = "identical cone";
+      out.rest_on(EquivalenceBasis::IdenticalCone);
       return;
     }
     const EquivalenceQuestion q{a_,      b_,       g_.name, keys_, roots_in(a_, b_, group_roots), roots_in(b_, a_, group_roots),
@@ -71,14 +85,14 @@ class Decider {
     if (o_.identical_cone_shortcut && !q.ra.empty() && q.ra == q.rb &&
         cone_configuration(a_, q.ra) == cone_configuration(b_, q.rb)) {
       out.verdict = EquivalenceVerdict::Equivalent;
-      out.method = "identical cone";
+      out.rest_on(EquivalenceBasis::IdenticalCone);
       return;
     }
     try {
       if (prove_or_falsify(q, out)) return;
     } catch (const std::invalid_argument& e) {
       out.verdict = EquivalenceVerdict::Differs;
-      out.method = "interface";
+      out.rest_on(EquivalenceBasis::Interface);
       out.reason = e.what();
       out.distinction.reset();
     }
@@ -106,7 +120,7 @@ class Decider {
       r = Bmc().prove(op.problem, probe);
       stop_if_interrupted(limits_);
       if (r.verdict == Verdict::Falsified) {
-        out.method = r.method_text();
+        out.rest_on_engine(r.method_text());
         out.k = r.k;
         if (replay_product_run(q, op, r.cex, out, why)) return true;
         return whole_product(q, out, why);
@@ -140,11 +154,11 @@ class Decider {
     if (r.verdict == Verdict::Proved) {
       check::recheck(make, r, &limits_);
       out.verdict = EquivalenceVerdict::Equivalent;
-      out.method = r.method_text();
+      out.rest_on_engine(r.method_text());
       return true;
     }
     r = Portfolio(make, portfolio_options()).run(limits_);
-    out.method = r.method_text();
+    out.rest_on_engine(r.method_text());
     out.k = r.k;
     if (r.verdict == Verdict::Proved) {
       out.verdict = EquivalenceVerdict::Equivalent;
@@ -168,7 +182,7 @@ class Decider {
       const EquivalenceQuestion q{a_, b_, g_.name, keys_, {}, {}, limits_, o_.work, o_.random_cycles};
       const ProverResult r = Portfolio(product_factory(q), portfolio_options()).run(limits_);
       stop_if_interrupted(limits_);
-      out.method = r.method_text();
+      out.rest_on_engine(r.method_text());
       out.k = r.k;
       std::string whole_why;
       if (r.verdict == Verdict::Falsified && replay_product_run(q, r.cex, out, whole_why)) return true;
@@ -246,7 +260,7 @@ class Decider {
     }
     if (only_a.empty() && only_b.empty()) return true;
     out.verdict = EquivalenceVerdict::Differs;
-    out.method = "interface";
+    out.rest_on(EquivalenceBasis::Interface);
     if (!only_a.empty()) out.reason = "only in the first matrix: " + only_a;
     if (!only_b.empty()) out.reason += std::string(out.reason.empty() ? "" : "; ") + "only in the second matrix: " + only_b;
     return false;

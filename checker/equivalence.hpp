@@ -58,13 +58,32 @@ struct Distinction {
   ConcreteTrace run_b;      // inputs indexed by InputTable(b)
 };
 
+// What an equivalence answer rests on.
+enum class EquivalenceBasis {
+  None,
+  Engine,         // an engine of the portfolio (its words in `method`)
+  Simulation,     // "simulation": runs of both runtimes that differ
+  IdenticalCone,  // "identical cone": both cones are the same configuration once
+                  // texts are set aside (the encodings are equal term for term)
+  Interface,      // "interface": keys only one matrix has
+  InterfaceOnly,  // "interface-only": equivalent on the common keys, the interface differs
+  Suite,          // "suite": a test of the suite fails on one and passes on the other
+};
+const char* to_string(EquivalenceBasis b);  // the words above; "" for None and Engine
+
 struct GroupEquivalence {
   std::string group;
   EquivalenceVerdict verdict = EquivalenceVerdict::Unknown;
-  // The engine that answered, or "identical cone" (both cones are the same
-  // configuration once texts are set aside: the encodings are equal term
-  // for term), or "interface" (keys only one matrix has).
-  std::string method;
+  EquivalenceBasis basis = EquivalenceBasis::None;
+  std::string method;  // as printed: the engine's words, or to_string(basis)
+  void rest_on(EquivalenceBasis b) {
+    basis = b;
+    method = to_string(b);
+  }
+  void rest_on_engine(std::string engine_words) {
+    basis = EquivalenceBasis::Engine;
+    method = std::move(engine_words);
+  }
   int k = 0;                // induction depth of a proof
   UnknownReason unknown = UnknownReason::None;  // Unknown: why (its words in `reason`)
   std::string reason;       // Unknown: why; Differs by interface: which keys

@@ -108,7 +108,7 @@ std::optional<int> RandomFalsifier::find(GroupEquivalence& out) const {
     for (const auto& k : keys_) {
       if (ta.observables[cycle][k.index_a] == tb.observables[cycle][k.index_b]) continue;
       out.verdict = EquivalenceVerdict::Differs;
-      out.method = "simulation";
+      out.rest_on(EquivalenceBasis::Simulation);
       out.distinction = make_distinction(k, cycle, std::move(ta), std::move(tb));
       return static_cast<int>(cycle);
     }

@@ -125,12 +125,14 @@ std::optional<std::size_t> key_index(const std::vector<model::Observable>& obs, 
 }
 
 // An output tag's verdict "differs", with the run that shows it.
-checker::GroupEquivalence tag_differs(const checker::ObservableGroup& tag, const std::string& method,
-                                      checker::Distinction shown) {
+// It rests on what the effect's verdict rests on, and says which run.
+checker::GroupEquivalence tag_differs(const checker::ObservableGroup& tag, const checker::GroupEquivalence& effect,
+                                      const std::string& which_run, checker::Distinction shown) {
   checker::GroupEquivalence out;
   out.group = tag.name;
   out.verdict = EquivalenceVerdict::Differs;
-  out.method = method;
+  out.basis = effect.basis;
+  out.method = effect.method + which_run;
   out.distinction = std::move(shown);
   return out;
 }
@@ -155,7 +157,7 @@ std::optional<checker::GroupEquivalence> from_effect_run(const checker::GroupEqu
   t.type = oa[*ia].type;
   t.value_a = va;
   t.value_b = vb;
-  return tag_differs(tag, effect.method + ", the effect's run", std::move(t));
+  return tag_differs(tag, effect, ", the effect's run", std::move(t));
 }
 
 // An output tag that does not differ in its effect's distinguishing run
@@ -227,7 +229,7 @@ std::optional<checker::GroupEquivalence> from_continued_effect_run(const checker
       t.run_a.observables.assign(ta.observables.begin(), ta.observables.begin() + static_cast<std::ptrdiff_t>(k + 1));
       t.run_b.inputs.assign(tb.inputs.begin(), tb.inputs.begin() + static_cast<std::ptrdiff_t>(k + 1));
       t.run_b.observables.assign(tb.observables.begin(), tb.observables.begin() + static_cast<std::ptrdiff_t>(k + 1));
-      return tag_differs(tag, effect.method + ", the effect's run continued", std::move(t));
+      return tag_differs(tag, effect, ", the effect's run continued", std::move(t));
     }
   }
   return std::nullopt;

@@ -53,7 +53,7 @@ checker::GroupEquivalence common_observables(const model::Matrix& a, const model
   if (r.verdict != EquivalenceVerdict::Equivalent) return r;
   r.reason = "equivalent on every observable both versions have (" + r.method +
              "); the interface differs: " + by_interface.reason;
-  r.method = "interface-only";
+  r.rest_on(checker::EquivalenceBasis::InterfaceOnly);
   return r;
 }
 
@@ -89,13 +89,13 @@ MutationReport mutation_report(const model::Matrix& m, const testgen::TestSuite&
       // mutant is a runtime run on which the two differ.
       o.status = MutantStatus::Detected;
       o.equivalence.verdict = EquivalenceVerdict::Differs;
-      o.equivalence.method = "suite";
+      o.equivalence.rest_on(checker::EquivalenceBasis::Suite);
     } else {
       // Not detected, or only because a test no longer loads (the mutant
       // lost a tag the test sets): the product decides.
       o.equivalence = checker::decide_equivalence(m, mu.matrix, checker::whole_matrix(m, mu.matrix), eo);
       const bool detected = !o.failing_tests.empty();
-      if (!detected && o.equivalence.verdict == EquivalenceVerdict::Differs && o.equivalence.method == "interface")
+      if (!detected && o.equivalence.verdict == EquivalenceVerdict::Differs && o.equivalence.basis == checker::EquivalenceBasis::Interface)
         o.equivalence = common_observables(m, mu.matrix, o.equivalence, eo);
       o.status = o.equivalence.verdict == EquivalenceVerdict::Equivalent ? MutantStatus::Equivalent
                  : o.equivalence.verdict == EquivalenceVerdict::Unknown  ? MutantStatus::Undecided
@@ -107,7 +107,7 @@ MutationReport mutation_report(const model::Matrix& m, const testgen::TestSuite&
   for (const auto& o : r.mutants) switch (o.status) {
       case MutantStatus::Equivalent:
         ++r.equivalent;
-        r.interface_only += o.equivalence.method == "interface-only";
+        r.interface_only += o.equivalence.basis == checker::EquivalenceBasis::InterfaceOnly;
         break;
       case MutantStatus::Detected: ++r.detected; break;
       case MutantStatus::Survived: ++r.survived; break;

@@ -103,6 +103,7 @@ TEST(Equivalence, InterfaceChange) {
   std::erase_if(n.intersections, [](const model::Intersection& i) { return i.cause == 2; });
   auto r = checker::decide_equivalence(m, n, checker::whole_matrix(m, n));
   EXPECT_EQ(r.verdict, EquivalenceVerdict::Differs);
+  EXPECT_EQ(r.basis, checker::EquivalenceBasis::Interface);
   EXPECT_EQ(r.method, "interface");
   EXPECT_NE(r.reason.find("cause[2]"), std::string::npos);
 }

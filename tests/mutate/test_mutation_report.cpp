@@ -66,6 +66,7 @@ TEST(MutationReport, ReferenceObjectiveAndInterfaceOnlyMutants) {
   const auto normal = find("cause-function.normal.c3");
   ASSERT_NE(normal, report.mutants.end());
   EXPECT_EQ(normal->status, mutate::MutantStatus::Equivalent) << normal->equivalence.reason;
+  EXPECT_EQ(normal->equivalence.basis, checker::EquivalenceBasis::InterfaceOnly);
   EXPECT_EQ(normal->equivalence.method, "interface-only");
   EXPECT_NE(normal->equivalence.reason.find("cause[3].active"), std::string::npos);
   EXPECT_GE(report.interface_only, 1u);
