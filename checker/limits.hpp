@@ -70,6 +70,18 @@ struct Limits {
   }
 };
 
+// The longest counterexample or witness that cemv holds cycle by cycle: its
+// inputs and states here, the runtime's observables when it is replayed, its
+// rows when it is shrunk and drawn. A longer one found by macro steps (a
+// property over millions of held cycles) is confirmed cycle by cycle without
+// being held, and the question stays Unknown ("memory limit"), so that no
+// property the language accepts takes more than about 1 GB.
+inline constexpr std::int64_t kMaxTraceCycles = 150000;
+// A trace longer than this carries its inputs only: the states of every cycle
+// serve display and the re-check that an engine's states are the formulas';
+// the replay of the inputs (on the formulas, then on the runtime) remains.
+inline constexpr std::int64_t kMaxTraceStateCycles = 10000;
+
 // Thrown where an interrupted question cannot end with an answer of its own
 // (a re-check, a replay, a search over many engines): the question is then
 // Unknown ("time limit").

@@ -379,10 +379,13 @@ Trace lift_trace(const SafetyProblem& original, const Trace& reduced) {
   for (auto& [name, value] : forced_inputs(original)) forced[name] = value;
   Trace out;
   for (const auto& in : ts.inputvars()) out.input_names.push_back(in.name);
-  for (const auto& sv : ts.statevars()) out.state_names.push_back(sv.name);
+  const bool states = static_cast<std::int64_t>(reduced.cycles.size()) <= kMaxTraceStateCycles;
+  if (states)
+    for (const auto& sv : ts.statevars()) out.state_names.push_back(sv.name);
   encoder::Encoding enc(ts.ctx());
   enc.ts = ts;
   encoder::Evaluator ev(enc);
+  out.cycles.reserve(reduced.cycles.size());
   for (const auto& cycle : reduced.cycles) {
     Trace::Cycle lifted;
     std::vector<encoder::Evaluator::Value> raw;
@@ -399,8 +402,9 @@ Trace lift_trace(const SafetyProblem& original, const Trace& reduced) {
       lifted.inputs.push_back(v);
       raw.push_back(encoder::Evaluator::Value{v.i, v.f});
     }
-    for (std::size_t s = 0; s < ts.statevars().size(); ++s)
-      lifted.state.push_back(Value{ts.statevars()[s].var.is_fpa(), ev.state()[s].i, ev.state()[s].f});
+    if (states)
+      for (std::size_t s = 0; s < ts.statevars().size(); ++s)
+        lifted.state.push_back(Value{ts.statevars()[s].var.is_fpa(), ev.state()[s].i, ev.state()[s].f});
     ev.step_raw(raw);
     out.cycles.push_back(std::move(lifted));
   }

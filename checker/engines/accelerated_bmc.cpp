@@ -94,35 +94,65 @@ class MacroUnrolling {
 // Expands macro steps into cycles on the Evaluator; returns the trace up to
 // the first violating cycle, or nothing when the run does not violate `good`
 // (or breaks the assumption first).
-std::optional<Trace> confirm(const SafetyProblem& p, const std::vector<std::vector<Value>>& inputs,
-                             const std::vector<std::int64_t>& lengths) {
+// Where the macro trace first violates the property when run cycle by cycle
+// on the Evaluator (0-based), if it does; nullopt when it is spurious (it
+// breaks a constraint, or never violates). Holds nothing per cycle, so a
+// trace of millions of cycles costs time, not memory; stops when interrupted.
+std::optional<std::int64_t> first_violation(const SafetyProblem& p, const std::vector<std::vector<Value>>& inputs,
+                                            const std::vector<std::int64_t>& lengths, const Limits& limits) {
   const auto& ts = *p.ts;
   encoder::Encoding enc(ts.ctx());
   enc.ts = ts;
   enc.ts.name_term("checker.good", p.good);
   enc.ts.name_term("checker.facts", ts.constraint_formula() && p.assumption);
   encoder::Evaluator ev(enc);
-  Trace t;
-  for (const auto& i : ts.inputvars()) t.input_names.push_back(i.name);
-  for (const auto& s : ts.statevars()) t.state_names.push_back(s.name);
+  std::int64_t cycle = 0;
   for (std::size_t j = 0; j < inputs.size(); ++j) {
     std::vector<encoder::Evaluator::Value> in(inputs[j].size());
     for (std::size_t i = 0; i < in.size(); ++i) {
       in[i].i = inputs[j][i].i;
       in[i].f = inputs[j][i].f;
     }
-    for (std::int64_t c = 0; c < lengths[j]; ++c) {
-      Trace::Cycle cycle;
-      cycle.inputs = inputs[j];
-      for (std::size_t v = 0; v < ts.statevars().size(); ++v)
-        cycle.state.push_back(Value{ts.statevars()[v].var.is_fpa(), ev.state()[v].i, ev.state()[v].f});
+    for (std::int64_t c = 0; c < lengths[j]; ++c, ++cycle) {
+      if (cycle % 4096 == 4095) stop_if_interrupted(limits);
       ev.step_raw(in);
-      t.cycles.push_back(std::move(cycle));
       if (!ev.value("checker.facts")) return std::nullopt;
-      if (!ev.value("checker.good")) return t;
+      if (!ev.value("checker.good")) return cycle;
     }
   }
   return std::nullopt;
+}
+
+// The macro trace's first `cycles` cycles, each with its inputs and the state
+// at its start (for display and the re-check).
+Trace expand(const SafetyProblem& p, const std::vector<std::vector<Value>>& inputs,
+             const std::vector<std::int64_t>& lengths, std::int64_t cycles) {
+  const auto& ts = *p.ts;
+  encoder::Encoding enc(ts.ctx());
+  enc.ts = ts;
+  encoder::Evaluator ev(enc);
+  Trace t;
+  for (const auto& i : ts.inputvars()) t.input_names.push_back(i.name);
+  const bool states = cycles <= kMaxTraceStateCycles;
+  if (states)
+    for (const auto& s : ts.statevars()) t.state_names.push_back(s.name);
+  t.cycles.reserve(static_cast<std::size_t>(cycles));
+  for (std::size_t j = 0; j < inputs.size() && static_cast<std::int64_t>(t.cycles.size()) < cycles; ++j) {
+    std::vector<encoder::Evaluator::Value> in(inputs[j].size());
+    for (std::size_t i = 0; i < in.size(); ++i) {
+      in[i].i = inputs[j][i].i;
+      in[i].f = inputs[j][i].f;
+    }
+    for (std::int64_t c = 0; c < lengths[j] && static_cast<std::int64_t>(t.cycles.size()) < cycles; ++c) {
+      Trace::Cycle cycle;
+      cycle.inputs = inputs[j];
+      for (std::size_t v = 0; v < ts.statevars().size() && states; ++v)
+        cycle.state.push_back(Value{ts.statevars()[v].var.is_fpa(), ev.state()[v].i, ev.state()[v].f});
+      ev.step_raw(in);
+      t.cycles.push_back(std::move(cycle));
+    }
+  }
+  return t;
 }
 
 }  // namespace
@@ -171,10 +201,15 @@ ProverResult AcceleratedBmc::prove(const SafetyProblem& problem, const Limits& l
           lengths.push_back(n);
           if (j < J) same.push_back(m.length(j) == ctx.int_val(n));
         }
-        if (auto trace = confirm(problem, inputs, lengths)) {
+        if (auto last = first_violation(problem, inputs, lengths, limits)) {
+          if (*last >= kMaxTraceCycles) {
+            r.detail = "a counterexample of " + std::to_string(*last + 1) + " cycles, longer than the " +
+                       std::to_string(kMaxTraceCycles) + " cycles cemv holds cycle by cycle";
+            return finish(UnknownReason::MemoryLimit);
+          }
           r.verdict = Verdict::Falsified;
-          r.k = static_cast<int>(trace->length()) - 1;
-          r.cex = std::move(*trace);
+          r.k = static_cast<int>(*last);
+          r.cex = expand(problem, inputs, lengths, *last + 1);
           return finish(UnknownReason::None);
         }
         // Spurious (the stretch is not what its end points claimed): exclude

@@ -73,13 +73,15 @@ ProverResult Portfolio::decide(const Limits& limits, Clock::time_point start) {
     ProverResult r = one_after_another(order, owned.problem, limits, options_.engine_work, options_.rounds);
     if (r.verdict == Verdict::Unknown) {
       r.seconds = seconds_since(start);
-      return limits.interrupted() ? interrupted_result(start) : r;
+      if (limits.interrupted()) return interrupted_result(start);
+      return r;
     }
     answer = std::move(r);
   }
   if (limits.interrupted()) return interrupted_result(start);
   ProverResult out = confirmed(owned, std::move(*answer), limits, start);
-  return limits.interrupted() ? interrupted_result(start) : out;
+  if (limits.interrupted()) return interrupted_result(start);
+  return out;
 }
 
 // k-induction as the quick attempt runs it: first with no strengthening at
