@@ -25,3 +25,26 @@ cemv_cli_test(NAME layout_reports_includes_only_model_and_formats EXIT 1
 # never the command line, the test generator, mutation or response time.
 cemv_cli_test(NAME layout_diff_includes_only_its_row EXIT 1
   COMMAND grep -rnE "${_cemv_inc}(properties|encoder|testgen|mutate|response|cli)/" ${PROJECT_SOURCE_DIR}/diff)
+# properties/ uses model, formats and encoder (the monitor) only.
+cemv_cli_test(NAME layout_properties_includes_only_its_row EXIT 1
+  COMMAND grep -rnE "${_cemv_inc}(reports|runtime|checker|testgen|mutate|diff|response|cli)/"
+          ${PROJECT_SOURCE_DIR}/properties)
+# checker/ uses the layers below it; never reports, the consumers or the CLI.
+cemv_cli_test(NAME layout_checker_includes_only_its_row EXIT 1
+  COMMAND grep -rnE "${_cemv_inc}(reports|testgen|mutate|diff|response|cli)/" ${PROJECT_SOURCE_DIR}/checker)
+# testgen/ uses the checker and what it stands on, and reports' XML text; no
+# other consumer of the checker, nor the CLI.
+cemv_cli_test(NAME layout_testgen_includes_only_its_row EXIT 1
+  COMMAND bash -c "grep -rnE '${_cemv_inc}(mutate|diff|response|cli|reports)/' ${PROJECT_SOURCE_DIR}/testgen | grep -v 'reports/xml_text.hpp\"'"
+)
+# mutate/: the mutants use model alone; the mutation report also formats,
+# checker and testgen.
+cemv_cli_test(NAME layout_mutants_include_only_model EXIT 1
+  COMMAND grep -nE "${_cemv_inc}(formats|reports|runtime|encoder|properties|checker|testgen|diff|response|cli)/"
+          ${PROJECT_SOURCE_DIR}/mutate/mutants.hpp ${PROJECT_SOURCE_DIR}/mutate/mutants.cpp)
+cemv_cli_test(NAME layout_mutate_includes_only_its_row EXIT 1
+  COMMAND grep -rnE "${_cemv_inc}(reports|runtime|encoder|properties|diff|response|cli)/" ${PROJECT_SOURCE_DIR}/mutate)
+# response/ uses model, formats, properties, checker and reports; never the
+# runtime or the encoder directly (the checker runs them), nor another consumer.
+cemv_cli_test(NAME layout_response_includes_only_its_row EXIT 1
+  COMMAND grep -rnE "${_cemv_inc}(runtime|encoder|testgen|mutate|diff|cli)/" ${PROJECT_SOURCE_DIR}/response)
