@@ -9,35 +9,26 @@
 
 #include "model/graph.hpp"
 #include "model/vocabulary.hpp"
-#include "properties/parser.hpp"
+#include "properties/build.hpp"
 
 namespace cemv::properties {
 
 namespace {
 
 using model::IntersectionType;
-
-std::string c(int id) { return "cause[" + std::to_string(id) + "]"; }
-std::string e(int id) { return "effect[" + std::to_string(id) + "]"; }
-
-// A tag name as the language writes it: always quoted, so any name of 6.1.4 works.
-std::string tag_literal(const std::string& name) {
-  std::string out = "\"";
-  for (char ch : name) {
-    if (ch == '\\' || ch == '"') out += '\\';
-    out += ch;
-  }
-  return out + "\"";
-}
+using build::Builder;
+using build::CauseField;
+using build::EffectField;
 
 bool processed(const model::Cause* x) { return x && x->function != model::CauseFunction::Comment; }
 bool processed(const model::Effect* x) { return x && x->function != model::EffectFunction::Comment; }
 
 class Writer {
  public:
-  explicit Writer(const model::Matrix& m) : m_(m), graph_(m), inputs_(m) {}
+  explicit Writer(const model::Matrix& m) : m_(m), graph_(m), inputs_(m), b_(m) {}
 
-  std::string run() {
+  PropertyFile run() {
+    out_.file_name = "<standard>";
     for (const auto& i : m_.intersections) intersection(i);
     for (const auto& x : m_.effects)
       if (processed(&x)) output_delay(x);
@@ -47,22 +38,16 @@ class Writer {
       if (processed(&x)) resettable(x);
     for (const auto& x : m_.causes)
       if (processed(&x)) failsafe(x);
-    return out_;
+    return std::move(out_);
   }
 
  private:
-  void block(const std::string& name, const std::string& description, const std::vector<std::string>& assumptions,
-             const std::string& statement) {
-    out_ += "property " + name + " \"" + description + "\" {\n";
-    for (const auto& a : assumptions) out_ += "  assume " + a + "\n";
-    out_ += "  " + statement + "\n}\n";
-  }
-
   // The cause's `active` as the effect reads it (I.4): the previous cycle's
   // value when the reference closes a cycle of the dependency graph.
-  std::string active_as_read(int cause, int effect) const {
+  Expr active_as_read(int cause, int effect) const {
     bool previous = graph_.reads_previous({model::Node::Kind::Cause, cause}, {model::Node::Kind::Effect, effect});
-    return previous ? "prev(" + c(cause) + ".active)" : c(cause) + ".active";
+    Expr active = b_.cause(cause, CauseField::Active);
+    return previous ? Builder::prev(std::move(active)) : active;
   }
 
   // E.2/E.6: an active cause on an N, S, V or R intersection requests the
@@ -71,7 +56,7 @@ class Writer {
   void intersection(const model::Intersection& i) {
     if (!model::is_processed(i.type) || !processed(m_.find_cause(i.cause)) || !processed(m_.find_effect(i.effect)))
       return;
-    std::string cond = active_as_read(i.cause, i.effect);
+    std::vector<Expr> cond{active_as_read(i.cause, i.effect)};
     std::string what = "cause " + std::to_string(i.cause) + " active";
     if (i.xoon) {
       std::vector<const model::Intersection*> group;
@@ -79,9 +64,9 @@ class Writer {
         if (j->xoon && model::is_processed(j->type) && processed(m_.find_cause(j->cause))) group.push_back(j);
       int x = *i.xoon;
       for (const auto* j : group) x = std::min(x, *j->xoon);
-      std::string list;
-      for (const auto* j : group) list += (list.empty() ? "" : ", ") + active_as_read(j->cause, i.effect);
-      cond += " and count(" + list + ") >= " + std::to_string(x);
+      std::vector<Expr> members;
+      for (const auto* j : group) members.push_back(active_as_read(j->cause, i.effect));
+      cond.push_back(Builder::at_least(std::move(members), x));
       what += " with " + std::to_string(x) + "oo" + std::to_string(group.size()) + " of its XooN assignment";
     }
     // The type that counts is the assignment's (E.2): the type of its lowest cause.
@@ -92,16 +77,16 @@ class Writer {
           type = j->type;
           break;
         }
-    cond += " and not " + e(i.effect) + ".bypassed";
+    cond.push_back(Builder::negate(b_.effect(i.effect, EffectField::Bypassed)));
     std::string unless = "not bypassed";
     if (type == IntersectionType::V || type == IntersectionType::R) {
-      cond += " and not " + e(i.effect) + ".override_active";
+      cond.push_back(Builder::negate(b_.effect(i.effect, EffectField::OverrideActive)));
       unless = "neither bypassed nor overridden";
     }
-    block("std.intersection.c" + std::to_string(i.cause) + ".e" + std::to_string(i.effect),
-          what + ", effect " + std::to_string(i.effect) + " " + unless + ": effect " + std::to_string(i.effect) +
-              " active",
-          {}, "always " + cond + " implies " + e(i.effect) + ".active");
+    add(Builder::invariant(
+        "std.intersection.c" + std::to_string(i.cause) + ".e" + std::to_string(i.effect),
+        what + ", effect " + std::to_string(i.effect) + " " + unless + ": effect " + std::to_string(i.effect) + " active",
+        Builder::implies(Builder::all(std::move(cond)), b_.effect(i.effect, EffectField::Active))));
   }
 
   // E.7: once the effect has been active for the whole output delay, the delay
@@ -109,16 +94,17 @@ class Writer {
   void output_delay(const model::Effect& x) {
     if (x.output_delay_ms == 0) return;
     std::uint64_t cycles = (std::uint64_t{x.output_delay_ms} + m_.cycle_ms - 1) / m_.cycle_ms;  // T.2
-    block("std.output_delay.e" + std::to_string(x.id),
-          "effect " + std::to_string(x.id) + " active for its output delay (" + std::to_string(x.output_delay_ms) +
-              " ms): the outputs follow",
-          {}, "always held(" + e(x.id) + ".active, " + std::to_string(cycles) + " cycles) implies not " + e(x.id) +
-                  ".output_delay_running");
+    add(Builder::invariant(
+        "std.output_delay.e" + std::to_string(x.id),
+        "effect " + std::to_string(x.id) + " active for its output delay (" + std::to_string(x.output_delay_ms) +
+            " ms): the outputs follow",
+        Builder::implies(Builder::held(b_.effect(x.id, EffectField::Active), static_cast<int>(cycles)),
+                         Builder::negate(b_.effect(x.id, EffectField::OutputDelayRunning)))));
   }
 
   void reachable(const model::Effect& x) {
-    block("std.reachable.e" + std::to_string(x.id), "effect " + std::to_string(x.id) + " can be tripped", {},
-          "reachable " + e(x.id) + ".active");
+    add(Builder::reachable("std.reachable.e" + std::to_string(x.id), "effect " + std::to_string(x.id) + " can be tripped",
+                           b_.effect(x.id, EffectField::Active)));
   }
 
   // E.4/E.5: an effect that latches (S or R intersection) can leave the latched state.
@@ -128,8 +114,10 @@ class Writer {
       latches = latches || ((i->type == IntersectionType::S || i->type == IntersectionType::R) &&
                             processed(m_.find_cause(i->cause)));
     if (!latches) return;
-    block("std.resettable.e" + std::to_string(x.id), "latched effect " + std::to_string(x.id) + " can be reset", {},
-          "reachable prev(" + e(x.id) + ".latched) and not " + e(x.id) + ".latched");
+    add(Builder::reachable("std.resettable.e" + std::to_string(x.id),
+                           "latched effect " + std::to_string(x.id) + " can be reset",
+                           Builder::all({Builder::prev(b_.effect(x.id, EffectField::Latched)),
+                                         Builder::negate(b_.effect(x.id, EffectField::Latched))})));
   }
 
   // C.3/C.4: with every tag of a `trip` or `degrade` cause in bad quality the
@@ -137,48 +125,38 @@ class Writer {
   // Simulation delivers good quality (C.2), so the property assumes none.
   void failsafe(const model::Cause& x) {
     if (x.bad_quality == model::BadQuality::Ignore || x.tags.empty()) return;
-    std::vector<std::string> assumptions;
-    std::string all_bad;
+    std::vector<Expr> assumptions, cond;
     for (const auto& t : x.tags) {
       if (model::parse_internal_ref(t.name) || !inputs_.find(t.name)) return;  // no quality to lose
-      all_bad += (all_bad.empty() ? "" : " and ") + std::string("bad(") + tag_literal(t.name) + ")";
-      assumptions.push_back("not issued(simulate_tag, tag = " + tag_literal(t.name) + ")");
+      cond.push_back(b_.bad(t.name));
+      assumptions.push_back(Builder::negate(b_.simulate_issued(t.name)));
     }
-    block("std.failsafe.c" + std::to_string(x.id),
-          "every tag of cause " + std::to_string(x.id) + " in bad quality (" + model::to_string(x.bad_quality) +
-              "): trip requested",
-          assumptions, "always " + all_bad + " and " + c(x.id) + ".voting != bypass implies " + c(x.id) +
-                           ".trip_requested");
+    cond.push_back(Builder::voting_is_not(b_.cause(x.id, CauseField::Voting), model::Voting::Bypass));
+    add(Builder::invariant("std.failsafe.c" + std::to_string(x.id),
+                           "every tag of cause " + std::to_string(x.id) + " in bad quality (" +
+                               model::to_string(x.bad_quality) + "): trip requested",
+                           Builder::implies(Builder::all(std::move(cond)), b_.cause(x.id, CauseField::TripRequested)),
+                           std::move(assumptions)));
   }
+
+  void add(Property p) { out_.properties.push_back(std::move(p)); }
 
   const model::Matrix& m_;
   model::DependencyGraph graph_;
   model::InputTable inputs_;
-  std::string out_;
+  Builder b_;
+  PropertyFile out_;
 };
-
-void clear_locations(Expr& x) {
-  x.loc = {};
-  for (auto& a : x.args) clear_locations(a);
-}
 
 }  // namespace
 
-std::string standard_properties_text(const model::Matrix& m) { return Writer(m).run(); }
+PropertyFile standard_properties(const model::Matrix& m) { return Writer(m).run(); }
 
-PropertyFile standard_properties(const model::Matrix& m) {
-  PropertyFile f = parse_properties(standard_properties_text(m), m, "<standard>");
-  for (auto& p : f.properties) {
-    p.loc = {};
-    clear_locations(p.body);
-    clear_locations(p.trigger);
-    clear_locations(p.response);
-    for (auto& a : p.assumptions) {
-      a.loc = {};
-      clear_locations(a.expr);
-    }
-  }
-  return f;
+std::string standard_properties_text(const model::Matrix& m) {
+  const model::InputTable inputs(m);
+  std::string out;
+  for (const auto& p : standard_properties(m).properties) out += build::block_text(p, inputs);
+  return out;
 }
 
 }  // namespace cemv::properties

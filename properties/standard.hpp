@@ -10,15 +10,16 @@
 
 namespace cemv::properties {
 
-// The standard properties in the property language, one block per property,
-// in a fixed order (intersections by cause then effect, then per effect, then
-// per cause). Names are stable:
+// The standard properties, built as trees (properties/build.hpp) in a fixed
+// order (intersections by cause then effect, then per effect, then per
+// cause); source locations are 0 (generated). Names are stable:
 //   std.intersection.cI.eJ  std.output_delay.eJ  std.reachable.eJ
 //   std.resettable.eJ       std.failsafe.cI
 // The matrix must have passed validation without errors.
-std::string standard_properties_text(const model::Matrix& m);
-
-// The same, parsed and resolved; source locations are 0 (generated).
 PropertyFile standard_properties(const model::Matrix& m);
+
+// The same printed in the property language, one block per property, for
+// people (and for a file to start one's own requirements from).
+std::string standard_properties_text(const model::Matrix& m);
 
 }  // namespace cemv::properties

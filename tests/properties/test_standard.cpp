@@ -7,6 +7,7 @@
 
 #include "formats/matrix_json.hpp"
 #include "model/validate.hpp"
+#include "properties/parser.hpp"
 #include "properties/standard.hpp"
 #include "tests/support/random_inputs.hpp"
 #include "tests/support/random_matrix.hpp"
@@ -42,8 +43,8 @@ TEST(StandardProperties, TankNamesAndForms) {
                       "  always cause[1].active and not effect[1].bypassed implies effect[1].active\n}\n"),
             std::string::npos)
       << text;
-  EXPECT_NE(text.find("  assume not issued(simulate_tag, tag = \"LT_100A\")\n"), std::string::npos);
-  EXPECT_NE(text.find("  always bad(\"LT_100A\") and bad(\"LT_100B\") and bad(\"LT_100C\") and cause[1].voting != "
+  EXPECT_NE(text.find("  assume not issued(simulate_tag, tag = LT_100A)\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("  always bad(LT_100A) and bad(LT_100B) and bad(LT_100C) and cause[1].voting != "
                       "bypass implies cause[1].trip_requested\n"),
             std::string::npos);
   EXPECT_NE(text.find("reachable prev(effect[1].latched) and not effect[1].latched"), std::string::npos);
@@ -61,6 +62,55 @@ TEST(StandardProperties, XooNOverrideAndOutputDelayForms) {
   EXPECT_NE(all.find(") >= 2 and not effect["), std::string::npos) << "no XooN form";
   EXPECT_NE(all.find(".override_active implies"), std::string::npos) << "no V/R form";
   EXPECT_NE(all.find("property std.output_delay.e"), std::string::npos) << "no output delay";
+}
+
+// The standard set is built as trees; its text is printed for people. Read
+// back, the text must mean exactly the trees (the printer and the builder
+// agree with the parser), for the examples and for random matrices.
+bool same_expr(const Expr& a, const Expr& b) {
+  if (a.kind != b.kind || a.type != b.type || a.args.size() != b.args.size()) return false;
+  switch (a.kind) {
+    case Expr::Kind::BoolConst: if (a.bool_value != b.bool_value) return false; break;
+    case Expr::Kind::IntConst: if (a.int_value != b.int_value) return false; break;
+    case Expr::Kind::FloatConst: if (a.float_value != b.float_value) return false; break;
+    case Expr::Kind::Observable: if (a.observable.key != b.observable.key) return false; break;
+    case Expr::Kind::InputValue:
+    case Expr::Kind::InputBad: if (a.input != b.input) return false; break;
+    case Expr::Kind::CommandIssued:
+      if (a.command.op != b.command.op || a.command.cause != b.command.cause || a.command.effect != b.command.effect ||
+          a.command.tag != b.command.tag || a.command.group != b.command.group || a.command.on != b.command.on ||
+          a.command.tag_name != b.command.tag_name)
+        return false;
+      break;
+    case Expr::Kind::Compare: if (a.cmp != b.cmp) return false; break;
+    default: if (a.cycles != b.cycles) return false; break;
+  }
+  for (std::size_t i = 0; i < a.args.size(); ++i)
+    if (!same_expr(a.args[i], b.args[i])) return false;
+  return true;
+}
+
+void expect_text_means_the_trees(const model::Matrix& m, const std::string& what) {
+  const PropertyFile built = standard_properties(m);
+  const PropertyFile read = parse_properties(standard_properties_text(m), m, "<standard>");
+  ASSERT_EQ(read.properties.size(), built.properties.size()) << what;
+  for (std::size_t i = 0; i < built.properties.size(); ++i) {
+    const Property &b = built.properties[i], &r = read.properties[i];
+    EXPECT_EQ(r.name, b.name) << what;
+    EXPECT_EQ(r.description, b.description) << what;
+    EXPECT_EQ(r.kind, b.kind) << what << " " << b.name;
+    EXPECT_TRUE(same_expr(r.body, b.body)) << what << " " << b.name;
+    ASSERT_EQ(r.assumptions.size(), b.assumptions.size()) << what << " " << b.name;
+    for (std::size_t k = 0; k < b.assumptions.size(); ++k)
+      EXPECT_TRUE(same_expr(r.assumptions[k].expr, b.assumptions[k].expr)) << what << " " << b.name;
+  }
+}
+
+TEST(StandardProperties, TheTextPrintedMeansTheTreesBuilt) {
+  for (const char* name : {"pipeline-hipps", "burner-management", "compressor", "tank-overfill"})
+    expect_text_means_the_trees(example(name), name);
+  for (std::uint64_t seed = 1; seed <= 40; ++seed)
+    expect_text_means_the_trees(testsupport::random_matrix(seed), "seed " + std::to_string(seed));
 }
 
 // Counts, per kind of standard property, how often each held / was witnessed.
