@@ -1,0 +1,234 @@
+#include "defeats/enumerate.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <stdexcept>
+
+#include "checker/check.hpp"
+#include "defeats/runs.hpp"
+#include "formats/diagnostics.hpp"
+#include "properties/parser.hpp"
+#include "response/demand.hpp"
+#include "response/property.hpp"
+
+namespace cemv::defeats {
+
+namespace {
+
+using Set = std::vector<int>;
+
+bool subset_of(const Set& a, const Set& b) { return std::includes(b.begin(), b.end(), a.begin(), a.end()); }
+
+// The property's name for a set: the path's key and the set's action
+// numbers (1-based), "defeat.c1.e2.a3_7"; the empty set "defeat.c1.e2.none";
+// a group question (never reported as a defeat) "defeat.c1.e2.group<n>".
+std::string set_name(const PathDefeats& pd, const Set& s) {
+  std::string n = "defeat." + pd.path.key() + ".";
+  if (s.empty()) return n + "none";
+  n += "a";
+  for (std::size_t i = 0; i < s.size(); ++i) n += (i ? "_" : "") + std::to_string(s[i] + 1);
+  return n;
+}
+
+std::string group_name(const PathDefeats& pd, int n) { return "defeat." + pd.path.key() + ".group" + std::to_string(n); }
+
+class Enumerator {
+ public:
+  Enumerator(const model::Matrix& m, PathDefeats& pd, const AskOptions& o)
+      : m_(m), pd_(pd), o_(o), runs_(response::demand_runs(m, pd.path, response::Mode::Normal, *pd.requirement)) {}
+
+  void run(int max_size) {
+    const Question& none = ask({}, true, "");
+    if (!none.holds()) {
+      if (none.defeats()) record_defeat(pd_.questions.size() - 1);
+      finish(0);
+      return;
+    }
+    Set all(pd_.actions.size());
+    for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
+    if (max_size >= 1) singles(all);
+    for (int k = 2; k <= max_size && !cancelled(); ++k) level(k);
+    finish(max_size);
+  }
+
+ private:
+  bool cancelled() const { return o_.cancel && o_.cancel->cancelled(); }
+
+  // Decides whether exactly the actions of `s` may occur defeats the path.
+  // `write`: a candidate whose counterexample may be reported (written
+  // under the out folder); group questions are not.
+  const Question& ask(const Set& s, bool write, const std::string& name_override) {
+    Question q;
+    q.actions = s;
+    q.property = name_override.empty() ? set_name(pd_, s) : name_override;
+    std::vector<std::string> excluded;
+    for (std::size_t i = 0; i < pd_.actions.size(); ++i)
+      if (!std::binary_search(s.begin(), s.end(), static_cast<int>(i)))
+        excluded.push_back(pd_.actions[i].excluded_term());
+    const std::string text =
+        response::requirement_property_text(m_, pd_.path, *pd_.requirement, q.property, excluded);
+    properties::PropertyFile file;
+    try {
+      file = properties::parse_properties(text, m_, "cemv-defeats:" + q.property);
+    } catch (const formats::LoadError& e) {
+      std::string what;
+      for (const auto& i : e.issues()) what += "\n" + i.str();
+      throw std::logic_error("cemv defeats wrote a property the parser refuses:" + what + "\n" + text);
+    }
+    checker::CheckOptions options;
+    options.property_timeout_s = o_.timeout_s;
+    options.cancel = o_.cancel;
+    options.jobs = 1;
+    options.out_dir = write ? o_.out_dir : "";
+    options.support = false;
+    options.budgets.engine = o_.work;
+    // The demand with the set's actions taken: most defeats shown by one run
+    // of the runtime; the runs also witness that a demand can occur (vacuity).
+    options.directed_runs = defeat_runs(m_, pd_.actions, s, runs_);
+    options.localize_to = pd_.path.elements;
+    const checker::CheckResult r = checker::check_properties(m_, {file}, options);
+    const checker::PropertyResult& pr = r.properties.at(0);
+    q.verdict = pr.verdict;
+    q.method = pr.method;
+    q.reason = pr.reason;
+    q.work = pr.work;
+    q.violation_cycle = pr.violation_cycle;
+    if (!pr.scenario_file.empty()) q.scenario = std::filesystem::path(pr.scenario_file).filename().string();
+    if (!write) q.scenario.clear();
+    pd_.questions.push_back(std::move(q));
+    return pd_.questions.back();
+  }
+
+  void incomplete(const Question& q) {
+    complete_ = false;
+    if (reason_.empty()) reason_ = q.property + ": " + (q.reason.empty() ? "unknown" : q.reason);
+  }
+
+  // The question whose proof covers `s` (a holding superset), or none.
+  std::optional<std::size_t> cover(const Set& s) const {
+    for (std::size_t i = 0; i < pd_.questions.size(); ++i)
+      if (pd_.questions[i].holds() && subset_of(s, pd_.questions[i].actions)) return i;
+    return std::nullopt;
+  }
+
+  bool contains_defeat(const Set& s) const {
+    return std::any_of(pd_.sets.begin(), pd_.sets.end(),
+                       [&](const DefeatSet& d) { return subset_of(d.actions, s); });
+  }
+
+  void record_defeat(std::size_t question) {
+    DefeatSet d;
+    d.actions = pd_.questions[question].actions;
+    d.question = question;
+    const bool declared = !d.actions.empty() && std::all_of(d.actions.begin(), d.actions.end(), [&](int a) {
+      return declared_for(m_, pd_.path, pd_.actions[a]);
+    });
+    d.set_class = declared ? SetClass::Declared : SetClass::Indirect;
+    for (std::size_t drop = 0; drop < d.actions.size(); ++drop) {
+      Set sub = d.actions;
+      sub.erase(sub.begin() + static_cast<std::ptrdiff_t>(drop));
+      const std::optional<std::size_t> c = cover(sub);
+      if (!c) throw std::logic_error("cemv defeats: a defeat set without proofs of its subsets");
+      d.subsets.emplace_back(sub, *c);
+    }
+    pd_.sets.push_back(std::move(d));
+  }
+
+  // Level 1 by group testing: a group of actions proved not to defeat covers
+  // each of its singletons at once; a group that defeats (or is undecided)
+  // is halved. Each singleton left is asked on its own, and its
+  // counterexample is the one reported.
+  void singles(const Set& group) {
+    if (group.empty() || cancelled()) return;
+    if (group.size() == 1) {
+      const Question& q = ask(group, true, "");
+      if (q.defeats()) record_defeat(pd_.questions.size() - 1);
+      return;
+    }
+    // Proved: its proof covers every singleton of the group. Otherwise
+    // (it defeats, or is undecided, which the halves then decide) halved.
+    if (ask(group, false, group_name(pd_, ++groups_)).holds()) return;
+    const auto mid = group.begin() + static_cast<std::ptrdiff_t>(group.size() / 2);
+    singles(Set(group.begin(), mid));
+    singles(Set(mid, group.end()));
+  }
+
+  // Level k >= 2: the sets of k actions none of whose subsets defeats,
+  // all of whose (k-1)-subsets are proved not to, and not covered already.
+  void level(int k) {
+    std::vector<Set> candidates;
+    Set live;
+    for (std::size_t i = 0; i < pd_.actions.size(); ++i)
+      if (!contains_defeat({static_cast<int>(i)})) live.push_back(static_cast<int>(i));
+    if (static_cast<int>(live.size()) < k) return;
+    std::vector<bool> pick(live.size(), false);
+    std::fill(pick.begin(), pick.begin() + k, true);
+    do {
+      Set s;
+      for (std::size_t i = 0; i < live.size(); ++i)
+        if (pick[i]) s.push_back(live[i]);
+      if (contains_defeat(s) || cover(s)) continue;
+      bool subsets_hold = true;
+      for (std::size_t drop = 0; drop < s.size() && subsets_hold; ++drop) {
+        Set sub = s;
+        sub.erase(sub.begin() + static_cast<std::ptrdiff_t>(drop));
+        subsets_hold = cover(sub).has_value();
+      }
+      if (subsets_hold) candidates.push_back(std::move(s));  // else a subset undecided: not minimal for sure
+    } while (std::prev_permutation(pick.begin(), pick.end()));
+    if (candidates.empty()) return;
+    if (candidates.size() > 1) {
+      // One question for the whole level first: the union of the candidates
+      // proved not to defeat covers every one of them.
+      Set all;
+      for (const auto& c : candidates) all.insert(all.end(), c.begin(), c.end());
+      std::sort(all.begin(), all.end());
+      all.erase(std::unique(all.begin(), all.end()), all.end());
+      if (ask(all, false, group_name(pd_, ++groups_)).holds()) return;
+    }
+    for (const auto& s : candidates) {
+      if (cancelled()) return;
+      if (contains_defeat(s) || cover(s)) continue;
+      if (ask(s, true, "").defeats()) record_defeat(pd_.questions.size() - 1);
+    }
+  }
+
+  void finish(int) {
+    // A group question left undecided was split: only a candidate's own
+    // undecided answer leaves the path incomplete.
+    complete_ = true;
+    reason_.clear();
+    for (const auto& q : pd_.questions)
+      if (q.verdict == checker::PropertyVerdict::Unknown && q.property.find(".group") == std::string::npos)
+        incomplete(q);
+    if (cancelled()) {
+      complete_ = false;
+      if (reason_.empty()) reason_ = checker::to_string(checker::UnknownReason::TimeLimit);
+    }
+    pd_.status = complete_ ? PathStatus::Complete : PathStatus::Unknown;
+    pd_.reason = reason_;
+    std::stable_sort(pd_.sets.begin(), pd_.sets.end(),
+                     [](const DefeatSet& a, const DefeatSet& b) { return a.actions.size() < b.actions.size(); });
+    for (const auto& d : pd_.sets)
+      if (d.set_class == SetClass::Indirect) {
+        pd_.distance = static_cast<int>(d.actions.size());
+        break;
+      }
+  }
+
+  const model::Matrix& m_;
+  PathDefeats& pd_;
+  const AskOptions& o_;
+  std::vector<std::vector<model::CycleInput>> runs_;
+  bool complete_ = true;
+  std::string reason_;
+  int groups_ = 0;
+};
+
+}  // namespace
+
+void enumerate_minimal_sets(const model::Matrix& m, PathDefeats& pd, int max_size, const AskOptions& o) {
+  Enumerator(m, pd, o).run(max_size);
+}
+
+}  // namespace cemv::defeats
