@@ -141,22 +141,18 @@ std::vector<Action> actions_of(const model::Matrix& m, const response::Path& p) 
         if (t.simulation_allowed) add_tag_action({ActionKind::SimulateOutput, 0, e.id, 0, t.name});
     }
   }
-  std::stable_sort(out.begin(), out.end(), [](const Action& a, const Action& b) {
-    return std::tie(a.kind, a.cause, a.effect, a.tag_index) < std::tie(b.kind, b.cause, b.effect, b.tag_index);
-  });
   return out;
 }
 
 bool declared_for(const model::Matrix& m, const response::Path& p, const Action& a) {
-  auto on_path = [&](model::Node::Kind kind, int id) {
-    return std::any_of(p.elements.begin(), p.elements.end(),
-                       [&](const model::Node& n) { return n.kind == kind && n.id == id; });
-  };
-  auto cause_with_tag = [&](bool bypass) {
-    // A shared tag: declared when it takes some cause of the path out.
-    for (const auto& n : p.elements) {
-      if (n.kind != model::Node::Kind::Cause) continue;
-      const model::Cause& c = *m.find_cause(n.id);
+  // The path's own elements: its trigger causes and its effect. A relay or
+  // an intermediate effect of a chain is another element (I.3): an
+  // operation on it acts through an internal reference.
+  const auto own_cause = [&](int id) { return std::count(p.causes.begin(), p.causes.end(), id) > 0; };
+  const auto own_cause_reads = [&](bool bypass) {
+    // A shared tag: declared when it takes some own cause out.
+    for (int id : p.causes) {
+      const model::Cause& c = *m.find_cause(id);
       const auto& t = bypass ? c.bypass_tag : c.inhibit_tag;
       if (t && model::tag_key(*t) == model::tag_key(a.tag)) return true;
     }
@@ -164,32 +160,25 @@ bool declared_for(const model::Matrix& m, const response::Path& p, const Action&
   };
   switch (a.kind) {
     case ActionKind::SoftBypassCause:
-    case ActionKind::SoftBypassTag: return on_path(model::Node::Kind::Cause, a.cause);
-    case ActionKind::CauseBypassTag: return cause_with_tag(true);
-    case ActionKind::CauseInhibitTag: return cause_with_tag(false);
+    case ActionKind::SoftBypassTag: return own_cause(a.cause);
+    case ActionKind::CauseBypassTag: return own_cause_reads(true);
+    case ActionKind::CauseInhibitTag: return own_cause_reads(false);
     case ActionKind::SoftBypassEffect:
     case ActionKind::Override:
     case ActionKind::EffectBypassTag:
-    case ActionKind::MaskTag: return on_path(model::Node::Kind::Effect, a.effect);
-    // A simulation of the path's own cause's input or own effect's output
-    // is an operation on that element (it stops the element seeing or
-    // driving the plant); through a tag of another element, or a fault, it
-    // is indirect.
+    case ActionKind::MaskTag: return a.effect == p.effect;
+    // A simulation of an own cause's input or of the effect's output is an
+    // operation on that element (it stops it seeing or driving the plant).
     case ActionKind::SimulateInput:
-      for (const auto& n : p.elements) {
-        if (n.kind != model::Node::Kind::Cause) continue;
-        for (const auto& t : m.find_cause(n.id)->tags)
+      for (int id : p.causes)
+        for (const auto& t : m.find_cause(id)->tags)
           if (model::tag_key(t.name) == model::tag_key(a.tag)) return true;
-      }
       return false;
     case ActionKind::SimulateOutput:
-      for (const auto& n : p.elements) {
-        if (n.kind != model::Node::Kind::Effect) continue;
-        for (const auto& t : m.find_effect(n.id)->tags)
-          if (model::tag_key(t.name) == model::tag_key(a.tag)) return true;
-      }
+      for (const auto& t : m.find_effect(p.effect)->tags)
+        if (model::tag_key(t.name) == model::tag_key(a.tag)) return true;
       return false;
-    case ActionKind::BadQuality: return false;
+    case ActionKind::BadQuality: return false;  // a fault
   }
   return false;
 }

@@ -46,15 +46,18 @@ struct Action {
 
 // Every action the configuration allows in the cone of influence of the
 // path's effect (the causes and effects whose value reaches it), one per tag
-// where several elements share it, in a fixed order (by kind, then element,
-// then tag).
+// where several elements share it, in a fixed order: by element (causes by
+// id, then effects), and within one as listed in ActionKind, tag by tag. The
+// actions of one element are neighbours, so that the divide and conquer of
+// the enumeration keeps them together.
 std::vector<Action> actions_of(const model::Matrix& m, const response::Path& p);
 
 // Whether the action is an operation whose purpose is to take one of the
-// path's own elements out of service: a bypass (hard or soft, of the cause or
-// of one of its tags) or inhibit of a cause on the path; a bypass, override or
-// mask of an effect on the path; a simulation of an input tag of a cause on
-// the path or an output tag of an effect on it. Bad quality never is.
+// path's own elements (its trigger causes, its effect) out of service: a
+// bypass (hard or soft, of the cause or of one of its tags) or inhibit of a
+// trigger cause; a bypass, override or mask of the effect; a simulation of a
+// trigger cause's input or the effect's output. Bad quality never is, nor an
+// operation on a relay or an intermediate effect of a chain.
 bool declared_for(const model::Matrix& m, const response::Path& p, const Action& a);
 
 }  // namespace cemv::defeats

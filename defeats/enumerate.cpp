@@ -47,7 +47,8 @@ class Enumerator {
     Set all(pd_.actions.size());
     for (std::size_t i = 0; i < all.size(); ++i) all[i] = static_cast<int>(i);
     if (max_size >= 1) singles(all);
-    for (int k = 2; k <= max_size && !cancelled(); ++k) level(k);
+    if (max_size >= 2 && !cancelled()) pairs(proved_singles());
+    for (int k = 3; k <= max_size && !cancelled(); ++k) level(k);
     finish(max_size);
   }
 
@@ -84,7 +85,7 @@ class Enumerator {
     options.budgets.engine = o_.work;
     // The demand with the set's actions taken: most defeats shown by one run
     // of the runtime; the runs also witness that a demand can occur (vacuity).
-    options.directed_runs = defeat_runs(m_, pd_.actions, s, runs_);
+    options.directed_runs = defeat_runs(m_, pd_.path, pd_.actions, s, runs_);
     options.localize_to = pd_.path.elements;
     const checker::CheckResult r = checker::check_properties(m_, {file}, options);
     const checker::PropertyResult& pr = r.properties.at(0);
@@ -153,7 +154,66 @@ class Enumerator {
     singles(Set(mid, group.end()));
   }
 
-  // Level k >= 2: the sets of k actions none of whose subsets defeats,
+  // The actions whose singleton is proved not to defeat.
+  Set proved_singles() const {
+    Set live;
+    for (std::size_t i = 0; i < pd_.actions.size(); ++i)
+      if (cover({static_cast<int>(i)})) live.push_back(static_cast<int>(i));
+    return live;
+  }
+
+  // One pair asked on its own (its counterexample is the one reported).
+  void pair(const Set& s) {
+    if (cancelled() || contains_defeat(s) || cover(s)) return;
+    if (ask(s, true, "").defeats()) record_defeat(pd_.questions.size() - 1);
+  }
+
+  // A group of actions proved not to defeat covers all its pairs; none is
+  // asked when it holds a known defeat set (it would defeat) or is covered.
+  // True when covered.
+  bool group_holds(const Set& s) {
+    if (cover(s)) return true;
+    if (contains_defeat(s)) return false;
+    return ask(s, false, group_name(pd_, ++groups_)).holds();
+  }
+
+  static std::pair<Set, Set> halves(const Set& s) {
+    const auto mid = s.begin() + static_cast<std::ptrdiff_t>(s.size() / 2);
+    return {Set(s.begin(), mid), Set(mid, s.end())};
+  }
+
+  // Level 2 by divide and conquer over actions none of which defeats
+  // alone: the pairs within each half, then the pairs across the halves.
+  void pairs(const Set& s) {
+    if (s.size() < 2 || cancelled()) return;
+    if (s.size() == 2) return pair(s);
+    if (group_holds(s)) return;
+    const auto [a, b] = halves(s);
+    pairs(a);
+    pairs(b);
+    cross(a, b);
+  }
+
+  // The pairs with one action in `a` and one in `b`: their union asked as
+  // one group, halving the larger side while it defeats.
+  void cross(const Set& a, const Set& b) {
+    if (a.empty() || b.empty() || cancelled()) return;
+    if (a.size() == 1 && b.size() == 1) {
+      Set s{a[0], b[0]};
+      std::sort(s.begin(), s.end());
+      return pair(s);
+    }
+    Set u = a;
+    u.insert(u.end(), b.begin(), b.end());
+    std::sort(u.begin(), u.end());
+    if (group_holds(u)) return;
+    const bool split_a = a.size() >= b.size();
+    const auto [x, y] = halves(split_a ? a : b);
+    cross(split_a ? x : a, split_a ? b : x);
+    cross(split_a ? y : a, split_a ? b : y);
+  }
+
+  // Level k >= 3: the sets of k actions none of whose subsets defeats,
   // all of whose (k-1)-subsets are proved not to, and not covered already.
   void level(int k) {
     std::vector<Set> candidates;
@@ -207,8 +267,9 @@ class Enumerator {
     }
     pd_.status = complete_ ? PathStatus::Complete : PathStatus::Unknown;
     pd_.reason = reason_;
-    std::stable_sort(pd_.sets.begin(), pd_.sets.end(),
-                     [](const DefeatSet& a, const DefeatSet& b) { return a.actions.size() < b.actions.size(); });
+    std::stable_sort(pd_.sets.begin(), pd_.sets.end(), [](const DefeatSet& a, const DefeatSet& b) {
+      return a.actions.size() != b.actions.size() ? a.actions.size() < b.actions.size() : a.actions < b.actions;
+    });
     for (const auto& d : pd_.sets)
       if (d.set_class == SetClass::Indirect) {
         pd_.distance = static_cast<int>(d.actions.size());

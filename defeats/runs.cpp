@@ -1,5 +1,9 @@
 #include "defeats/runs.hpp"
 
+#include <optional>
+#include <set>
+#include <string>
+
 namespace cemv::defeats {
 
 namespace {
@@ -20,15 +24,72 @@ float unsafe_value(const model::Matrix& m, const Action& a) {
   return 1.0f;
 }
 
+// The run with the demand moved onto the tags the set touches: for each
+// voted trigger cause, the tags beyond the limit at the end of the run are
+// replaced by the touched ones first, then the untouched ones, as many as
+// before. Nullopt when it moves nothing.
+std::optional<Run> moved_demand(const model::Matrix& m, const model::InputTable& table, const response::Path& p,
+                                const std::vector<Action>& actions, const std::vector<int>& set, Run run) {
+  if (run.empty()) return std::nullopt;
+  std::set<std::string> touched;
+  for (int i : set)
+    if (actions[i].kind == ActionKind::SoftBypassTag || actions[i].kind == ActionKind::SimulateInput ||
+        actions[i].kind == ActionKind::BadQuality)
+      touched.insert(model::tag_key(actions[i].tag));
+  const std::size_t start = demand_start(run);
+  bool moved = false;
+  for (int id : p.causes) {
+    const model::Cause& c = *m.find_cause(id);
+    std::vector<std::size_t> tags;  // input indices of the external tags, in the cause's order
+    std::vector<bool> ett;
+    for (const auto* t : response::external_tags(c))
+      if (auto i = table.find(t->name)) {
+        tags.push_back(*i);
+        ett.push_back(t->ett);
+      }
+    if (tags.size() < 2) continue;
+    const auto& last = run.back().tags;
+    std::size_t beyond = 0;
+    std::optional<float> analog_value;
+    for (std::size_t k = 0; k < tags.size(); ++k)
+      if (last[tags[k]].value != run[0].tags[tags[k]].value) {
+        ++beyond;
+        analog_value = last[tags[k]].value;
+      }
+    std::vector<std::size_t> order;  // touched first
+    for (std::size_t k = 0; k < tags.size(); ++k)
+      if (touched.count(model::tag_key(table.tags()[tags[k]].name))) order.push_back(k);
+    if (order.empty() || beyond == 0) continue;
+    for (std::size_t k = 0; k < tags.size(); ++k)
+      if (!touched.count(model::tag_key(table.tags()[tags[k]].name))) order.push_back(k);
+    for (std::size_t r = 0; r < order.size(); ++r) {
+      const std::size_t k = order[r];
+      const float quiet = run[0].tags[tags[k]].value;
+      const float trip = c.input == model::InputKind::Analog ? *analog_value : (ett[k] ? 1.0f : 0.0f);
+      for (std::size_t cycle = start; cycle < run.size(); ++cycle)
+        if (run[cycle].tags[tags[k]].value != run[0].tags[tags[k]].value || r < beyond)
+          run[cycle].tags[tags[k]].value = r < beyond ? trip : quiet;
+      moved = true;
+    }
+  }
+  if (!moved) return std::nullopt;
+  return run;
+}
+
 }  // namespace
 
-std::vector<Run> defeat_runs(const model::Matrix& m, const std::vector<Action>& actions, const std::vector<int>& set,
-                             const std::vector<Run>& demand_runs) {
+std::vector<Run> defeat_runs(const model::Matrix& m, const response::Path& p, const std::vector<Action>& actions,
+                             const std::vector<int>& set, const std::vector<Run>& demand_runs) {
   if (set.empty()) return demand_runs;
   const model::InputTable table(m);
   const model::CommandOrder order(m);
+  std::vector<Run> bases;
+  for (const Run& run : demand_runs) {
+    bases.push_back(run);
+    if (auto moved = moved_demand(m, table, p, actions, set, run)) bases.push_back(std::move(*moved));
+  }
   std::vector<Run> out;
-  for (Run run : demand_runs) {
+  for (Run run : bases) {
     if (run.empty()) continue;
     const std::size_t start = demand_start(run);
     std::vector<model::Command> first;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "defeats/actions.hpp"
+#include "response/paths.hpp"
 #include "model/vocabulary.hpp"
 
 namespace cemv::defeats {
@@ -19,7 +20,11 @@ using Run = std::vector<model::CycleInput>;
 // cycle; an output simulated at its unsafe value; an input in bad quality
 // delivering its quiet value from the cycle the demand begins. An override
 // needs a running request first and is left to the engines.
-std::vector<Run> defeat_runs(const model::Matrix& m, const std::vector<Action>& actions, const std::vector<int>& set,
-                             const std::vector<Run>& demand_runs);
+// Where the set touches tags of a voted trigger cause (a tag soft bypass, a
+// simulation, a bad quality), a second run takes those tags as the ones
+// beyond the limit, and as many of the rest as the demand had: a defeat of
+// a 2oo3 needs the tags taken out to be the ones that see the demand.
+std::vector<Run> defeat_runs(const model::Matrix& m, const response::Path& p, const std::vector<Action>& actions,
+                             const std::vector<int>& set, const std::vector<Run>& demand_runs);
 
 }  // namespace cemv::defeats
