@@ -25,3 +25,7 @@ cemv_cli_test(NAME layout_reports_includes_only_model_and_formats EXIT 1
 # never the command line, the test generator, mutation or response time.
 cemv_cli_test(NAME layout_diff_includes_only_its_row EXIT 1
   COMMAND grep -rnE "${_cemv_inc}(properties|encoder|testgen|mutate|response|cli)/" ${PROJECT_SOURCE_DIR}/diff)
+# defeats/ builds on response/ and the checker; never the command line, the
+# test generator, mutation or change comparison.
+cemv_cli_test(NAME layout_defeats_includes_only_its_row EXIT 1
+  COMMAND grep -rnE "${_cemv_inc}(runtime|encoder|testgen|mutate|diff|cli)/" ${PROJECT_SOURCE_DIR}/defeats)
