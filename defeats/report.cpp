@@ -144,6 +144,9 @@ std::string json(const model::Matrix& m, const DefeatsResult& r, int require_dis
       x["kind"] = to_string(a.kind);
       x["description"] = a.description(m);
       x["declared"] = declared_for(m, p.path, a);
+      x["cause"] = a.cause ? ordered_json(a.cause) : ordered_json(nullptr);
+      x["effect"] = a.effect ? ordered_json(a.effect) : ordered_json(nullptr);
+      x["tag"] = a.tag.empty() ? ordered_json(nullptr) : ordered_json(a.tag);
       actions.push_back(std::move(x));
     }
     o["actions"] = std::move(actions);
