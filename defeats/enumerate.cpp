@@ -59,6 +59,9 @@ class Enumerator {
   // `write`: a candidate whose counterexample may be reported (written
   // under the out folder); group questions are not.
   const Question& ask(const Set& s, bool write, const std::string& name_override) {
+    // A group question (named by the caller) only needs a proof: a group
+    // that is not proved is split, whether it defeats or is undecided.
+    const bool group = !name_override.empty();
     Question q;
     q.actions = s;
     q.property = name_override.empty() ? set_name(pd_, s) : name_override;
@@ -87,7 +90,27 @@ class Enumerator {
     // of the runtime; the runs also witness that a demand can occur (vacuity).
     options.directed_runs = defeat_runs(m_, pd_.path, pd_.actions, s, runs_);
     options.localize_to = pd_.path.elements;
-    const checker::CheckResult r = checker::check_properties(m_, {file}, options);
+    // A question no directed run falsifies usually holds: the engines of a
+    // proof first, as cemv response asks for a bound it expects to hold
+    // (invariants+induction, k-induction, BMC; PDR and BMC on a wide cone);
+    // left open, the whole portfolio.
+    // A group gets the proof engines alone, within a quarter of the budget:
+    // searching a group's counterexample past the directed runs (the
+    // accelerated unrolling over a long T) is work the split does anyway.
+    options.engines = {checker::Method::InvariantsInduction, checker::Method::KInduction, checker::Method::Bmc};
+    options.engines_when_wide = {checker::Method::Pdr, checker::Method::Bmc};
+    if (group) {
+      options.engines.pop_back();
+      options.engines_when_wide.pop_back();
+      options.budgets.engine = o_.work / 4;
+    }
+    checker::CheckResult r = checker::check_properties(m_, {file}, options);
+    if (r.properties.at(0).verdict == checker::PropertyVerdict::Unknown && !group && !cancelled()) {
+      options.engines.clear();
+      options.engines_when_wide.clear();
+      options.localize_to.clear();
+      r = checker::check_properties(m_, {file}, options);
+    }
     const checker::PropertyResult& pr = r.properties.at(0);
     q.verdict = pr.verdict;
     q.method = pr.method;
