@@ -26,3 +26,10 @@ if(TARGET cemv_defeats)
   cemv_cli_test(NAME defeats_cli_bad_matrix EXIT 2 MATCH "error:"
     COMMAND $<TARGET_FILE:cemv> defeats tests/defeats/defeats_cli.cmake)
 endif()
+# --out: each minimal set's counterexample as cemv-scenario/1, which cemv
+# simulate replays on the runtime with its expectations met (exit 0).
+if(TARGET cemv_defeats)
+  set(_out ${CMAKE_CURRENT_BINARY_DIR}/defeats_cli_out)
+  cemv_cli_test(NAME defeats_cli_out_replays EXIT 0 MATCH "defeat.c1.e1.a3.scenario.json"
+    COMMAND bash -c "rm -rf ${_out} && $<TARGET_FILE:cemv> defeats tests/defeats/through_override.json --out ${_out} && $<TARGET_FILE:cemv> simulate tests/defeats/through_override.json ${_out}/defeat.c1.e1.a3.scenario.json > /dev/null && $<TARGET_FILE:cemv> simulate tests/defeats/through_override.json ${_out}/defeat.c1.e1.a1.scenario.json > /dev/null")
+endif()
