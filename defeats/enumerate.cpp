@@ -41,7 +41,7 @@ class Enumerator {
     const Question& none = ask({}, true, "");
     if (!none.holds()) {
       if (none.defeats()) record_defeat(pd_.questions.size() - 1);
-      finish(0);
+      finish();
       return;
     }
     Set all(pd_.actions.size());
@@ -49,7 +49,7 @@ class Enumerator {
     if (max_size >= 1) singles(all);
     if (max_size >= 2 && !cancelled()) pairs(proved_singles());
     for (int k = 3; k <= max_size && !cancelled(); ++k) level(k);
-    finish(max_size);
+    finish();
   }
 
  private:
@@ -276,7 +276,7 @@ class Enumerator {
     }
   }
 
-  void finish(int) {
+  void finish() {
     // A group question left undecided was split: only a candidate's own
     // undecided answer leaves the path incomplete.
     complete_ = true;

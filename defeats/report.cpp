@@ -61,7 +61,7 @@ std::string summary(const DefeatsResult& r, const PathDefeats& p) {
   return s;
 }
 
-std::string text(const model::Matrix& m, const DefeatsResult& r, int require_distance) {
+std::string text(const DefeatsResult& r, int require_distance) {
   std::ostringstream out;
   out << "cemv defeats: " << r.matrix_name << "\n";
   out << "signature: " << r.matrix_signature << "\n";
@@ -106,7 +106,6 @@ std::string text(const model::Matrix& m, const DefeatsResult& r, int require_dis
   for (const PathDefeats* p : gate_failures(r, require_distance))
     out << "gate: " << summary(r, *p) << ", below --require-distance " << require_distance << " (SIL " << p->sil
         << ")\n";
-  (void)m;
   return out.str();
 }
 
@@ -241,7 +240,7 @@ std::string set_text(const model::Matrix& m, const PathDefeats& p, const DefeatS
 std::string defeats_report(const model::Matrix& m, const DefeatsResult& r, const std::string& matrix_file,
                            Format format, const std::string& out_dir, int require_distance) {
   switch (format) {
-    case Format::Text: return text(m, r, require_distance);
+    case Format::Text: return text(r, require_distance);
     case Format::Json: return json(m, r, require_distance);
     case Format::Junit:
       return reports::check_report(as_check_result(m, r, matrix_file, out_dir, require_distance), {matrix_file},
