@@ -33,3 +33,15 @@ if(TARGET cemv_defeats)
   cemv_cli_test(NAME defeats_cli_out_replays EXIT 0 MATCH "defeat.c1.e1.a3.scenario.json"
     COMMAND bash -c "rm -rf ${_out} && $<TARGET_FILE:cemv> defeats tests/defeats/through_override.json --out ${_out} && $<TARGET_FILE:cemv> simulate tests/defeats/through_override.json ${_out}/defeat.c1.e1.a3.scenario.json > /dev/null && $<TARGET_FILE:cemv> simulate tests/defeats/through_override.json ${_out}/defeat.c1.e1.a1.scenario.json > /dev/null")
 endif()
+# The committed defeat sets of every example carry the signature of the matrix
+# as it is now (a stale report fails), and the evidence report takes them.
+if(TARGET cemv_defeats)
+  foreach(ex burner-management compressor pipeline-hipps tank-overfill)
+    add_test(NAME defeats_signature_${ex} WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
+      COMMAND bash -c "grep -q \"\\\"matrix_signature\\\": \\\"$(${PROJECT_BINARY_DIR}/cemv signature examples/${ex}/matrix.json)\\\"\" examples/${ex}/defeats.json")
+  endforeach()
+  cemv_cli_test(NAME defeats_cli_evidence_marks EXIT 0 MATCH "defeat1"
+    COMMAND bash -c "$<TARGET_FILE:cemv> evidence examples/compressor/matrix.json --defeats examples/compressor/defeats.json --out ${CMAKE_CURRENT_BINARY_DIR}/defeats_evidence.html -q && grep -o 'cause defeat1' ${CMAKE_CURRENT_BINARY_DIR}/defeats_evidence.html | head -1 | sed 's/cause //'")
+  cemv_cli_test(NAME defeats_cli_evidence_refuses_other_matrix EXIT 2 MATCH "regenerate them"
+    COMMAND $<TARGET_FILE:cemv> evidence examples/tank-overfill/matrix.json --defeats examples/compressor/defeats.json --out ${CMAKE_CURRENT_BINARY_DIR}/refused.html)
+endif()
