@@ -43,6 +43,7 @@ struct EvidenceArgs {
   std::string out_file;
   std::string coverage_file;
   std::string mutation_file;
+  std::string defeats_file;
   std::string json_file;
   bool response = false;
   double timeout_s = 60.0;
@@ -149,6 +150,7 @@ int run_evidence(const EvidenceArgs& a) {
     }
   if (!a.coverage_file.empty()) in.coverage = read_coverage(a.coverage_file, m);
   if (!a.mutation_file.empty()) in.mutation = read_mutation(a.mutation_file, m);
+  if (!a.defeats_file.empty() && valid) in.defeats = read_defeats(a.defeats_file, m);
   checker::CheckOptions options;
   options.property_timeout_s = a.timeout_s;
   options.jobs = a.jobs;
@@ -213,6 +215,9 @@ void add_evidence_commands(CLI::App& app, Context& ctx) {
       ->type_name("FILE");
   cmd->add_option("--mutation", a.mutation_file,
                   "mutation figures to include (DIR/mutation-report.json of cemv testgen --mutation-report)")
+      ->type_name("FILE");
+  cmd->add_option("--defeats", a.defeats_file,
+                  "minimal defeat sets to include (the cemv-defeats/1 JSON of cemv defeats --format json)")
       ->type_name("FILE");
   cmd->add_option("--json", a.json_file, "also write the report's content as cemv-evidence/1 JSON (docs/reports.md)")
       ->type_name("FILE");

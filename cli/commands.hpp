@@ -43,6 +43,7 @@ int mutation_report(const model::Matrix& m, const testgen::TestSuite& suite, con
 void add_mutate_commands(CLI::App& app, Context& ctx);    // mutate
 void add_diff_commands(CLI::App& app, Context& ctx);      // diff
 void add_response_commands(CLI::App& app, Context& ctx);  // response
+void add_defeats_commands(CLI::App& app, Context& ctx);   // defeats
 void add_evidence_commands(CLI::App& app, Context& ctx);  // evidence
 void add_workbook_commands(CLI::App& app, Context& ctx);  // import-workbook, export-workbook
 

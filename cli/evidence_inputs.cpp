@@ -1,5 +1,6 @@
 #include "cli/evidence_inputs.hpp"
 
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "cli/matrix_input.hpp"
@@ -16,17 +17,21 @@ using nlohmann::ordered_json;
 // load errors naming the file and the member.
 class Doc {
  public:
-  Doc(const std::string& file, const std::string& format, const model::Matrix& m) : name_(input_name(file)) {
+  // `format_key`, `signature_key`: where the file states them (cemv-defeats/1
+  // writes "schema" and "matrix_signature", as cemv-response/1 does).
+  Doc(const std::string& file, const std::string& format, const model::Matrix& m,
+      const std::string& format_key = "format", const std::string& signature_key = "signature")
+      : name_(input_name(file)) {
     std::vector<formats::LoadIssue> issues;
     auto j = formats::parse_guarded_json(read_input(file), name_, issues, {256, format, 4});
     if (!j) throw formats::LoadError(issues);
     j_ = std::move(*j);
     if (!j_.is_object()) fail("", "expected a JSON object (" + format + ")");
-    std::string got = str(j_, "format", "");
-    if (got != format) fail("format", "is '" + got + "', expected '" + format + "'");
-    std::string sig = str(j_, "signature", "");
+    std::string got = str(j_, format_key, "");
+    if (got != format) fail(format_key, "is '" + got + "', expected '" + format + "'");
+    std::string sig = str(j_, signature_key, "");
     if (sig != formats::signature(m))
-      fail("signature", "these results are for the matrix with signature " + sig + ", not for " + m.name +
+      fail(signature_key, "these results are for the matrix with signature " + sig + ", not for " + m.name +
                             " as given (" + formats::signature(m) + "): regenerate them");
   }
   const ordered_json& root() const { return j_; }
@@ -119,6 +124,67 @@ reports::MutationFigures read_mutation(const std::string& file, const model::Mat
     if (status == "survived" || status == "undecided")
       f.open.push_back({d.str(mu, "id", at), d.text(mu, "operator"), d.text(mu, "element"),
                         d.text(mu, "description"), status});
+  }
+  return f;
+}
+
+reports::DefeatFigures read_defeats(const std::string& file, const model::Matrix& m) {
+  Doc d(file, "cemv-defeats/1", m, "schema", "matrix_signature");
+  reports::DefeatFigures f;
+  f.file = input_name(file);
+  f.max_size = static_cast<int>(d.num(d.root(), "max_size", ""));
+  const auto& paths = d.array(d.root(), "paths", "");
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    const std::string at = formats::element_path("paths", i);
+    const auto& p = d.object(paths[i], at);
+    reports::DefeatFigures::Path row;
+    row.sif = static_cast<int>(d.num(p, "sif", at));
+    row.sil = static_cast<int>(d.num(p, "sil", at));
+    const auto sif = m.sif_groups.find(row.sif);
+    row.sif_name = sif == m.sif_groups.end() ? "" : sif->second;
+    std::string causes;
+    const auto& cs = d.array(p, "causes", at);
+    for (std::size_t k = 0; k < cs.size(); ++k)
+      causes += (k ? "," : "") + std::to_string(cs[k].is_number_integer() ? cs[k].get<long long>() : 0);
+    row.path = (cs.size() > 1 ? "causes " : "cause ") + causes;
+    if (cs.size() > 1) row.path += " (" + std::to_string(d.num(p, "needed", at)) + "oo" + std::to_string(cs.size()) + ")";
+    row.path += " -> effect " + std::to_string(d.num(p, "effect", at));
+    const auto& t = d.member(p, "requirement_cycles", at);
+    row.requirement = t.is_number_integer() ? std::to_string(t.get<long long>()) + " cycles" : "-";
+    row.status = d.str(p, "status", at);
+    const auto& dist = d.member(p, "distance", at);
+    row.distance = dist.is_number_integer() ? std::to_string(dist.get<long long>())
+                   : row.status == "complete" ? "> " + std::to_string(f.max_size)
+                                              : "unknown";
+    // The actions by key: what each touches.
+    std::map<std::string, const ordered_json*> actions;
+    const auto& as = d.array(p, "actions", at);
+    for (std::size_t k = 0; k < as.size(); ++k)
+      actions[d.str(d.object(as[k], at + ".actions"), "key", at + ".actions")] = &as[k];
+    const auto& sets = d.array(p, "sets", at);
+    for (std::size_t k = 0; k < sets.size(); ++k) {
+      const std::string sat = formats::element_path(at + ".sets", k);
+      const auto& s = d.object(sets[k], sat);
+      reports::DefeatFigures::Set set;
+      set.set_class = d.str(s, "class", sat);
+      set.counterexample = d.text(s, "counterexample");
+      for (const auto& key : d.array(s, "actions", sat)) {
+        if (!key.is_string() || !actions.count(key.get<std::string>())) d.fail(sat, "an action the path does not list");
+        const ordered_json& a = *actions.at(key.get<std::string>());
+        set.actions.push_back(d.text(a, "description"));
+        if (a.contains("cause") && a["cause"].is_number_integer()) {
+          set.causes.push_back(a["cause"].get<int>());
+          set.touches.push_back("cause " + std::to_string(set.causes.back()));
+        }
+        if (a.contains("effect") && a["effect"].is_number_integer()) {
+          set.effects.push_back(a["effect"].get<int>());
+          set.touches.push_back("effect " + std::to_string(set.effects.back()));
+        }
+        if (!d.text(a, "tag").empty()) set.touches.push_back("tag " + d.text(a, "tag"));
+      }
+      row.sets.push_back(std::move(set));
+    }
+    f.paths.push_back(std::move(row));
   }
   return f;
 }

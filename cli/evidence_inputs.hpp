@@ -1,6 +1,7 @@
 // What `cemv evidence` reads besides the matrix and the properties: the
 // results of `cemv testgen` (cemv-coverage/1, docs/testgen.md) and of
-// `cemv testgen --mutation-report` (cemv-mutation-report/1, docs/mutation.md).
+// `cemv testgen --mutation-report` (cemv-mutation-report/1, docs/mutation.md)
+// and of `cemv defeats` (cemv-defeats/1, docs/defeats.md).
 // A file made for another version of the matrix (another signature) is
 // refused: the report ties every figure to the one matrix it names.
 #pragma once
@@ -16,5 +17,7 @@ namespace cemv::cli {
 // wrong formats and other signatures.
 reports::CoverageFigures read_coverage(const std::string& file, const model::Matrix& m);
 reports::MutationFigures read_mutation(const std::string& file, const model::Matrix& m);
+// The minimal defeat sets of `cemv defeats --format json` (cemv-defeats/1, docs/defeats.md).
+reports::DefeatFigures read_defeats(const std::string& file, const model::Matrix& m);
 
 }  // namespace cemv::cli

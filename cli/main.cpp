@@ -88,6 +88,9 @@ int main(int argc, char** argv) {
   cemv::cli::add_response_commands(app, ctx);
   cemv::cli::add_evidence_commands(app, ctx);
 #endif
+#ifdef CEMV_WITH_DEFEATS
+  cemv::cli::add_defeats_commands(app, ctx);
+#endif
 #ifdef CEMV_WITH_WORKBOOK  // the ODS/XLSX commands (their own guard: the CLI tests' doubles do not build them)
   cemv::cli::add_workbook_commands(app, ctx);
 #endif

@@ -62,6 +62,31 @@ struct ResponseFigures {
   std::vector<Path> paths;
 };
 
+// The minimal defeat sets of `cemv defeats` (docs/defeats.md), as plain
+// data: the command line reads them from its cemv-defeats/1 JSON.
+struct DefeatFigures {
+  struct Set {
+    std::vector<std::string> actions;  // "override of effect 2 E2", one per action
+    std::string set_class;             // "declared", "indirect"
+    std::string counterexample;        // scenario file ("" = not written)
+    std::vector<std::string> touches;  // the cells, elements and tags its actions touch: "effect 2", "tag LT_100A"
+    std::vector<int> causes, effects;  // the elements it touches (ids), for the grid's marks
+  };
+  struct Path {
+    int sif = 0;
+    std::string sif_name;
+    int sil = 0;
+    std::string path;         // "cause 1 -> effect 2"
+    std::string requirement;  // "20 cycles", "-"
+    std::string status;       // complete, unbounded, unknown
+    std::string distance;     // "1", "> 2", "unknown"
+    std::vector<Set> sets;
+  };
+  std::string file;
+  int max_size = 2;
+  std::vector<Path> paths;
+};
+
 // A property as written, for the report's formal text (docs/properties.md):
 // its statement and the assumptions it is judged under, as properties/print
 // writes them.
@@ -88,6 +113,7 @@ struct EvidenceInputs {
   checker::CheckResult check;                 // no properties: "no properties given"
   std::string date;                           // "2024-05-01 12:00 UTC"
   std::optional<ResponseFigures> response;    // absent: not analysed (the report says how to add it)
+  std::optional<DefeatFigures> defeats;       // absent: none given
   std::optional<CoverageFigures> coverage;    // absent: none given
   std::optional<MutationFigures> mutation;
   std::vector<PropertyFileInfo> property_files;  // the user's, in command-line order

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <map>
 #include <regex>
+#include <set>
 #include <sstream>
 
 #include "reports/evidence_document.hpp"
@@ -69,17 +70,29 @@ void grid_part(Pages& pages, const Document& d, std::size_t first, std::size_t l
   t.widths_mm = {id_mm, kPageWidthMm - id_mm - cell_mm * static_cast<double>(n)};
   t.head_height_mm = 27;
   for (std::size_t k = 0; k < n; ++k) t.widths_mm.push_back(cell_mm);
+  // The elements an indirect defeat set of one action touches (docs/defeats.md).
+  std::set<int> defeat_causes, defeat_effects;
+  if (d.in.defeats)
+    for (const auto& p : d.in.defeats->paths)
+      for (const auto& st : p.sets)
+        if (st.set_class == "indirect" && st.actions.size() == 1) {
+          defeat_causes.insert(st.causes.begin(), st.causes.end());
+          defeat_effects.insert(st.effects.begin(), st.effects.end());
+        }
   std::ostringstream head;
   for (std::size_t k = first; k < last; ++k) {
     const auto& e = m.effects[k];
-    head << "<th class=\"effect" << (e.function == model::EffectFunction::Comment ? " comment" : "") << "\"><div>E"
-         << e.id << " " << html_escape(e.name) << "</div></th>";
+    head << "<th class=\"effect" << (e.function == model::EffectFunction::Comment ? " comment" : "")
+         << (defeat_effects.count(e.id) ? " defeat1" : "") << "\"><div>E" << e.id << " " << html_escape(e.name)
+         << (defeat_effects.count(e.id) ? " \u26A0" : "") << "</div></th>";
   }
   std::vector<std::vector<Cell>> rows;
   for (const auto& c : m.causes) {
     std::vector<Cell> row;
     const bool comment = c.function == model::CauseFunction::Comment;
-    row.push_back(text_cell("C" + std::to_string(c.id), comment ? "cause comment" : "cause"));
+    const bool defeat1 = defeat_causes.count(c.id) > 0;
+    row.push_back({"C" + std::to_string(c.id) + (defeat1 ? " \u26A0" : ""), "C" + std::to_string(c.id),
+                   std::string(comment ? "cause comment" : "cause") + (defeat1 ? " defeat1" : ""), 0});
     std::string desc = c.name + (c.description.empty() ? "" : ": " + c.description);
     row.push_back({"<b>" + html_escape(c.name) + "</b>" + (c.description.empty() ? "" : " " + html_escape(c.description)),
                    desc, comment ? "cause comment" : "cause", 0});
@@ -139,11 +152,12 @@ void grid_chapter(Pages& pages, const Document& d, const std::string& number) {
       "<span class=\"t-X\">X not specified</span>* note only; superscripts: footnotes. Outlined: "
       "<span style=\"outline:0.6mm solid #15803d\">a proved requirement rests on it</span>"
       "<span style=\"outline:0.6mm solid #dc2626\">a counterexample or witness runs through it</span>. Grey: comment "
-      "only.</span>",
+      "only. <span class=\"defeat1\">\u26A0</span> on a cause or effect: an indirect defeat set of one action touches it "
+      "(docs/defeats.md).</span>",
       "Cells: N normal S stored V overridable R resettable and overridable X not specified * note only; "
       "superscripts: footnotes. Outlined: a proved requirement rests on it a counterexample or witness runs "
-      "through it. Grey: comment only.",
-      "legend", 8);
+      "through it. Grey: comment only. \u26A0 on a cause or effect: an indirect defeat set of one action touches it.",
+      "legend", 11);
   if (m.causes.empty() || m.effects.empty()) {
     pages.paragraph("The matrix has no causes or no effects: no grid.");
     return;

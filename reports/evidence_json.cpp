@@ -152,6 +152,20 @@ std::string evidence_json(const model::Matrix& m, const EvidenceInputs& in) {
   } else {
     j["response"] = nullptr;
   }
+  if (in.defeats) {
+    json paths = json::array();
+    for (const auto& p : in.defeats->paths) {
+      json sets = json::array();
+      for (const auto& s : p.sets)
+        sets.push_back({{"actions", s.actions}, {"class", s.set_class}, {"counterexample", s.counterexample},
+                        {"touches", s.touches}});
+      paths.push_back({{"sif", p.sif}, {"sil", p.sil}, {"path", p.path}, {"requirement", p.requirement},
+                       {"status", p.status}, {"distance", p.distance}, {"sets", sets}});
+    }
+    j["defeats"] = {{"file", in.defeats->file}, {"max_size", in.defeats->max_size}, {"paths", paths}};
+  } else {
+    j["defeats"] = nullptr;
+  }
   j["coverage"] = in.coverage ? json{{"file", in.coverage->file}, {"objectives", in.coverage->objectives},
                                      {"covered", in.coverage->covered}, {"infeasible", in.coverage->infeasible},
                                      {"undecided", in.coverage->undecided}, {"tests", in.coverage->tests}}

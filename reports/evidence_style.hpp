@@ -30,6 +30,7 @@ table.grid th.effect div{writing-mode:vertical-rl;transform:rotate(180deg);white
 .t-N{background:#dbeafe}.t-S{background:#fecaca}.t-V{background:#fed7aa}.t-R{background:#bbf7d0}
 .t-X,.comment{background:#e5e7eb;color:#6b7280}.t-Note{color:#6b7280}
 td.support{outline:0.6mm solid #15803d;outline-offset:-0.6mm;font-weight:bold}
+.defeat1{background:#fde68a}
 td.traced{outline:0.6mm solid #dc2626;outline-offset:-0.6mm;font-weight:bold}
 td.support.traced{outline:0.6mm dashed #dc2626}
 .legend span{display:inline-block;padding:0 1.5mm;margin-right:1.5mm;border:0.2mm solid #9ca3af}

@@ -120,8 +120,11 @@ void mutation(Pages& pages, const MutationFigures& f, const std::string& n) {
 
 }  // namespace
 
-void response_section(Pages& pages, const model::Matrix& m, const EvidenceInputs& in, const std::string& n) {
-  pages.chapter("response", n, "Response time of the safety functions");
+void defeats_section(Pages& pages, const EvidenceInputs& in);
+
+namespace {
+
+void response_tables(Pages& pages, const model::Matrix& m, const EvidenceInputs& in) {
   if (!in.response) {
     pages.paragraph("Not analysed (cemv evidence --response adds the worst-case response time of every SIF path, as "
                     "cemv response computes it).",
@@ -159,6 +162,63 @@ void response_section(Pages& pages, const model::Matrix& m, const EvidenceInputs
       }
       t.rows.push_back({cell(p.path), cell(p.logic), cell(ms(p.total_ms), "num"), cell(margin, "num"),
                         cell(p.verdict, verdict_css(p.verdict)), cell(ms(p.degraded_total_ms), "num")});
+    }
+    pages.table(t);
+  }
+}
+
+}  // namespace
+
+// The chapter: the response-time tables, then the defeat sets per SIF.
+void response_section(Pages& pages, const model::Matrix& m, const EvidenceInputs& in, const std::string& n) {
+  pages.chapter("response", n, "Response time and defeats of the safety functions");
+  response_tables(pages, m, in);
+  defeats_section(pages, in);
+}
+
+void defeats_section(Pages& pages, const EvidenceInputs& in) {
+  if (!in.defeats) {
+    pages.paragraph("Defeat sets not given (cemv evidence --defeats FILE adds the minimal sets of maintenance "
+                    "operations and faults that defeat each path, the JSON of cemv defeats).",
+                    "warn");
+    return;
+  }
+  const auto& r = *in.defeats;
+  pages.paragraph("Minimal defeat sets (" + r.file + ", up to " + std::to_string(r.max_size) +
+                  " actions): the smallest sets of maintenance operations and input faults under which a path no "
+                  "longer responds within its logic response T, each shown by a counterexample replayed on the "
+                  "runtime and proved minimal by proofs of its subsets (docs/defeats.md). Declared: operations on "
+                  "the path's own cause or effect; indirect: through another element or a fault. Distance: the "
+                  "size of the smallest indirect set.");
+  std::size_t i = 0;
+  while (i < r.paths.size()) {
+    const int sif = r.paths[i].sif;
+    const auto& first = r.paths[i];
+    pages.section("defeats-sif-" + std::to_string(sif), "",
+                  "Defeats of SIF " + std::to_string(sif) + " " + first.sif_name +
+                      (first.sil ? ", SIL " + std::to_string(first.sil) : std::string()),
+                  false);
+    Table t;
+    t.widths_mm = {40, 16, 60, 18, 52};
+    t.head = {"Path (T, distance)", "Class", "Set", "Counter-example", "Touches"};
+    for (; i < r.paths.size() && r.paths[i].sif == sif; ++i) {
+      const auto& p = r.paths[i];
+      const std::string label = p.path + " (T " + p.requirement + ", distance " + p.distance +
+                                (p.status == "complete" ? "" : ", " + p.status) + ")";
+      if (p.sets.empty()) {
+        t.rows.push_back({cell(label), cell("-"), cell("none up to " + std::to_string(r.max_size)), cell("-"),
+                          cell("-")});
+        continue;
+      }
+      for (std::size_t k = 0; k < p.sets.size(); ++k) {
+        const auto& s = p.sets[k];
+        std::string set, touches;
+        for (const auto& a : s.actions) set += (set.empty() ? "" : "; ") + a;
+        for (const auto& x : s.touches) touches += (touches.empty() ? "" : ", ") + x;
+        t.rows.push_back({cell(k ? "" : label),
+                          cell(s.set_class, s.set_class == "indirect" && s.actions.size() == 1 ? "bad" : ""),
+                          cell(set), cell(s.counterexample.empty() ? "-" : s.counterexample), cell(touches)});
+      }
     }
     pages.table(t);
   }

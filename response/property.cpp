@@ -33,15 +33,24 @@ std::string number(float v) {
   return s;
 }
 
+// Whether an input in bad quality counts toward the demand (the stated form
+// of cemv defeats, docs/defeats.md): the process behind a failed
+// transmitter is unobserved, and in the worst case beyond the limit.
+struct Form {
+  bool bad_counts = false;
+};
+
 // One input beyond its limit with good quality (C.3, with the strict limit:
-// a hysteresis band only makes a trip last longer).
-std::string beyond(const Cause& c, const model::CauseTag& t) {
+// a hysteresis band only makes a trip last longer); in the stated form, or
+// in bad quality.
+std::string beyond(const Cause& c, const model::CauseTag& t, Form f) {
   const std::string name = quoted(t.name);
   std::string value;
   if (c.input == model::InputKind::Analog && c.analog)
     value = name + (c.analog->limit_type == model::LimitType::High ? " >= " : " <= ") + number(c.analog->limit);
   else
     value = t.ett ? name : "not " + name;
+  if (f.bad_counts) return "(bad(" + name + ") or (good(" + name + ") and " + value + "))";
   return "(good(" + name + ") and " + value + ")";
 }
 
@@ -52,9 +61,9 @@ std::string at_least(const std::vector<std::string>& terms, int n) {
   return s + ") >= " + std::to_string(n);
 }
 
-std::string normal_trigger(const Cause& c) {
+std::string normal_trigger(const Cause& c, Form f) {
   std::vector<std::string> terms;
-  for (const auto* t : external_tags(c)) terms.push_back(beyond(c, *t));
+  for (const auto* t : external_tags(c)) terms.push_back(beyond(c, *t, f));
   return at_least(terms, votes_needed(c));
 }
 
@@ -77,7 +86,7 @@ std::string degraded_trigger(const Cause& c) {
   for (std::size_t i = 0; i < tags.size(); ++i) {
     std::vector<std::string> rest;
     for (std::size_t j = 0; j < tags.size(); ++j)
-      if (j != i) rest.push_back(beyond(c, *tags[j]));
+      if (j != i) rest.push_back(beyond(c, *tags[j], Form{}));
     s += (i ? " or " : "") + std::string("(bad(") + quoted(tags[i]->name) + ")" +
          (need > 0 ? " and " + at_least(rest, need) : "") + ")";
   }
@@ -98,8 +107,8 @@ std::string held_since_fresh_rise(const std::string& condition, int id, long lon
 // `cycles` cycles: the one text of that term for an XooN bound and for its
 // member lemmas, so that the bound's monitor and the lemmas it assumes read
 // one `held` counter (member_lemmas).
-std::string member_held(const Cause& c, bool degraded, long long cycles) {
-  return held_since_fresh_rise(degraded ? degraded_trigger(c) : "(" + normal_trigger(c) + ")", c.id, cycles);
+std::string member_held(const Cause& c, bool degraded, long long cycles, Form f = {}) {
+  return held_since_fresh_rise(degraded ? degraded_trigger(c) : "(" + normal_trigger(c, f) + ")", c.id, cycles);
 }
 
 // Its first cycle: the demand of the set that holds it has lasted exactly
@@ -119,9 +128,9 @@ std::string any_of(const std::vector<std::string>& terms) {
 // each member's own timers restart with it, so a rotating set would hold any
 // XooN with delays off for ever without X conditions ever holding together.
 std::string xoon_violation(const model::Matrix& m, const Path& p, Mode mode, long long cycles,
-                           const std::string& response) {
+                           const std::string& response, Form f) {
   std::vector<std::string> held;
-  for (int id : p.causes) held.push_back(member_held(*m.find_cause(id), false, cycles));
+  for (int id : p.causes) held.push_back(member_held(*m.find_cause(id), false, cycles, f));
   std::string set;
   if (mode == Mode::Normal) {
     std::vector<std::string> first;
@@ -159,8 +168,13 @@ std::string cause_assumption(int id) {
 
 }  // namespace
 
-std::string response_property_text(const model::Matrix& m, const Path& p, Mode mode, long long cycles,
-                                   const std::string& name, const std::vector<std::string>& assumed) {
+namespace {
+
+// The bound's property; `stated`: the maintenance assumptions left to the
+// caller's `assumed` terms, and a bad input counted toward the demand.
+std::string bound_property_text(const model::Matrix& m, const Path& p, Mode mode, long long cycles,
+                                const std::string& name, const std::vector<std::string>& assumed, bool stated) {
+  const Form form{stated};
   // The response: every output tag of the effect at its safe value (E.9).
   const model::Effect& e = *m.find_effect(p.effect);
   std::string response;
@@ -172,11 +186,12 @@ std::string response_property_text(const model::Matrix& m, const Path& p, Mode m
   // The trigger of a single cause: its condition (normal or degraded).
   const int first = p.causes.front();
   const std::string trigger =
-      "(" + (mode == Mode::Normal ? normal_trigger(*m.find_cause(first)) : degraded_trigger(*m.find_cause(first))) + ")";
+      "(" + (mode == Mode::Normal ? normal_trigger(*m.find_cause(first), form) : degraded_trigger(*m.find_cause(first))) +
+      ")";
 
-  std::string s = kHeader;
+  std::string s = stated ? "# Generated by cemv defeats (docs/defeats.md).\n" : kHeader;
   s += "property " + name + " {\n";
-  for (const auto& n : p.elements) {
+  for (const auto& n : stated ? std::vector<model::Node>{} : p.elements) {
     if (n.kind == model::Node::Kind::Cause)
       s += cause_assumption(n.id);
     else
@@ -199,12 +214,12 @@ std::string response_property_text(const model::Matrix& m, const Path& p, Mode m
   const std::set<int> on_path = effects_on(p);  // assumed not overridden above
   std::set<int> held_by(holders.effects);
   held_by.insert(holders.inactive_effects.begin(), holders.inactive_effects.end());
-  for (int id : held_by)
+  for (int id : stated ? std::set<int>{} : held_by)
     if (!on_path.count(id) && m.find_effect(id)->override_time)
       s += "  assume not " + effect_ref(id) + ".override_active\n";
   for (const auto& t : assumed) s += "  assume not " + t + "\n";
   if (p.causes.size() > 1) {
-    s += "  never " + xoon_violation(m, p, mode, cycles, response) + "\n";
+    s += "  never " + xoon_violation(m, p, mode, cycles, response, form) + "\n";
   } else {
     // A fresh demand: the cause had not requested its trip in the cycle before.
     s += "  whenever rose" + trigger + " and not prev(" + cause_ref(first) + ".trip_requested)\n";
@@ -213,6 +228,18 @@ std::string response_property_text(const model::Matrix& m, const Path& p, Mode m
   }
   s += "}\n";
   return s;
+}
+
+}  // namespace
+
+std::string response_property_text(const model::Matrix& m, const Path& p, Mode mode, long long cycles,
+                                   const std::string& name, const std::vector<std::string>& assumed) {
+  return bound_property_text(m, p, mode, cycles, name, assumed, false);
+}
+
+std::string requirement_property_text(const model::Matrix& m, const Path& p, long long cycles,
+                                      const std::string& name, const std::vector<std::string>& excluded) {
+  return bound_property_text(m, p, Mode::Normal, cycles, name, excluded, true);
 }
 
 std::optional<MemberLemmas> member_lemmas(const model::Matrix& m, const Path& p, Mode mode, long long cycles,

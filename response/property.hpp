@@ -25,6 +25,15 @@ enum class Mode { Normal, Degraded };
 std::string response_property_text(const model::Matrix& m, const Path& p, Mode mode, long long cycles,
                                    const std::string& name, const std::vector<std::string>& assumed = {});
 
+// The trip requirement of `cemv defeats` (docs/defeats.md): the normal bound
+// of `cycles` cycles with none of the assumptions above about maintenance,
+// faults and the holders' overrides. The caller states which actions are
+// excluded, as `excluded` terms assumed never to hold; an input in bad
+// quality counts toward the demand (the process behind a failed transmitter
+// is unobserved, and in the worst case beyond the limit).
+std::string requirement_property_text(const model::Matrix& m, const Path& p, long long cycles,
+                                      const std::string& name, const std::vector<std::string>& excluded);
+
 // The member lemmas of an XooN path's bound (docs/response-time.md,
 // "Compositional proof"). For each trigger cause i that is not timed, with
 // its on-delay of d_i <= `cycles` cycles (0 without one), and for each

@@ -48,3 +48,7 @@ cemv_cli_test(NAME layout_mutate_includes_only_its_row EXIT 1
 # runtime or the encoder directly (the checker runs them), nor another consumer.
 cemv_cli_test(NAME layout_response_includes_only_its_row EXIT 1
   COMMAND grep -rnE "${_cemv_inc}(runtime|encoder|testgen|mutate|diff|cli)/" ${PROJECT_SOURCE_DIR}/response)
+# defeats/ builds on response/ and the checker; never the command line, the
+# test generator, mutation or change comparison.
+cemv_cli_test(NAME layout_defeats_includes_only_its_row EXIT 1
+  COMMAND grep -rnE "${_cemv_inc}(runtime|encoder|testgen|mutate|diff|cli)/" ${PROJECT_SOURCE_DIR}/defeats)
