@@ -3,6 +3,10 @@ if(TARGET cemv_testgen)
   target_link_libraries(test_testgen PRIVATE cemv_testgen cemv_testsupport GTest::gtest_main)
   target_compile_definitions(test_testgen PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   gtest_discover_tests(test_testgen DISCOVERY_TIMEOUT 60)
+  add_executable(test_field ${CMAKE_CURRENT_LIST_DIR}/test_field.cpp)
+  target_link_libraries(test_field PRIVATE cemv_testgen GTest::gtest_main)
+  target_compile_definitions(test_field PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  gtest_discover_tests(test_field DISCOVERY_TIMEOUT 60)
 
   # Not in make test: prints the objectives of a matrix (a developer's tool).
   add_executable(cemv_testgen_objectives ${CMAKE_CURRENT_LIST_DIR}/tool_objectives.cpp)
@@ -23,6 +27,13 @@ if(TARGET cemv_testgen)
     add_test(NAME testgen_signature_${ex} WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
       COMMAND bash -c "grep -q \"\\\"signature\\\": \\\"$(${PROJECT_BINARY_DIR}/cemv signature examples/${ex}/matrix.json)\\\"\" examples/${ex}/acceptance/coverage.json")
   endforeach()
+  # The committed field suites (examples/*/acceptance/field) replay green.
+  foreach(ex burner-management compressor pipeline-hipps tank-overfill)
+    cemv_cli_test(NAME testgen_field_replay_${ex} EXIT 0 MATCH "PASS"
+      COMMAND ${PROJECT_BINARY_DIR}/cemv replay examples/${ex}/matrix.json examples/${ex}/acceptance/field)
+  endforeach()
+  cemv_cli_test(NAME testgen_field_resolution_refused EXIT 2 MATCH "resolution"
+    COMMAND ${PROJECT_BINARY_DIR}/cemv testgen examples/tank-overfill/matrix.json --out ${CMAKE_CURRENT_BINARY_DIR}/field_res --field-only --resolution 0)
   cemv_cli_test(NAME testgen_replay_junit EXIT 0 MATCH "<testsuites"
     COMMAND ${PROJECT_BINARY_DIR}/cemv replay examples/tank-overfill/matrix.json examples/tank-overfill/acceptance --format junit)
   # The tank's suite on the pipeline matrix: its tags do not exist there (exit 2).
