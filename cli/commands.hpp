@@ -36,6 +36,7 @@ void add_smt_commands(CLI::App& app, Context& ctx);       // export-smt
 void add_check_commands(CLI::App& app, Context& ctx);     // check
 void add_testgen_commands(CLI::App& app, Context& ctx);   // testgen
 void add_replay_commands(CLI::App& app, Context& ctx);    // replay
+void add_record_commands(CLI::App& app, Context& ctx);    // record
 
 // `cemv testgen --mutation-report`: after the suite is written to `out_dir`,
 // the mutation adequacy report (docs/testgen.md); returns an exit status.

@@ -541,16 +541,22 @@ FieldSuite generate_field_suite(const model::Matrix& m, const FieldOptions& o) {
     for (std::size_t k = 0; k < run.inputs.size(); ++k) trace.push_back({run.inputs[k], run.observables[k]});
     for (std::size_t i = 0; i < s.objectives.size(); ++i) {
       FieldObjective& fo = s.objectives[i];
-      if (fo.test >= 0 || !field_kind(fo.objective)) continue;
+      if (!field_kind(fo.objective)) continue;
       auto e = ev.evaluate(file.properties[i], file.assumptions, trace);
       if (!e.holds || !e.cycle) continue;
+      bool placed = false;
       for (auto& st : t.steps)
         if (*e.cycle >= st.first_cycle && *e.cycle <= st.last_cycle && st.phase != "Initial conditions") {
+          placed = true;
+          if (fo.test >= 0) {
+            st.again.push_back(fo.objective.id);
+            continue;
+          }
           fo.test = static_cast<int>(ti);
           fo.step = st.number;
           st.objectives.push_back(fo.objective.id);
         }
-      if (fo.test < 0) elsewhere[i] = true;
+      if (!placed) elsewhere[i] = true;
     }
   }
   for (std::size_t i = 0; i < s.objectives.size(); ++i)

@@ -12,13 +12,14 @@
 #include <string>
 #include <vector>
 
+#include "formats/acceptance.hpp"
 #include "model/matrix.hpp"
 #include "model/vocabulary.hpp"
 #include "testgen/testgen.hpp"
 
 namespace cemv::testgen {
 
-inline constexpr const char* kFieldChecklistFormat = "cemv-field-checklist/1";
+using formats::kFieldChecklistFormat;
 
 struct FieldOptions {
   double resolution = 0.1;  // of the calibrator / the tag's unit: values are printed and set to it
@@ -31,7 +32,8 @@ struct FieldTestStep {
   std::vector<std::string> actions;    // "Set FT_210 to 19.9 % (trip: limit 25 %, low)"
   std::uint64_t hold_ms = 0;           // "Hold for at least 2.5 s"
   std::vector<std::string> expected;   // "XV_221A closed (de-energized) within 1 s"
-  std::vector<std::string> objectives; // the objective ids this step witnesses
+  std::vector<std::string> objectives; // the objective ids this step witnesses first (the appendix)
+  std::vector<std::string> again;      // witnessed again here, first by an earlier step
   std::size_t first_cycle = 0, last_cycle = 0;  // 0-based, in the test's run
 };
 
@@ -83,5 +85,18 @@ std::string field_checklist_html(const model::Matrix& m, const FieldSuite& s, co
                                  const std::string& tool);
 std::string field_checklist_csv(const model::Matrix& m, const FieldSuite& s, const std::string& date,
                                 const std::string& tool);
+
+}  // namespace cemv::testgen
+
+namespace cemv::testgen {
+
+// The acceptance status from filled field checklists (docs/acceptance.md):
+// each row matched to its step of `s` (the field suite of `m` at the
+// checklists' resolution), each step's objectives mapped to their elements.
+// Throws formats::LoadError (FILE:LINE) for a checklist whose signature is
+// not the matrix's, a row naming a step the suite does not have, or a row
+// whose action is not the step's (a checklist of another cemv version).
+formats::Acceptance record_acceptance(const model::Matrix& m, const FieldSuite& s,
+                                      const std::vector<formats::FilledChecklist>& filled, const std::string& tool);
 
 }  // namespace cemv::testgen
