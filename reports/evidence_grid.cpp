@@ -59,6 +59,14 @@ std::vector<Footnote> footnotes(const model::Matrix& m) {
   return list;
 }
 
+// The acceptance class of an element ("a-accepted"), "" without a record.
+std::string acceptance_css(const Document& d, const std::string& key) {
+  if (!d.in.acceptance) return "";
+  for (const auto& e : d.in.acceptance->elements)
+    if (e.key() == key) return std::string(" a-") + formats::to_string(e.status);
+  return "";
+}
+
 void grid_part(Pages& pages, const Document& d, std::size_t first, std::size_t last) {
   const model::Matrix& m = d.m;
   const std::size_t n = last - first;
@@ -72,14 +80,16 @@ void grid_part(Pages& pages, const Document& d, std::size_t first, std::size_t l
   std::ostringstream head;
   for (std::size_t k = first; k < last; ++k) {
     const auto& e = m.effects[k];
-    head << "<th class=\"effect" << (e.function == model::EffectFunction::Comment ? " comment" : "") << "\"><div>E"
+    head << "<th class=\"effect" << (e.function == model::EffectFunction::Comment ? " comment" : "")
+         << acceptance_css(d, "effect[" + std::to_string(e.id) + "]") << "\"><div>E"
          << e.id << " " << html_escape(e.name) << "</div></th>";
   }
   std::vector<std::vector<Cell>> rows;
   for (const auto& c : m.causes) {
     std::vector<Cell> row;
     const bool comment = c.function == model::CauseFunction::Comment;
-    row.push_back(text_cell("C" + std::to_string(c.id), comment ? "cause comment" : "cause"));
+    row.push_back(text_cell("C" + std::to_string(c.id), (comment ? "cause comment" : "cause") +
+                                                            acceptance_css(d, "cause[" + std::to_string(c.id) + "]")));
     std::string desc = c.name + (c.description.empty() ? "" : ": " + c.description);
     row.push_back({"<b>" + html_escape(c.name) + "</b>" + (c.description.empty() ? "" : " " + html_escape(c.description)),
                    desc, comment ? "cause comment" : "cause", 0});
@@ -92,6 +102,11 @@ void grid_part(Pages& pages, const Document& d, std::size_t first, std::size_t l
       }
       std::string type = model::to_string(x->type);
       std::string css = "t-" + (x->type == model::IntersectionType::Note ? std::string("Note") : type);
+      if (d.in.acceptance) {
+        const std::string a = acceptance_css(d, "intersection cause[" + std::to_string(c.id) + "]/effect[" +
+                                                    std::to_string(e.id) + "]");
+        if (!a.empty()) css = a.substr(1);
+      }
       if (d.support_cells.count({c.id, e.id})) css += " support";
       if (d.trace_cells.count({c.id, e.id})) css += " traced";
       std::string marks = footnote_marks(x->note);
@@ -144,6 +159,22 @@ void grid_chapter(Pages& pages, const Document& d, const std::string& number) {
       "superscripts: footnotes. Outlined: a proved requirement rests on it a counterexample or witness runs "
       "through it. Grey: comment only.",
       "legend", 8);
+  if (d.in.acceptance) {
+    const auto& a = *d.in.acceptance;
+    int n[3] = {0, 0, 0};
+    for (const auto& e : a.elements) n[static_cast<int>(e.status)]++;
+    pages.paragraph_html(
+        "<span class=\"legend\">Field acceptance (" + html_escape(d.in.acceptance_file) +
+            ", docs/acceptance.md), colouring the cause numbers, the effect heads and the cells: "
+            "<span class=\"a-accepted\">accepted " + std::to_string(n[0]) + "</span><span class=\"a-deviation\">deviation " +
+            std::to_string(n[1]) + "</span><span class=\"a-not-tested\">not tested " + std::to_string(n[2]) +
+            "</span></span>",
+        "Field acceptance (" + d.in.acceptance_file + "): accepted " + std::to_string(n[0]) + ", deviation " +
+            std::to_string(n[1]) + ", not tested " + std::to_string(n[2]),
+        "legend", 8);
+    for (const auto& e : a.elements)
+      for (const auto& dev : e.deviations) pages.paragraph("Deviation, " + e.key() + ": " + dev, "bad");
+  }
   if (m.causes.empty() || m.effects.empty()) {
     pages.paragraph("The matrix has no causes or no effects: no grid.");
     return;

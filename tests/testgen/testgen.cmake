@@ -44,3 +44,12 @@ if(TARGET cemv_testgen)
   cemv_cli_test(NAME testgen_requires_out EXIT 2 MATCH "out"
     COMMAND ${PROJECT_BINARY_DIR}/cemv testgen examples/tank-overfill/matrix.json)
 endif()
+
+# Field results recorded back (docs/acceptance.md): a filled field checklist,
+# all OK, with a deviation, merged from two days, refused, after a change.
+if(TARGET cemv_testgen)
+  foreach(case all_ok deviation merge refusals changed)
+    add_test(NAME record_${case} WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
+      COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/record.sh ${PROJECT_BINARY_DIR}/cemv ${case})
+  endforeach()
+endif()
