@@ -105,8 +105,13 @@ class LoopBuilder {
     const std::vector<int>& before = obs_[start - 1];
     const std::vector<int>& after = obs_[st.last_cycle];
     // Outputs one a line; Viewer indications grouped by element, state and time.
-    std::vector<std::string> outputs;
-    std::vector<std::pair<std::string, std::vector<std::string>>> viewer;  // "cause 1 X: ... ON<when>" -> fields
+    // Per time of change (0: within 1 s, else the cycle), the outputs one a
+    // line and the Viewer's indications grouped by element and state.
+    struct Group {
+      std::vector<std::string> outputs;
+      std::vector<std::pair<std::string, std::vector<std::string>>> viewer;  // "cause 1 X|ON" -> fields
+    };
+    std::map<std::size_t, Group> groups;
     std::vector<std::string> pulses;
     for (std::size_t i : shown_index_) {
       if (before[i] == after[i]) {
@@ -120,45 +125,52 @@ class LoopBuilder {
         checkpoints_.insert(start + at[1] + 1);
         const model::Observable& ob = all_[i];
         const int during = obs_[start + at[0]][i];
-        const std::string again = ", " + seconds_text(at[1] * m_.cycle_ms) + " (±" + seconds_text(m_.cycle_ms) +
+        const std::string again = " " + seconds_text(at[1] * m_.cycle_ms) + " (±" + seconds_text(m_.cycle_ms) +
                                   ") after the action";
         if (ob.field == "tag")
-          outputs.push_back(observation_words(m_, ob, during) + ", then " + observation_words(m_, ob, after[i]) + again);
+          pulses.push_back(observation_words(m_, ob, during) + " at once, " + observation_words(m_, ob, after[i]) +
+                           " again" + again);
         else
           pulses.push_back("Viewer, " + viewer_element(m_, ob) + ": " + viewer_field(ob) + (during ? " ON" : " OFF") +
-                           ", " + (after[i] ? "ON" : "OFF") + " again" + again);
+                           " at once, " + (after[i] ? "ON" : "OFF") + " again" + again);
         continue;
       }
       std::size_t d = 0;
       for (std::size_t k = start; k <= st.last_cycle; ++k)
         if (obs_[k][i] != obs_[k - 1][i]) d = k - start;
-      std::string when;
       if (d >= second_) {
         if (d >= 2) checkpoints_.insert(start + d - 2);
         checkpoints_.insert(start + d + 1);
-        when = ", " + seconds_text(d * m_.cycle_ms) + " (±" + seconds_text(m_.cycle_ms) + ") after the action";
       } else {
         checkpoints_.insert(std::min(start + second_ - 1, st.last_cycle));
+        d = 0;
       }
+      Group& g = groups[d];
       const model::Observable& ob = all_[i];
       if (ob.field == "tag") {
-        outputs.push_back(observation_words(m_, ob, after[i]) + when);
+        g.outputs.push_back(observation_words(m_, ob, after[i]));
         continue;
       }
-      const std::string key = viewer_element(m_, ob) + (after[i] ? "|ON" : "|OFF") + when;
-      auto it = std::find_if(viewer.begin(), viewer.end(), [&](const auto& v) { return v.first == key; });
-      if (it == viewer.end()) viewer.push_back({key, {viewer_field(ob)}});
+      const std::string key = viewer_element(m_, ob) + (after[i] ? "|ON" : "|OFF");
+      auto it = std::find_if(g.viewer.begin(), g.viewer.end(), [&](const auto& v) { return v.first == key; });
+      if (it == g.viewer.end()) g.viewer.push_back({key, {viewer_field(ob)}});
       else it->second.push_back(viewer_field(ob));
     }
-    st.expected = outputs;
-    for (const auto& [key, fields] : viewer) {
-      const std::size_t bar = key.find('|');
-      std::string rest = key.substr(bar + 1), state = rest.substr(0, rest.find(',')),
-                  when = rest.find(',') == std::string::npos ? "" : rest.substr(rest.find(','));
-      std::string list;
-      for (std::size_t f = 0; f < fields.size(); ++f)
-        list += (f == 0 ? "" : f + 1 == fields.size() ? " and " : ", ") + fields[f];
-      st.expected.push_back("Viewer, " + key.substr(0, bar) + ": " + list + " " + state + when);
+    const bool timed = groups.size() > 1 || (groups.size() == 1 && groups.begin()->first > 0);
+    for (const auto& [d, g] : groups) {
+      if (timed)
+        st.expected.push_back(d == 0 ? "At once (within 1 s):"
+                                     : "After " + seconds_text(d * m_.cycle_ms) + " (±" + seconds_text(m_.cycle_ms) +
+                                           "):");
+      const std::string indent = timed ? "- " : "";
+      for (const auto& o : g.outputs) st.expected.push_back(indent + o);
+      for (const auto& [key, fields] : g.viewer) {
+        const std::size_t bar = key.find('|');
+        std::string list;
+        for (std::size_t f = 0; f < fields.size(); ++f)
+          list += (f == 0 ? "" : f + 1 == fields.size() ? " and " : ", ") + fields[f];
+        st.expected.push_back(indent + "Viewer, " + key.substr(0, bar) + ": " + list + " " + key.substr(bar + 1));
+      }
     }
     st.expected.insert(st.expected.end(), pulses.begin(), pulses.end());
     if (st.expected.empty()) st.expected.push_back("No output and no Viewer indication changes");
@@ -264,15 +276,15 @@ FieldTest build_loop(const model::Matrix& m, const FieldOptions& o, const LoopPl
       if (!idx) continue;
       const model::TagValue v = cause_tag_value(c, tag, false, r);
       healthy.set.push_back({*idx, v});
-      init.push_back(tag.name + " at " + tag_value_words(c, tag, v, r) + " (healthy; input of " + cause_name(m, id) +
-                     ")");
+      init.push_back(tag.name + " at " + tag_value_words(c, tag, v, r) +
+                     (p.causes.size() > 1 ? " (healthy; input of " + cause_name(m, id) + ")" : " (healthy)"));
     }
-    if (c.inhibit_tag) init.push_back(*c.inhibit_tag + " off (no inhibit of " + cause_name(m, id) + ")");
-    if (c.bypass_tag) init.push_back(*c.bypass_tag + " off (no bypass of " + cause_name(m, id) + ")");
+    if (c.inhibit_tag) init.push_back(*c.inhibit_tag + " off (inhibit switch)");
+    if (c.bypass_tag) init.push_back(*c.bypass_tag + " off (bypass switch)");
   }
   for (int id : t.effects) {
     const model::Effect& e = *m.find_effect(id);
-    if (e.reset_tag) init.push_back(*e.reset_tag + " released (reset button of " + effect_name(m, id) + ")");
+    if (e.reset_tag) init.push_back(*e.reset_tag + " released (reset button of effect " + std::to_string(id) + ")");
   }
   std::set<std::size_t> touched;
   for (const auto& [i, v] : healthy.set) touched.insert(i);
@@ -546,7 +558,7 @@ FieldSuite generate_field_suite(const model::Matrix& m, const FieldOptions& o) {
       if (!e.holds || !e.cycle) continue;
       bool placed = false;
       for (auto& st : t.steps)
-        if (*e.cycle >= st.first_cycle && *e.cycle <= st.last_cycle && st.phase != "Initial conditions") {
+        if (*e.cycle >= st.first_cycle && *e.cycle <= st.last_cycle) {
           placed = true;
           if (fo.test >= 0) {
             st.again.push_back(fo.objective.id);

@@ -128,8 +128,11 @@ std::string field_checklist_html(const model::Matrix& m, const FieldSuite& s, co
        "h3{font-size:11.5pt;margin:0 0 .2em}p.drives{font-size:9pt;margin:.2em 0 .5em}\n"
        "table{border-collapse:collapse;width:100%;margin-bottom:.6em}\n"
        "th,td{border:1px solid #666;padding:3px 5px;vertical-align:top;text-align:left}\n"
-       "th{background:#e6e6e6}td.n{width:2em;text-align:right}td.hold{width:4.5em}td.res{width:5.5em}"
-       "td.ini{width:3.5em}td.dat{width:5em}td.act{width:32%}tr.phase td{background:#f2f2f2;font-weight:bold}\n"
+       "th{background:#e6e6e6}td.n{width:1.6em;text-align:right}td.hold{width:3.6em}td.res{width:13%}"
+       "td.ini{width:3.2em}td.dat{width:5.2em}td.act{width:27%}tr.phase td{background:#f2f2f2;font-weight:bold}\n"
+       "table.steps{font-size:8.5pt;table-layout:fixed}table.steps th.n{width:1.6em}table.steps th.act{width:27%}"
+       "table.steps th.hold{width:3.6em}table.steps th.res{width:13%}table.steps th.ini{width:3.2em}"
+       "table.steps th.dat{width:5.2em}\n"
        "table.head td{border:none;padding:1px 8px 1px 0}table.head{width:auto}\n"
        "code{font-size:8.5pt}.sig{margin-top:2em}.sig span{display:inline-block;width:45%;margin-right:4%;"
        "border-top:1px solid #000;padding-top:2px}.test{margin-top:1.2em}\n"
@@ -154,8 +157,9 @@ std::string field_checklist_html(const model::Matrix& m, const FieldSuite& s, co
     o << "<section class=\"test\"><h3>" << t.id << ": " << html_escape(t.title) << "</h3>\n<p class=\"drives\">"
       << html_escape(sif_title(m, t.sif)) << "<br>Drives: " << html_escape(drives(m, t))
       << "<br>Estimated field time: " << minutes(t.field_s) << "</p>\n"
-      << "<table><thead><tr><th>Step</th><th>Action</th><th>Hold</th><th>Expected</th><th>Result</th>"
-         "<th>Initials</th><th>Date</th></tr></thead><tbody>\n";
+      << "<table class=\"steps\"><thead><tr><th class=\"n\">No.</th><th class=\"act\">Action</th>"
+         "<th class=\"hold\">Hold</th><th>Expected</th><th class=\"res\">Result</th><th class=\"ini\">Initials</th>"
+         "<th class=\"dat\">Date</th></tr></thead><tbody>\n";
     std::string phase;
     for (const auto& st : t.steps) {
       if (st.phase != phase) o << "<tr class=\"phase\"><td colspan=\"7\">" << html_escape(st.phase) << "</td></tr>\n";

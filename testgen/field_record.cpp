@@ -2,8 +2,9 @@
 // matrix's acceptance status. A step is a deviation when any checklist
 // records a deviation for it, ok when one records OK, open otherwise; an
 // element (cause, effect, intersection) is a deviation when a step that
-// witnesses one of its objectives is, accepted when at least one such step is
-// ok and none deviates, not-tested otherwise.
+// witnesses one of its objectives is, accepted when every objective of it
+// that the field suite witnesses is witnessed by an ok step, not-tested
+// otherwise.
 #include <cstdio>
 #include <map>
 #include <set>
@@ -108,16 +109,28 @@ formats::Acceptance record_acceptance(const model::Matrix& m, const FieldSuite& 
     if (model::is_processed(i.type) && elements.count("cause[" + std::to_string(i.cause) + "]") &&
         elements.count("effect[" + std::to_string(i.effect) + "]"))
       add(formats::ElementKind::Intersection, i.cause, i.effect, "");
-  // Each element's witnessing steps, once each.
-  std::map<std::string, std::set<std::size_t>> witnessing;
-  std::map<std::string, std::string> element;  // objective id -> element key
-  for (const auto& o : s.objectives) element[o.objective.id] = element_of(o.objective);
+  // Each objective's witnessing steps (first and again), each element's objectives and steps.
+  std::map<std::string, std::set<std::size_t>> by_objective;
   for (const auto& t : s.tests)
     for (const auto& st : t.steps) {
       const std::size_t i = index.at({t.id, st.number});
-      for (const auto& id : st.objectives) witnessing[element.at(id)].insert(i);
-      for (const auto& id : st.again) witnessing[element.at(id)].insert(i);
+      for (const auto& id : st.objectives) by_objective[id].insert(i);
+      for (const auto& id : st.again) by_objective[id].insert(i);
     }
+  std::map<std::string, std::set<std::size_t>> witnessing;
+  std::map<std::string, int> objectives, shown;  // per element: field objectives, those an ok step witnesses
+  for (const auto& o : s.objectives) {
+    if (o.test < 0) continue;
+    const std::string key = element_of(o.objective);
+    const auto& at = by_objective[o.objective.id];
+    witnessing[key].insert(at.begin(), at.end());
+    ++objectives[key];
+    for (std::size_t i : at)
+      if (a.steps[i].status == formats::StepStatus::Ok) {
+        ++shown[key];
+        break;
+      }
+  }
   for (auto& [key, e] : elements) {
     for (std::size_t i : witnessing[key]) {
       const auto& sa = a.steps[i];
@@ -131,9 +144,9 @@ formats::Acceptance record_acceptance(const model::Matrix& m, const FieldSuite& 
                                    ", " + r.date + ")");
       }
     }
-    e.status = e.steps_deviation ? formats::AcceptanceStatus::Deviation
-               : e.steps_ok      ? formats::AcceptanceStatus::Accepted
-                                 : formats::AcceptanceStatus::NotTested;
+    e.status = e.steps_deviation                                ? formats::AcceptanceStatus::Deviation
+               : objectives[key] > 0 && shown[key] == objectives[key] ? formats::AcceptanceStatus::Accepted
+                                                                 : formats::AcceptanceStatus::NotTested;
   }
   for (const auto& k : order) a.elements.push_back(elements.at(k));
   return a;

@@ -180,7 +180,9 @@ std::string effect_name(const model::Matrix& m, int id) {
 
 std::string seconds_text(std::uint64_t ms) {
   char buf[64];
-  if (ms < 120000) std::snprintf(buf, sizeof buf, "%.1f s", static_cast<double>(ms) / 1000.0);
+  // Tenths unless the time needs hundredths or thousandths (a 50 ms scan cycle).
+  if (ms < 120000) std::snprintf(buf, sizeof buf, "%.*f s", ms % 100 == 0 ? 1 : ms % 10 == 0 ? 2 : 3,
+                                 static_cast<double>(ms) / 1000.0);
   else if (ms < 7200000) std::snprintf(buf, sizeof buf, "%.1f min", static_cast<double>(ms) / 60000.0);
   else std::snprintf(buf, sizeof buf, "%.2f h", static_cast<double>(ms) / 3600000.0);
   return buf;
