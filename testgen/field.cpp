@@ -312,6 +312,48 @@ FieldTest build_loop(const model::Matrix& m, const FieldOptions& o, const LoopPl
   }
   t.steps.push_back(std::move(first));
 
+  auto trip_words = [&](const model::Cause& c, const model::CauseTag& tag, const model::TagValue& v) {
+    std::string what = "Set " + tag.name + " to " + tag_value_words(c, tag, v, r);
+    if (c.analog && c.input == model::InputKind::Analog)
+      what += std::string(" (trip: limit ") + model::float_text(c.analog->limit) + ", " +
+              (c.analog->limit_type == model::LimitType::High ? "high" : "low") + ", hysteresis " +
+              model::float_text(c.analog->hysteresis) + ")";
+    else
+      what += " (trip)";
+    return what;
+  };
+  auto healthy_words = [&](const model::Cause& c, const model::CauseTag& tag, const model::TagValue& v) {
+    return "Set " + tag.name + " back to " + tag_value_words(c, tag, v, r) + " (healthy)";
+  };
+
+  // A single cause's inhibit and bypass switches (C.8): on, the trip, no effect acts; off again.
+  if (p.causes.size() == 1) {
+    const model::Cause& c = *m.find_cause(p.causes.front());
+    const std::size_t need = std::min(tags_to_trip(c), c.tags.size());
+    for (const auto* sw : {c.inhibit_tag ? &*c.inhibit_tag : nullptr, c.bypass_tag ? &*c.bypass_tag : nullptr}) {
+      if (!sw) continue;
+      const std::string kind = sw == (c.inhibit_tag ? &*c.inhibit_tag : nullptr) ? "inhibit" : "bypass";
+      const std::size_t idx = *b.table().find(*sw);
+      model::TagValue on, off;
+      on.value = 1.0f;
+      const std::string phase = "Test with the " + kind;
+      t.steps.push_back(b.step(phase, {"Switch " + *sw + " on (" + kind + " of " + cause_name(m, c.id) + ")"},
+                               {Segment{{{idx, on}}, {}, 0}}));
+      Segment trip, back;
+      std::vector<std::string> acts, backs;
+      for (std::size_t k = 0; k < need; ++k) {
+        const auto tv = cause_tag_value(c, c.tags[k], true, r), hv = cause_tag_value(c, c.tags[k], false, r);
+        trip.set.push_back({*b.table().find(c.tags[k].name), tv});
+        back.set.push_back({*b.table().find(c.tags[k].name), hv});
+        acts.push_back(trip_words(c, c.tags[k], tv) + " and hold it");
+        backs.push_back(healthy_words(c, c.tags[k], hv));
+      }
+      t.steps.push_back(b.step(phase, acts, {trip}));
+      t.steps.push_back(b.step(phase, backs, {back}));
+      t.steps.push_back(b.step(phase, {"Switch " + *sw + " off"}, {Segment{{{idx, off}}, {}, 0}}));
+    }
+  }
+
   // The trip, tag by tag.
   std::vector<std::pair<int, const model::CauseTag*>> tripped;
   for (int id : p.causes) {
@@ -333,15 +375,22 @@ FieldTest build_loop(const model::Matrix& m, const FieldOptions& o, const LoopPl
         }
       }
       const model::TagValue v = cause_tag_value(c, tag, true, r);
-      std::string what = "Set " + tag.name + " to " + tag_value_words(c, tag, v, r);
-      if (c.analog && c.input == model::InputKind::Analog)
-        what += std::string(" (trip: limit ") + model::float_text(c.analog->limit) + ", " +
-                (c.analog->limit_type == model::LimitType::High ? "high" : "low") + ", hysteresis " +
-                model::float_text(c.analog->hysteresis) + ")";
-      else
-        what += " (trip)";
-      what += " and hold it";
-      t.steps.push_back(b.step("Test", {what}, {Segment{{{idx, v}}, {}, 0}}));
+      t.steps.push_back(b.step("Test", {trip_words(c, tag, v) + " and hold it"}, {Segment{{{idx, v}}, {}, 0}}));
+      tripped.push_back({id, &tag});
+    }
+    // Every further transmitter of a single cause's voting in turn: the last
+    // one tripped goes back, the next one takes its place (the trip request
+    // goes off and on again on the Viewer).
+    if (p.causes.size() != 1) continue;
+    for (std::size_t k = need; k < c.tags.size(); ++k) {
+      const model::CauseTag& last = *tripped.back().second;
+      const auto hv = cause_tag_value(c, last, false, r);
+      t.steps.push_back(b.step("Test", {healthy_words(c, last, hv)}, {Segment{{{*b.table().find(last.name), hv}}, {}, 0}}));
+      tripped.pop_back();
+      const model::CauseTag& tag = c.tags[k];
+      const auto tv = cause_tag_value(c, tag, true, r);
+      t.steps.push_back(b.step("Test", {trip_words(c, tag, tv) + " and hold it"},
+                               {Segment{{{*b.table().find(tag.name), tv}}, {}, 0}}));
       tripped.push_back({id, &tag});
     }
   }
@@ -354,7 +403,7 @@ FieldTest build_loop(const model::Matrix& m, const FieldOptions& o, const LoopPl
       const model::Cause& c = *m.find_cause(id);
       const model::TagValue v = cause_tag_value(c, *tag, false, r);
       release.set.push_back({*b.table().find(tag->name), v});
-      acts.push_back("Set " + tag->name + " back to " + tag_value_words(c, *tag, v, r) + " (healthy)");
+      acts.push_back(healthy_words(c, *tag, v));
     }
     t.steps.push_back(b.step("Restore", acts, {release}));
   }
@@ -421,9 +470,8 @@ FieldTest build_loop(const model::Matrix& m, const FieldOptions& o, const LoopPl
     if (fs != field_step.end()) st["description"] = "step " + std::to_string(fs->second);
     ordered_json changed = ordered_json::object();
     for (std::size_t i = 0; i < b.table().size(); ++i)
-      if (in[k].tags[i].value != prev.tags[i].value || k == 0) {
+      if (in[k].tags[i].value != prev.tags[i].value || k == 0) {  // the first step states every input
         const auto& tag = b.table().tags()[i];
-        if (k == 0 && in[k].tags[i].value == prev.tags[i].value) continue;
         changed[tag.name] = tag.kind == model::TagKind::Bool ? ordered_json(in[k].tags[i].value != 0.0f)
                                                              : ordered_json::parse(model::float_text(in[k].tags[i].value));
       }
