@@ -409,40 +409,62 @@ FieldTest build_loop(const model::Matrix& m, const FieldOptions& o, const LoopPl
   }
   const std::vector<int> rest = b.run()[t.steps.front().last_cycle];
   auto differs = [&](std::size_t i) { return b.state()[i] != rest[i]; };
-  for (int id : p.causes) {
-    const model::Cause& c = *m.find_cause(id);
-    if (c.auto_ack) continue;
-    if (!b.state()[b.index(model::observable_key(model::Node{model::Node::Kind::Cause, id}, "ack_required"))]) continue;
-    std::string a = "On the Viewer, acknowledge " + cause_name(m, id);
-    auto segs = viewer_command(m, b, command(model::CommandOp::AckCause, id, 0), a);
-    t.steps.push_back(b.step("Restore", {a}, segs));
-  }
-  for (int id : t.effects) {
-    const model::Effect& e = *m.find_effect(id);
-    const model::Node n{model::Node::Kind::Effect, id};
-    if (!differs(b.index(model::observable_key(n, "active"))) && !differs(b.index(model::observable_key(n, "latched"))))
-      continue;
-    if (e.reset_tag) {
-      const std::size_t idx = *b.table().find(*e.reset_tag);
-      model::TagValue on, off;
-      on.value = 1.0f;
-      t.steps.push_back(b.step("Restore",
-                               {"Press " + *e.reset_tag + " (reset of " + effect_name(m, id) + ") for 1 s, release it"},
-                               {Segment{{{idx, on}}, {}, (1000 + m.cycle_ms - 1) / m.cycle_ms}, Segment{{{idx, off}}, {}, 0}}));
-    } else {
-      std::string a = "On the Viewer, reset " + effect_name(m, id);
-      auto segs = viewer_command(m, b, command(model::CommandOp::ResetEffect, 0, id), a);
-      t.steps.push_back(b.step("Restore", {a}, segs));
+  // Acknowledge, reset, clear first out: back to the initial conditions.
+  auto unlatch = [&](const std::string& phase) {
+    for (int id : p.causes) {
+      const model::Cause& c = *m.find_cause(id);
+      if (c.auto_ack) continue;
+      if (!b.state()[b.index(model::observable_key(model::Node{model::Node::Kind::Cause, id}, "ack_required"))]) continue;
+      std::string a = "On the Viewer, acknowledge " + cause_name(m, id);
+      auto segs = viewer_command(m, b, command(model::CommandOp::AckCause, id, 0), a);
+      t.steps.push_back(b.step(phase, {a}, segs));
     }
-  }
-  std::set<int> groups;
-  for (const auto& c : m.causes)
-    if (c.first_out_group > 0 && differs(b.index(model::observable_key(model::Node{model::Node::Kind::Cause, c.id}, "first_out"))))
-      groups.insert(c.first_out_group);
-  for (int g : groups) {
-    std::string a = "On the Viewer, clear the first-out display of group " + std::to_string(g);
-    auto segs = viewer_command(m, b, command(model::CommandOp::ClearFirstOut, 0, 0, g), a);
-    t.steps.push_back(b.step("Restore", {a}, segs));
+    for (int id : t.effects) {
+      const model::Effect& e = *m.find_effect(id);
+      const model::Node n{model::Node::Kind::Effect, id};
+      if (!differs(b.index(model::observable_key(n, "active"))) && !differs(b.index(model::observable_key(n, "latched"))))
+        continue;
+      if (e.reset_tag) {
+        const std::size_t idx = *b.table().find(*e.reset_tag);
+        model::TagValue on, off;
+        on.value = 1.0f;
+        t.steps.push_back(b.step(phase,
+                                 {"Press " + *e.reset_tag + " (reset of " + effect_name(m, id) + ") for 1 s, release it"},
+                                 {Segment{{{idx, on}}, {}, (1000 + m.cycle_ms - 1) / m.cycle_ms}, Segment{{{idx, off}}, {}, 0}}));
+      } else {
+        std::string a = "On the Viewer, reset " + effect_name(m, id);
+        auto segs = viewer_command(m, b, command(model::CommandOp::ResetEffect, 0, id), a);
+        t.steps.push_back(b.step(phase, {a}, segs));
+      }
+    }
+    std::set<int> groups;
+    for (const auto& c : m.causes)
+      if (c.first_out_group > 0 && differs(b.index(model::observable_key(model::Node{model::Node::Kind::Cause, c.id}, "first_out"))))
+        groups.insert(c.first_out_group);
+    for (int g : groups) {
+      std::string a = "On the Viewer, clear the first-out display of group " + std::to_string(g);
+      auto segs = viewer_command(m, b, command(model::CommandOp::ClearFirstOut, 0, 0, g), a);
+      t.steps.push_back(b.step(phase, {a}, segs));
+    }
+  };
+  unlatch("Restore");
+
+  // A channel fault of a single cause's first tag (6.1.6: the F-channel
+  // driver's bad quality, the wire disconnected): what the cause's bad
+  // quality mode makes of it, then reconnected and restored.
+  if (p.causes.size() == 1) {
+    const model::Cause& c = *m.find_cause(p.causes.front());
+    const model::CauseTag& tag = c.tags.front();
+    const std::size_t idx = *b.table().find(tag.name);
+    model::TagValue bad = cause_tag_value(c, tag, false, r), good = bad;
+    bad.bad_quality = true;
+    const std::string phase = "Test with a channel fault";
+    t.steps.push_back(b.step(phase, {"Disconnect " + tag.name + " at the terminal (wire break: bad quality; " +
+                                     model::to_string(c.bad_quality) + " configured)"},
+                             {Segment{{{idx, bad}}, {}, 0}}));
+    t.steps.push_back(b.step(phase, {"Reconnect " + tag.name + " (" + tag_value_words(c, tag, good, r) + ", good quality)"},
+                             {Segment{{{idx, good}}, {}, 0}}));
+    unlatch(phase);
   }
   std::vector<std::string> left;
   for (std::size_t i : b.shown())
@@ -470,10 +492,18 @@ FieldTest build_loop(const model::Matrix& m, const FieldOptions& o, const LoopPl
     if (fs != field_step.end()) st["description"] = "step " + std::to_string(fs->second);
     ordered_json changed = ordered_json::object();
     for (std::size_t i = 0; i < b.table().size(); ++i)
-      if (in[k].tags[i].value != prev.tags[i].value || k == 0) {  // the first step states every input
+      if (in[k].tags[i].value != prev.tags[i].value || in[k].tags[i].bad_quality != prev.tags[i].bad_quality ||
+          k == 0) {  // the first step states every input
         const auto& tag = b.table().tags()[i];
-        changed[tag.name] = tag.kind == model::TagKind::Bool ? ordered_json(in[k].tags[i].value != 0.0f)
-                                                             : ordered_json::parse(model::float_text(in[k].tags[i].value));
+        ordered_json v = tag.kind == model::TagKind::Bool ? ordered_json(in[k].tags[i].value != 0.0f)
+                                                          : ordered_json::parse(model::float_text(in[k].tags[i].value));
+        if (in[k].tags[i].bad_quality || prev.tags[i].bad_quality) {
+          ordered_json q;
+          q["value"] = v;
+          q["quality"] = in[k].tags[i].bad_quality ? "bad" : "good";
+          v = q;
+        }
+        changed[tag.name] = v;
       }
     if (!changed.empty()) st["inputs"] = changed;
     if (!in[k].commands.empty()) {
@@ -485,7 +515,8 @@ FieldTest build_loop(const model::Matrix& m, const FieldOptions& o, const LoopPl
     while (k + n < in.size() && !b.checkpoints().count(k + n - 1) && !field_step.count(k + n) &&
            in[k + n].commands.empty()) {
       bool same = true;
-      for (std::size_t i = 0; i < b.table().size() && same; ++i) same = in[k + n].tags[i].value == in[k].tags[i].value;
+      for (std::size_t i = 0; i < b.table().size() && same; ++i)
+        same = in[k + n].tags[i].value == in[k].tags[i].value && in[k + n].tags[i].bad_quality == in[k].tags[i].bad_quality;
       if (!same) break;
       ++n;
     }
@@ -520,7 +551,7 @@ std::string automated_reason(const Objective& o, bool witnessed_elsewhere) {
   if (k == "limit" || k == "hysteresis")
     return "needs the exact limit or hysteresis threshold and the next float: below a calibrator's resolution";
   if (k == "reference" || o.simulates) return "forces an output by simulation: not a field action";
-  if (k == "bad-quality") return "needs a channel fault (bad quality) injected at the F-module";
+  if (k == "bad-quality") return "the loop tests disconnect the first tag of a cause only";
   if (witnessed_elsewhere) return "reached only at a cycle no technician observes (between checkpoints)";
   return "no loop test (trip one cause, release, acknowledge, reset) reaches it: " + k +
          " needs a combination of causes, an operator maintenance command or timing beyond one loop";
@@ -528,7 +559,7 @@ std::string automated_reason(const Objective& o, bool witnessed_elsewhere) {
 
 bool field_kind(const Objective& o) {
   return !(o.id.find(".before") != std::string::npos || o.kind == "timer" || o.kind == "limit" ||
-           o.kind == "hysteresis" || o.kind == "reference" || o.simulates || o.kind == "bad-quality");
+           o.kind == "hysteresis" || o.kind == "reference" || o.simulates);
 }
 
 }  // namespace
