@@ -46,7 +46,8 @@ struct TestgenArgs {
 
 // The field suite into DIR/field/ (docs/testgen.md, "Field suite"): its
 // scenarios, the checklist in three forms. Returns the summary lines.
-std::string write_field_suite(const model::Matrix& m, const TestgenArgs& a, const std::string& tool) {
+std::string write_field_suite(const model::Matrix& m, const TestgenArgs& a, const std::string& tool,
+                              testgen::FieldSuite& fs) {
   const std::filesystem::path dir = std::filesystem::path(a.out_dir) / "field";
   testgen::FieldOptions fo;
   fo.resolution = a.resolution;
@@ -55,7 +56,7 @@ std::string write_field_suite(const model::Matrix& m, const TestgenArgs& a, cons
     auto rel = std::filesystem::relative(std::filesystem::absolute(a.matrix_file), std::filesystem::absolute(dir), ec);
     fo.matrix_ref = ec ? std::filesystem::absolute(a.matrix_file).string() : rel.generic_string();
   }
-  const testgen::FieldSuite fs = testgen::generate_field_suite(m, fo);
+  fs = testgen::generate_field_suite(m, fo);
   check_writable_directory(dir.string());
   for (const auto& t : fs.tests) write_output((dir / t.file_name).string(), t.scenario_json);
   const std::string date = testgen::report_date();
@@ -77,15 +78,16 @@ int run_testgen(const TestgenArgs& a) {
   if (!(a.resolution > 0.0) || a.resolution > 1000.0) throw std::invalid_argument("--resolution must be in (0, 1000]");
   const std::string tool = std::string("cemv ") + CEMV_VERSION;
   std::string field_summary;
+  testgen::FieldSuite field;
   try {
-    field_summary = write_field_suite(m, a, tool);
+    field_summary = write_field_suite(m, a, tool, field);
   } catch (const checker::InternalError& e) {
     std::cerr << "internal error: " << e.what() << "\n(a bug in cemv: please report it with the matrix)\n";
     return 4;
   }
   if (a.field_only) {
     if (!a.quiet) write_output("-", "matrix " + m.name + "\n" + field_summary);
-    return 0;
+    return a.mutation_report ? field_mutation_report(m, nullptr, field, a.out_dir, testgen::report_date(), tool) : 0;
   }
   testgen::TestgenOptions o;
   if (a.sif > 0) o.sif = a.sif;
@@ -154,7 +156,8 @@ int run_testgen(const TestgenArgs& a) {
     write_output("-", text);
   }
   int code = suite.undecided > 0 ? 3 : 0;
-  if (a.mutation_report) code = std::max(code, mutation_report(m, suite, a.out_dir));
+  if (a.mutation_report)
+    code = std::max(code, field_mutation_report(m, &suite, field, a.out_dir, testgen::report_date(), tool));
   return code;
 }
 

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,17 @@ struct FieldObjective {
   std::string reason;  // automated-only: why
 };
 
+// The mutation figures of the field suite beside the automated suite's
+// (`cemv testgen --mutation-report`, docs/mutation.md): what field testing
+// alone leaves open.
+struct FieldMutation {
+  std::size_t mutants = 0, equivalent = 0;
+  std::size_t field = 0;        // detected by the field suite
+  std::size_t automated = 0;    // detected by the automated suite
+  std::vector<std::string> automated_only;  // "id: description", detected by the automated suite only
+  std::vector<std::string> neither;         // non-equivalent, detected by neither (or undecided)
+};
+
 struct FieldSuite {
   std::string matrix_name;
   std::string signature;
@@ -68,6 +80,7 @@ struct FieldSuite {
   std::vector<FieldObjective> objectives;  // catalogue order
   std::vector<std::string> untested;       // causes no loop test trips, with the reason
   std::uint64_t field_s = 0;
+  std::optional<FieldMutation> mutation;   // with --mutation-report
   std::size_t witnessed() const;
 };
 
