@@ -148,17 +148,23 @@ void grid_part(Pages& pages, const Document& d, std::size_t first, std::size_t l
 void grid_chapter(Pages& pages, const Document& d, const std::string& number) {
   const model::Matrix& m = d.m;
   pages.chapter("grid", number, "Cause & effect matrix");
-  pages.paragraph_html(
-      "<span class=\"legend\">Cells: <span class=\"t-N\">N normal</span><span class=\"t-S\">S stored</span>"
-      "<span class=\"t-V\">V overridable</span><span class=\"t-R\">R resettable and overridable</span>"
-      "<span class=\"t-X\">X not specified</span>* note only; superscripts: footnotes. Outlined: "
-      "<span style=\"outline:0.6mm solid #15803d\">a proved requirement rests on it</span>"
-      "<span style=\"outline:0.6mm solid #dc2626\">a counterexample or witness runs through it</span>. Grey: comment "
-      "only.</span>",
-      "Cells: N normal S stored V overridable R resettable and overridable X not specified * note only; "
-      "superscripts: footnotes. Outlined: a proved requirement rests on it a counterexample or witness runs "
-      "through it. Grey: comment only.",
-      "legend", 8);
+  if (d.in.acceptance) {  // the cells take the acceptance colours: the letters alone give the type
+    pages.paragraph("Cells: N normal, S stored, V overridable, R resettable and overridable, X not specified, * note "
+                    "only; superscripts: footnotes; coloured by field acceptance (below).",
+                    "legend");
+  } else {
+    pages.paragraph_html(
+        "<span class=\"legend\">Cells: <span class=\"t-N\">N normal</span><span class=\"t-S\">S stored</span>"
+        "<span class=\"t-V\">V overridable</span><span class=\"t-R\">R resettable and overridable</span>"
+        "<span class=\"t-X\">X not specified</span>* note only; superscripts: footnotes. Outlined: "
+        "<span style=\"outline:0.6mm solid #15803d\">a proved requirement rests on it</span>"
+        "<span style=\"outline:0.6mm solid #dc2626\">a counterexample or witness runs through it</span>. Grey: comment "
+        "only.</span>",
+        "Cells: N normal S stored V overridable R resettable and overridable X not specified * note only; "
+        "superscripts: footnotes. Outlined: a proved requirement rests on it a counterexample or witness runs "
+        "through it. Grey: comment only.",
+        "legend", 8);
+  }
   if (d.in.acceptance) {
     const auto& a = *d.in.acceptance;
     int n[3] = {0, 0, 0};
