@@ -243,7 +243,9 @@ std::vector<Segment> viewer_command(const model::Matrix& m, const LoopBuilder& b
   model::TagValue on, off;
   on.value = 1.0f;
   const std::string& tag = m.secure_write->enable_tag;
-  action = "Switch " + tag + " on (secure write enable); " + action + "; switch " + tag + " off";
+  std::string lower = action;
+  if (!lower.empty()) lower[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(lower[0])));
+  action = "Switch " + tag + " on (secure write enable); " + lower + "; switch " + tag + " off";
   return {Segment{{{idx, on}}, {c}, (1000 + m.cycle_ms - 1) / m.cycle_ms}, Segment{{{idx, off}}, {}, 0}};
 }
 
