@@ -22,6 +22,8 @@
 #include "cli/explain_trace.hpp"
 #include "cli/output.hpp"
 #include "cli/progress.hpp"
+#include "formats/acceptance.hpp"
+#include "formats/diagnostics.hpp"
 #include "formats/matrix_json.hpp"
 #include "model/validate.hpp"
 #include "properties/parser.hpp"
@@ -42,6 +44,7 @@ struct EvidenceArgs {
   bool standard = false;
   std::string out_file;
   std::string coverage_file;
+  std::string acceptance_file;
   std::string mutation_file;
   std::string defeats_file;
   std::string json_file;
@@ -149,6 +152,14 @@ int run_evidence(const EvidenceArgs& a) {
       in.texts.push_back(std::move(t));
     }
   if (!a.coverage_file.empty()) in.coverage = read_coverage(a.coverage_file, m);
+  if (!a.acceptance_file.empty()) {
+    in.acceptance = formats::read_acceptance(read_input(a.acceptance_file), input_name(a.acceptance_file));
+    in.acceptance_file = input_name(a.acceptance_file);
+    if (in.acceptance->signature != formats::signature(m))
+      throw formats::LoadError({{input_name(a.acceptance_file),
+                                 "the acceptance record is for the matrix with signature " + in.acceptance->signature +
+                                     ", not " + formats::signature(m) + " (record the checklists of this version)"}});
+  }
   if (!a.mutation_file.empty()) in.mutation = read_mutation(a.mutation_file, m);
   if (!a.defeats_file.empty() && valid) in.defeats = read_defeats(a.defeats_file, m);
   checker::CheckOptions options;
@@ -212,6 +223,9 @@ void add_evidence_commands(CLI::App& app, Context& ctx) {
   cmd->add_flag("--standard", a.standard, "also check the standard properties derived from the matrix");
   cmd->add_option("--out", a.out_file, "the HTML report to write")->type_name("FILE")->required();
   cmd->add_option("--coverage", a.coverage_file, "test generation results to include (DIR/coverage.json of cemv testgen)")
+      ->type_name("FILE");
+  cmd->add_option("--acceptance", a.acceptance_file,
+                  "colour the grid by field acceptance status (cemv-acceptance/1 of cemv record, docs/acceptance.md)")
       ->type_name("FILE");
   cmd->add_option("--mutation", a.mutation_file,
                   "mutation figures to include (DIR/mutation-report.json of cemv testgen --mutation-report)")

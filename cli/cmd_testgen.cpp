@@ -18,6 +18,7 @@
 #include "cli/progress.hpp"
 #include "cli/trace_pictures.hpp"
 #include "testgen/checklist.hpp"
+#include "testgen/field.hpp"
 #include "testgen/testgen.hpp"
 
 namespace cemv::cli {
@@ -39,11 +40,55 @@ struct TestgenArgs {
   double diff_timeout_s = 0.0;
   bool quiet = false;
   bool verbose = false;
+  double resolution = 0.1;   // of the field suite's values
+  bool field_only = false;   // only DIR/field/ (no search: seconds)
 };
+
+// The field suite into DIR/field/ (docs/testgen.md, "Field suite"): its
+// scenarios, the checklist in three forms. Returns the summary lines.
+std::string write_field_suite(const model::Matrix& m, const TestgenArgs& a, const std::string& tool,
+                              testgen::FieldSuite& fs) {
+  const std::filesystem::path dir = std::filesystem::path(a.out_dir) / "field";
+  testgen::FieldOptions fo;
+  fo.resolution = a.resolution;
+  if (a.matrix_file != "-") {
+    std::error_code ec;
+    auto rel = std::filesystem::relative(std::filesystem::absolute(a.matrix_file), std::filesystem::absolute(dir), ec);
+    fo.matrix_ref = ec ? std::filesystem::absolute(a.matrix_file).string() : rel.generic_string();
+  }
+  fs = testgen::generate_field_suite(m, fo);
+  check_writable_directory(dir.string());
+  for (const auto& t : fs.tests) write_output((dir / t.file_name).string(), t.scenario_json);
+  const std::string date = testgen::report_date();
+  write_output((dir / "checklist.md").string(), testgen::field_checklist_markdown(m, fs, date, tool));
+  write_output((dir / "checklist.html").string(), testgen::field_checklist_html(m, fs, date, tool));
+  write_output((dir / "checklist.csv").string(), testgen::field_checklist_csv(m, fs, date, tool));
+  std::size_t steps = 0;
+  for (const auto& t : fs.tests) steps += t.steps.size();
+  return "field suite: " + std::to_string(fs.tests.size()) + " loop tests, " + std::to_string(steps) +
+         " steps, about " + std::to_string((fs.field_s + 59) / 60) + " min on the plant; " +
+         std::to_string(fs.witnessed()) + " of " + std::to_string(fs.objectives.size()) +
+         " objectives witnessed in the field, the rest automated-only; every test replays green (" +
+         (dir / "checklist.md").string() + ")\n";
+}
 
 int run_testgen(const TestgenArgs& a) {
   model::Matrix m = load_valid_matrix(a.matrix_file, "tested");
   check_writable_directory(a.out_dir);
+  if (!(a.resolution > 0.0) || a.resolution > 1000.0) throw std::invalid_argument("--resolution must be in (0, 1000]");
+  const std::string tool = std::string("cemv ") + CEMV_VERSION;
+  std::string field_summary;
+  testgen::FieldSuite field;
+  try {
+    field_summary = write_field_suite(m, a, tool, field);
+  } catch (const checker::InternalError& e) {
+    std::cerr << "internal error: " << e.what() << "\n(a bug in cemv: please report it with the matrix)\n";
+    return 4;
+  }
+  if (a.field_only) {
+    if (!a.quiet) write_output("-", "matrix " + m.name + "\n" + field_summary);
+    return a.mutation_report ? field_mutation_report(m, nullptr, field, a.out_dir, testgen::report_date(), tool) : 0;
+  }
   testgen::TestgenOptions o;
   if (a.sif > 0) o.sif = a.sif;
   o.jobs = a.jobs;
@@ -79,7 +124,6 @@ int run_testgen(const TestgenArgs& a) {
     std::cerr << "internal error: " << e.what() << "\n(a bug in cemv: please report it with the matrix)\n";
     return 4;
   }
-  const std::string tool = std::string("cemv ") + CEMV_VERSION;
   const std::filesystem::path dir(a.out_dir);
   progress.stop();
   std::string diagrams;  // each test's timing diagram beside its scenario, named in the summary
@@ -104,7 +148,7 @@ int run_testgen(const TestgenArgs& a) {
                        std::to_string(suite.undecided) + " undecided\n" + std::to_string(suite.tests.size()) +
                        " tests, " + std::to_string(suite.total_steps) + " steps, " +
                        std::to_string(suite.total_cycles) + " scan cycles; every test replays green\n" + diagrams +
-                       change.summary;
+                       field_summary + change.summary;
     for (const auto& r : suite.objectives)
       if (r.status != testgen::ObjectiveStatus::Covered)
         text += std::string(testgen::to_string(r.status)) + " " + r.objective.id + ": " + r.objective.text + " (" +
@@ -112,7 +156,8 @@ int run_testgen(const TestgenArgs& a) {
     write_output("-", text);
   }
   int code = suite.undecided > 0 ? 3 : 0;
-  if (a.mutation_report) code = std::max(code, mutation_report(m, suite, a.out_dir));
+  if (a.mutation_report)
+    code = std::max(code, field_mutation_report(m, &suite, field, a.out_dir, testgen::report_date(), tool));
   return code;
 }
 
@@ -147,6 +192,11 @@ void add_testgen_commands(CLI::App& app, Context& ctx) {
                   "effect it cuts short is undecided)")
       ->capture_default_str()
       ->type_name("S");
+  cmd->add_option("--resolution", a.resolution,
+                  "field suite: the resolution values are set and printed with (the calibrator's, the tag unit's)")
+      ->capture_default_str()
+      ->type_name("R");
+  cmd->add_flag("--field-only", a.field_only, "write only the field suite DIR/field/ (no search of the automated suite)");
   cmd->add_flag("-q,--quiet", a.quiet, "print nothing but errors");
   cmd->add_flag("-v,--verbose", a.verbose, "print each objective as it is decided (standard error)");
   cmd->footer(

@@ -10,7 +10,7 @@
 #include <CLI/CLI.hpp>
 
 namespace cemv::model { struct Matrix; }
-namespace cemv::testgen { struct TestSuite; }
+namespace cemv::testgen { struct TestSuite; struct FieldSuite; }
 
 namespace cemv::cli {
 
@@ -36,10 +36,15 @@ void add_smt_commands(CLI::App& app, Context& ctx);       // export-smt
 void add_check_commands(CLI::App& app, Context& ctx);     // check
 void add_testgen_commands(CLI::App& app, Context& ctx);   // testgen
 void add_replay_commands(CLI::App& app, Context& ctx);    // replay
+void add_record_commands(CLI::App& app, Context& ctx);    // record
 
 // `cemv testgen --mutation-report`: after the suite is written to `out_dir`,
 // the mutation adequacy report (docs/testgen.md); returns an exit status.
 int mutation_report(const model::Matrix& m, const testgen::TestSuite& suite, const std::string& out_dir);
+// The same for the automated suite and the field suite (DIR/field/), and the
+// comparison of the two in the field checklists; returns an exit status.
+int field_mutation_report(const model::Matrix& m, const testgen::TestSuite* automated, testgen::FieldSuite& field,
+                          const std::string& out_dir, const std::string& date, const std::string& tool);
 void add_mutate_commands(CLI::App& app, Context& ctx);    // mutate
 void add_diff_commands(CLI::App& app, Context& ctx);      // diff
 void add_response_commands(CLI::App& app, Context& ctx);  // response

@@ -97,6 +97,7 @@ int main(int argc, char** argv) {
 #ifdef CEMV_WITH_TESTGEN
   cemv::cli::add_testgen_commands(app, ctx);
   cemv::cli::add_replay_commands(app, ctx);
+  cemv::cli::add_record_commands(app, ctx);
 #endif
   if (auto message = unknown_command(app, argc, argv)) {
     std::cerr << "error: " << *message << "\n";

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "checker/result.hpp"
+#include "formats/acceptance.hpp"
 #include "model/matrix.hpp"
 #include "model/validate.hpp"
 
@@ -118,6 +119,10 @@ struct EvidenceInputs {
   std::optional<MutationFigures> mutation;
   std::vector<PropertyFileInfo> property_files;  // the user's, in command-line order
   std::vector<PropertyText> texts;               // every property checked, user's and standard
+  // cemv-acceptance/1 of `cemv record` (docs/acceptance.md): the grid is then
+  // coloured by acceptance status. Its signature is the matrix's (the CLI checks).
+  std::optional<formats::Acceptance> acceptance;
+  std::string acceptance_file;                   // as given on the command line
 };
 
 // The report as one printable HTML file (docs/reports.md, "Evidence report").

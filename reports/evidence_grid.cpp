@@ -60,6 +60,14 @@ std::vector<Footnote> footnotes(const model::Matrix& m) {
   return list;
 }
 
+// The acceptance class of an element ("a-accepted"), "" without a record.
+std::string acceptance_css(const Document& d, const std::string& key) {
+  if (!d.in.acceptance) return "";
+  for (const auto& e : d.in.acceptance->elements)
+    if (e.key() == key) return std::string(" a-") + formats::to_string(e.status);
+  return "";
+}
+
 void grid_part(Pages& pages, const Document& d, std::size_t first, std::size_t last) {
   const model::Matrix& m = d.m;
   const std::size_t n = last - first;
@@ -83,8 +91,9 @@ void grid_part(Pages& pages, const Document& d, std::size_t first, std::size_t l
   for (std::size_t k = first; k < last; ++k) {
     const auto& e = m.effects[k];
     head << "<th class=\"effect" << (e.function == model::EffectFunction::Comment ? " comment" : "")
-         << (defeat_effects.count(e.id) ? " defeat1" : "") << "\"><div>E" << e.id << " " << html_escape(e.name)
-         << (defeat_effects.count(e.id) ? " \u26A0" : "") << "</div></th>";
+         << (defeat_effects.count(e.id) ? " defeat1" : "") << acceptance_css(d, "effect[" + std::to_string(e.id) + "]")
+         << "\"><div>E" << e.id << " " << html_escape(e.name) << (defeat_effects.count(e.id) ? " \u26A0" : "")
+         << "</div></th>";
   }
   std::vector<std::vector<Cell>> rows;
   for (const auto& c : m.causes) {
@@ -92,7 +101,9 @@ void grid_part(Pages& pages, const Document& d, std::size_t first, std::size_t l
     const bool comment = c.function == model::CauseFunction::Comment;
     const bool defeat1 = defeat_causes.count(c.id) > 0;
     row.push_back({"C" + std::to_string(c.id) + (defeat1 ? " \u26A0" : ""), "C" + std::to_string(c.id),
-                   std::string(comment ? "cause comment" : "cause") + (defeat1 ? " defeat1" : ""), 0});
+                   std::string(comment ? "cause comment" : "cause") + (defeat1 ? " defeat1" : "") +
+                       acceptance_css(d, "cause[" + std::to_string(c.id) + "]"),
+                   0});
     std::string desc = c.name + (c.description.empty() ? "" : ": " + c.description);
     row.push_back({"<b>" + html_escape(c.name) + "</b>" + (c.description.empty() ? "" : " " + html_escape(c.description)),
                    desc, comment ? "cause comment" : "cause", 0});
@@ -105,6 +116,11 @@ void grid_part(Pages& pages, const Document& d, std::size_t first, std::size_t l
       }
       std::string type = model::to_string(x->type);
       std::string css = "t-" + (x->type == model::IntersectionType::Note ? std::string("Note") : type);
+      if (d.in.acceptance) {
+        const std::string a = acceptance_css(d, "intersection cause[" + std::to_string(c.id) + "]/effect[" +
+                                                    std::to_string(e.id) + "]");
+        if (!a.empty()) css = a.substr(1);
+      }
       if (d.support_cells.count({c.id, e.id})) css += " support";
       if (d.trace_cells.count({c.id, e.id})) css += " traced";
       std::string marks = footnote_marks(x->note);
@@ -146,18 +162,41 @@ void grid_part(Pages& pages, const Document& d, std::size_t first, std::size_t l
 void grid_chapter(Pages& pages, const Document& d, const std::string& number) {
   const model::Matrix& m = d.m;
   pages.chapter("grid", number, "Cause & effect matrix");
-  pages.paragraph_html(
-      "<span class=\"legend\">Cells: <span class=\"t-N\">N normal</span><span class=\"t-S\">S stored</span>"
-      "<span class=\"t-V\">V overridable</span><span class=\"t-R\">R resettable and overridable</span>"
-      "<span class=\"t-X\">X not specified</span>* note only; superscripts: footnotes. Outlined: "
-      "<span style=\"outline:0.6mm solid #15803d\">a proved requirement rests on it</span>"
-      "<span style=\"outline:0.6mm solid #dc2626\">a counterexample or witness runs through it</span>. Grey: comment "
-      "only. <span class=\"defeat1\">\u26A0</span> on a cause or effect: an indirect defeat set of one action touches it "
-      "(docs/defeats.md).</span>",
-      "Cells: N normal S stored V overridable R resettable and overridable X not specified * note only; "
-      "superscripts: footnotes. Outlined: a proved requirement rests on it a counterexample or witness runs "
-      "through it. Grey: comment only. \u26A0 on a cause or effect: an indirect defeat set of one action touches it.",
-      "legend", 11);
+  if (d.in.acceptance) {  // the cells take the acceptance colours: the letters alone give the type
+    pages.paragraph("Cells: N normal, S stored, V overridable, R resettable and overridable, X not specified, * note "
+                    "only; superscripts: footnotes; coloured by field acceptance (below). \u26A0 on a cause or effect: an "
+                    "indirect defeat set of one action touches it (docs/defeats.md).",
+                    "legend");
+  } else {
+    pages.paragraph_html(
+        "<span class=\"legend\">Cells: <span class=\"t-N\">N normal</span><span class=\"t-S\">S stored</span>"
+        "<span class=\"t-V\">V overridable</span><span class=\"t-R\">R resettable and overridable</span>"
+        "<span class=\"t-X\">X not specified</span>* note only; superscripts: footnotes. Outlined: "
+        "<span style=\"outline:0.6mm solid #15803d\">a proved requirement rests on it</span>"
+        "<span style=\"outline:0.6mm solid #dc2626\">a counterexample or witness runs through it</span>. Grey: comment "
+        "only. <span class=\"defeat1\">\u26A0</span> on a cause or effect: an indirect defeat set of one action "
+        "touches it (docs/defeats.md).</span>",
+        "Cells: N normal S stored V overridable R resettable and overridable X not specified * note only; "
+        "superscripts: footnotes. Outlined: a proved requirement rests on it a counterexample or witness runs "
+        "through it. Grey: comment only. \u26A0 on a cause or effect: an indirect defeat set of one action touches it.",
+        "legend", 11);
+  }
+  if (d.in.acceptance) {
+    const auto& a = *d.in.acceptance;
+    int n[3] = {0, 0, 0};
+    for (const auto& e : a.elements) n[static_cast<int>(e.status)]++;
+    pages.paragraph_html(
+        "<span class=\"legend\">Field acceptance (" + html_escape(d.in.acceptance_file) +
+            ", docs/acceptance.md), colouring the cause numbers, the effect heads and the cells: "
+            "<span class=\"a-accepted\">accepted " + std::to_string(n[0]) + "</span><span class=\"a-deviation\">deviation " +
+            std::to_string(n[1]) + "</span><span class=\"a-not-tested\">not tested " + std::to_string(n[2]) +
+            "</span></span>",
+        "Field acceptance (" + d.in.acceptance_file + "): accepted " + std::to_string(n[0]) + ", deviation " +
+            std::to_string(n[1]) + ", not tested " + std::to_string(n[2]),
+        "legend", 8);
+    for (const auto& e : a.elements)
+      for (const auto& dev : e.deviations) pages.paragraph("Deviation, " + e.key() + ": " + dev, "bad");
+  }
   if (m.causes.empty() || m.effects.empty()) {
     pages.paragraph("The matrix has no causes or no effects: no grid.");
     return;

@@ -33,6 +33,7 @@ td.support{outline:0.6mm solid #15803d;outline-offset:-0.6mm;font-weight:bold}
 .defeat1{background:#fde68a}
 td.traced{outline:0.6mm solid #dc2626;outline-offset:-0.6mm;font-weight:bold}
 td.support.traced{outline:0.6mm dashed #dc2626}
+.a-accepted{background:#86efac}.a-deviation{background:#f87171;font-weight:bold}.a-not-tested{background:#fde68a}
 .legend span{display:inline-block;padding:0 1.5mm;margin-right:1.5mm;border:0.2mm solid #9ca3af}
 img.diagram{display:block;border:0.2mm solid #d1d5db;margin:0 0 1.5mm}
 .pagehead,.pagefoot{font-size:8pt;color:#4b5563;padding:2mm 12mm}
