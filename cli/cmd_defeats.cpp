@@ -9,11 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "checker/prover.hpp"
 #include "cli/commands.hpp"
 #include "cli/matrix_input.hpp"
 #include "cli/output.hpp"
-#include "cli/progress.hpp"
+#include "cli/path_analysis.hpp"
 #include "defeats/analysis.hpp"
 #include "defeats/report.hpp"
 
@@ -62,24 +61,14 @@ int run_defeats(const DefeatsArgs& a) {
   o.total_timeout_s = a.total_timeout_s;
   o.jobs = a.jobs;
   o.out_dir = a.out_dir;
-  Progress progress("cemv defeats", 0, "paths", !a.quiet && Progress::terminal(), std::cerr);
-  o.on_plan = [&](std::size_t paths) { progress.phase("cemv defeats", paths, "paths"); };
-  o.on_start = [&](const std::string& key) { progress.started(key); };
-  o.on_done = [&](const std::string& key) { progress.finished(key); };
-  defeats::DefeatsResult r;
+  std::optional<defeats::DefeatsResult> analysed;
   try {
-    r = defeats::analyse(m, o);
-    progress.stop();
+    analysed = run_path_analysis("cemv defeats", o, a.quiet, [&] { return defeats::analyse(m, o); });
   } catch (const std::invalid_argument& e) {
-    progress.stop();
     throw BadArguments(e.what());
-  } catch (const std::exception& e) {
-    progress.stop();
-    bool refuted = dynamic_cast<const checker::InternalError*>(&e) != nullptr;
-    std::cerr << "internal error: " << (refuted ? "" : "the checker failed: ") << e.what()
-              << "\n(a bug in cemv: please report it with the matrix)\n";
-    return 4;
   }
+  if (!analysed) return 4;
+  const defeats::DefeatsResult& r = *analysed;
   if (!(a.quiet && format == defeats::Format::Text && a.output == "-"))
     write_output(a.output,
                  defeats::defeats_report(m, r, input_name(a.matrix_file), format, a.out_dir, a.require_distance));

@@ -8,11 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "checker/prover.hpp"
 #include "cli/commands.hpp"
 #include "cli/matrix_input.hpp"
 #include "cli/output.hpp"
-#include "cli/progress.hpp"
+#include "cli/path_analysis.hpp"
 #include "response/analysis.hpp"
 #include "response/report.hpp"
 
@@ -55,25 +54,14 @@ int run_response(const ResponseArgs& a) {
   o.timeout_s = a.timeout_s;
   o.jobs = a.jobs;
   o.out_dir = a.out_dir;
-  // On a terminal: paths done / total, elapsed, the running ones (cli/progress.hpp).
-  Progress progress("cemv response", 0, "paths", !a.quiet && Progress::terminal(), std::cerr);
-  o.on_plan = [&](std::size_t paths) { progress.phase("cemv response", paths, "paths"); };
-  o.on_start = [&](const std::string& key) { progress.started(key); };
-  o.on_done = [&](const std::string& key) { progress.finished(key); };
-  response::ResponseResult r;
+  std::optional<response::ResponseResult> analysed;
   try {
-    r = response::analyse(m, o);
-    progress.stop();
+    analysed = run_path_analysis("cemv response", o, a.quiet, [&] { return response::analyse(m, o); });
   } catch (const std::invalid_argument& e) {
-    progress.stop();
     throw BadArguments(e.what());
-  } catch (const std::exception& e) {
-    progress.stop();
-    bool refuted = dynamic_cast<const checker::InternalError*>(&e) != nullptr;
-    std::cerr << "internal error: " << (refuted ? "" : "the checker failed: ") << e.what()
-              << "\n(a bug in cemv: please report it with the matrix)\n";
-    return 4;
   }
+  if (!analysed) return 4;
+  const response::ResponseResult& r = *analysed;
   // --quiet: no table on standard output, but a line per path over its
   // process safety time, unbounded or undecided (docs/response-time.md).
   if (!(a.quiet && format == response::Format::Text && a.output == "-"))
