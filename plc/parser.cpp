@@ -1,0 +1,668 @@
+#include "plc/parser.hpp"
+
+#include <algorithm>
+#include <array>
+
+#include "formats/diagnostics.hpp"
+#include "model/text.hpp"
+#include "plc/check.hpp"
+#include "plc/plcopen.hpp"
+
+namespace cemv::plc {
+
+namespace {
+
+constexpr std::string_view kKeywords[] = {
+    "PROGRAM", "END_PROGRAM", "FUNCTION_BLOCK", "END_FUNCTION_BLOCK", "FUNCTION", "END_FUNCTION",
+    "VAR", "VAR_INPUT", "VAR_OUTPUT", "VAR_IN_OUT", "VAR_TEMP", "VAR_GLOBAL", "VAR_EXTERNAL",
+    "VAR_ACCESS", "VAR_CONFIG", "VAR_STAT", "VAR_INST", "END_VAR", "CONSTANT", "RETAIN", "NON_RETAIN", "PERSISTENT",
+    "AT", "IF", "THEN", "ELSIF", "ELSE", "END_IF", "CASE", "OF", "END_CASE", "FOR", "TO", "BY", "DO",
+    "END_FOR", "WHILE", "END_WHILE", "REPEAT", "UNTIL", "END_REPEAT", "RETURN", "EXIT", "CONTINUE",
+    "JMP", "AND", "OR", "XOR", "NOT", "MOD", "TRUE", "FALSE", "TYPE", "END_TYPE", "STRUCT",
+    "END_STRUCT", "ARRAY", "CONFIGURATION", "END_CONFIGURATION", "RESOURCE", "END_RESOURCE", "TASK",
+    "METHOD", "END_METHOD", "INTERFACE", "END_INTERFACE", "CLASS", "END_CLASS", "NAMESPACE",
+    "END_NAMESPACE", "ACTION", "END_ACTION", "STEP", "END_STEP", "TRANSITION", "END_TRANSITION",
+    "INITIAL_STEP", "SUPER", "THIS", "REF_TO", "POINTER"};
+
+// Types of IEC 61131-3 outside the subset (P.2), named as such when declared.
+constexpr std::string_view kRefusedTypes[] = {
+    "STRING", "WSTRING", "CHAR", "WCHAR", "ARRAY", "STRUCT", "POINTER", "REF_TO", "REFERENCE", "SINT",
+    "USINT", "UINT", "UDINT", "LINT", "ULINT", "LREAL", "BYTE", "WORD", "DWORD", "LWORD", "DATE",
+    "TIME_OF_DAY", "TOD", "DATE_AND_TIME", "DT", "LTIME", "LDATE", "LTOD", "LDT", "LTIME_OF_DAY",
+    "LDATE_AND_TIME", "ANY", "ANY_NUM", "ANY_INT", "ANY_REAL", "ANY_BIT"};
+
+// Standard function blocks outside the subset (P.6).
+constexpr std::string_view kRefusedBlocks[] = {"CTU", "CTD", "CTUD", "CTU_INT", "CTU_DINT", "CTU_LINT",
+                                               "CTU_UDINT", "CTU_ULINT", "CTD_INT", "CTD_DINT", "CTD_LINT",
+                                               "CTD_UDINT", "CTD_ULINT", "CTUD_INT", "CTUD_DINT", "CTUD_LINT",
+                                               "CTUD_UDINT", "CTUD_ULINT", "RTC", "SEMA", "LTON", "LTOF", "LTP"};
+
+// Standard functions outside the subset (P.5).
+constexpr std::string_view kRefusedFunctions[] = {
+    "SQRT", "LN", "LOG", "EXP", "SIN", "COS", "TAN", "ASIN", "ACOS", "ATAN", "ATAN2", "ADD", "SUB",
+    "MUL", "DIV", "EXPT", "MOVE", "SHL", "SHR", "ROL", "ROR", "MUX", "GT", "GE", "EQ", "LE", "LT",
+    "NE", "LEN", "LEFT", "RIGHT", "MID", "CONCAT", "INSERT", "DELETE", "REPLACE", "FIND", "TRUNC",
+    "ROUND", "AND", "OR", "XOR", "NOT", "SIZEOF", "ADR", "REF"};
+
+template <std::size_t N>
+bool in(const std::string_view (&set)[N], std::string_view word) {
+  return std::any_of(std::begin(set), std::end(set), [&](std::string_view k) { return same_name(k, word); });
+}
+
+bool is_keyword(std::string_view w) { return in(kKeywords, w); }
+
+bool is_conversion(std::string_view w) {  // INT_TO_REAL, TO_DINT, REAL_TRUNC_INT...
+  std::string up;
+  for (char c : w) up += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return up.find("_TO_") != std::string::npos || up.rfind("TO_", 0) == 0 || up.find("TRUNC") != std::string::npos;
+}
+
+// How deep expressions and statements may nest: the checker, the printer
+// and both implementations walk the tree recursively (P.1.5).
+constexpr int kMaxNesting = 128;
+
+class Parser {
+ public:
+  Parser(std::string_view text, const Origin& origin) : tokens_(text, origin), file_(origin.file) {}
+
+  Program program() {
+    Program p;
+    p.file = file_;
+    while (!at(Tok::End)) p.pous.push_back(pou());
+    if (p.pous.empty()) fail(peek().position, "no PROGRAM or FUNCTION_BLOCK in the file");
+    return p;
+  }
+
+  std::vector<Statement> statements_to_end() {
+    auto body = statement_list();
+    if (!at(Tok::End)) unexpected("a statement");
+    return body;
+  }
+
+  Literal initial_value_to_end(Position& at_pos) {
+    at_pos = peek().position;
+    Literal l = initial_value();
+    if (!at(Tok::End)) unexpected("the end of the initial value");
+    return l;
+  }
+
+ private:
+  TokenStream tokens_;
+  std::string file_;
+  int nesting_ = 0;     // open parentheses, unary operators, compound statements
+  int last_depth_ = 0;  // the depth of the expression parsed last
+
+  struct Nest {
+    Parser& p;
+    Nest(Parser& parser, Position at) : p(parser) {
+      if (++p.nesting_ > kMaxNesting)
+        p.fail(at, "nested more than " + std::to_string(kMaxNesting) + " levels deep (docs/plc.md P.1.5)");
+    }
+    ~Nest() { --p.nesting_; }
+  };
+  void deeper(int depth, Position at) {
+    last_depth_ = depth;
+    if (depth > kMaxNesting)
+      fail(at, "an expression more than " + std::to_string(kMaxNesting) + " operators deep (docs/plc.md P.1.5)");
+  }
+
+  const Token& peek(std::size_t ahead = 0) { return tokens_.peek(ahead); }
+  bool at(Tok k) { return peek().kind == k; }
+  bool at_word(std::string_view w, std::size_t ahead = 0) {
+    return peek(ahead).kind == Tok::Identifier && same_name(peek(ahead).text, w);
+  }
+  Token next() {
+    Token t = peek();
+    tokens_.advance();
+    return t;
+  }
+  [[noreturn]] void fail(Position at, std::string what) const { refuse(file_, at, std::move(what)); }
+  [[noreturn]] void unexpected(std::string_view wanted) {
+    const Token& t = peek();
+    fail(t.position, "expected " + std::string(wanted) + ", found " +
+                         (t.kind == Tok::End ? std::string("the end of the text") : model::in_quotes(t.text)));
+  }
+  void expect(Tok k, std::string_view text) {
+    if (!at(k)) unexpected(model::in_quotes(text));
+    next();
+  }
+  void expect_word(std::string_view w) {
+    if (!at_word(w)) unexpected(w);
+    next();
+  }
+  std::string identifier(std::string_view what) {
+    if (!at(Tok::Identifier) || is_keyword(peek().text)) unexpected(what);
+    return next().text;
+  }
+
+  Pou pou() {
+    Pou p;
+    p.position = peek().position;
+    std::string_view end;
+    if (at_word("PROGRAM")) {
+      p.kind = PouKind::Program;
+      end = "END_PROGRAM";
+    } else if (at_word("FUNCTION_BLOCK")) {
+      p.kind = PouKind::FunctionBlock;
+      end = "END_FUNCTION_BLOCK";
+    } else if (at(Tok::Identifier) && (at_word("FUNCTION") || at_word("TYPE") || at_word("CONFIGURATION") ||
+                                       at_word("VAR_GLOBAL") || at_word("CLASS") || at_word("INTERFACE") ||
+                                       at_word("NAMESPACE") || at_word("ACTION") || at_word("METHOD"))) {
+      fail(peek().position, std::string(model::in_quotes(peek().text)) +
+                                " is not in the subset: a file holds PROGRAM and FUNCTION_BLOCK POUs (docs/plc.md P.1)");
+    } else {
+      unexpected("PROGRAM or FUNCTION_BLOCK");
+    }
+    next();
+    p.name = identifier("the POU's name");
+    if (at_word("EXTENDS") || at_word("IMPLEMENTS"))
+      fail(peek().position, model::in_quotes(peek().text) + " (object orientation) is not in the subset (docs/plc.md P.1)");
+    while (at(Tok::Identifier) && is_keyword(peek().text) && peek().text.size() >= 3 &&
+           same_name(std::string_view(peek().text).substr(0, 3), "VAR"))
+      declarations(p);
+    p.body = statement_list();
+    if (at_word("METHOD") || at_word("ACTION") || at_word("VAR") || at_word("VAR_INPUT"))
+      fail(peek().position, model::in_quotes(peek().text) + " here is not in the subset (docs/plc.md P.1)");
+    expect_word(end);
+    return p;
+  }
+
+  void declarations(Pou& p) {
+    const Token& head = next();
+    Section section;
+    if (same_name(head.text, "VAR")) {
+      section = Section::Local;
+      if (at_word("CONSTANT")) {
+        next();
+        section = Section::Constant;
+      }
+    } else if (same_name(head.text, "VAR_INPUT")) {
+      section = Section::Input;
+    } else if (same_name(head.text, "VAR_OUTPUT")) {
+      section = Section::Output;
+    } else if (same_name(head.text, "VAR_IN_OUT")) {
+      section = Section::InOut;
+    } else {
+      fail(head.position, "variable section " + model::in_quotes(head.text) + " is not in the subset (docs/plc.md P.3)");
+    }
+    if (at_word("RETAIN") || at_word("NON_RETAIN") || at_word("PERSISTENT") || at_word("CONSTANT"))
+      fail(peek().position, "qualifier " + model::in_quotes(peek().text) + " on " + head.text +
+                                " is not in the subset (docs/plc.md P.3)");
+    while (!at_word("END_VAR")) {
+      std::vector<std::pair<std::string, Position>> names;
+      do {
+        if (!names.empty()) next();
+        const Position pos = peek().position;
+        names.emplace_back(identifier("a variable name or END_VAR"), pos);
+      } while (at(Tok::Comma));
+      if (at_word("AT"))
+        fail(peek().position, "located variable (AT %...) is not in the subset (docs/plc.md P.3)");
+      expect(Tok::Colon, ":");
+      const Position type_pos = peek().position;
+      if (!at(Tok::Identifier)) unexpected("a type");
+      VarType type = parse_type_name(next().text, file_, type_pos);
+      if (at(Tok::LBracket) || at(Tok::LParen))
+        fail(peek().position, "a subrange, array or string length is not in the subset (docs/plc.md P.2)");
+      std::optional<Literal> initial;
+      Position initial_pos;
+      if (at(Tok::Assign)) {
+        next();
+        initial_pos = peek().position;
+        if (type.kind != VarType::Kind::Elementary)
+          fail(initial_pos, "an initial value of a block instance is not in the subset (docs/plc.md P.3)");
+        initial = initial_value();
+      }
+      expect(Tok::Semicolon, ";");
+      for (auto& [name, pos] : names)
+        p.variables.push_back(Variable{pos, name, section, type, initial, initial_pos});
+    }
+    next();  // END_VAR
+  }
+
+  Literal initial_value() {
+    const Position at_pos = peek().position;
+    Expr e = unary();
+    if (e.kind != Expr::Kind::Literal)
+      fail(at_pos, "an initial value must be a literal (TRUE, 5, -1.5, T#5s) (docs/plc.md P.3)");
+    return e.literal;
+  }
+
+  std::vector<Statement> statement_list() {
+    std::vector<Statement> out;
+    for (;;) {
+      if (at(Tok::Semicolon)) {  // the empty statement
+        next();
+        continue;
+      }
+      if (!at(Tok::Identifier) || at_word("END_IF") || at_word("ELSIF") || at_word("ELSE") ||
+          at_word("END_CASE") || at_word("END_FOR") || at_word("END_PROGRAM") || at_word("END_FUNCTION_BLOCK"))
+        return out;
+      if (is_keyword(peek().text) && !at_word("IF") && !at_word("CASE") && !at_word("FOR")) {
+        if (at_word("WHILE") || at_word("REPEAT") || at_word("RETURN") || at_word("EXIT") || at_word("CONTINUE") ||
+            at_word("JMP"))
+          fail(peek().position, "statement " + upper(peek().text) + " is not in the subset (docs/plc.md P.4)");
+        return out;
+      }
+      out.push_back(statement());
+    }
+  }
+
+  static std::string upper(std::string_view w) {
+    std::string s;
+    for (char c : w) s += static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    return s;
+  }
+
+  Statement statement() {
+    Nest nest(*this, peek().position);
+    if (at_word("IF")) return if_statement();
+    if (at_word("CASE")) return case_statement();
+    if (at_word("FOR")) return for_statement();
+    Statement s;
+    s.position = peek().position;
+    s.target = identifier("a statement");
+    if (at(Tok::Dot)) {
+      next();
+      const std::string member = at(Tok::Identifier) ? peek().text : "";
+      fail(s.position, "assignment to " + model::in_quotes(s.target + "." + member) +
+                           " is not in the subset: pass a block's inputs in its call (docs/plc.md P.4)");
+    }
+    if (at(Tok::LBracket)) fail(peek().position, "array indexing is not in the subset (docs/plc.md P.2)");
+    if (at(Tok::Caret)) fail(peek().position, "pointer dereference is not in the subset (docs/plc.md P.2)");
+    if (at(Tok::Assign)) {
+      next();
+      s.kind = Statement::Kind::Assign;
+      s.value = expression();
+    } else if (at(Tok::LParen)) {
+      if (function_from_name(s.target) || in(kRefusedFunctions, s.target) || is_conversion(s.target))
+        fail(s.position, "a function call is not a statement; assign its result (docs/plc.md P.4)");
+      s.kind = Statement::Kind::Call;
+      call_args(s);
+    } else {
+      unexpected("':=' or '(' after " + model::in_quotes(s.target));
+    }
+    expect(Tok::Semicolon, ";");
+    return s;
+  }
+
+  void call_args(Statement& s) {
+    next();  // (
+    if (!at(Tok::RParen)) {
+      for (;;) {
+        CallArg a;
+        a.position = peek().position;
+        if (!(at(Tok::Identifier) && (peek(1).kind == Tok::Assign || peek(1).kind == Tok::Arrow)))
+          fail(a.position, "a block call names each parameter (`IN := x`, `Q => y`); positional arguments are not in "
+                           "the subset (docs/plc.md P.4)");
+        if (at_word("NOT") || is_keyword(peek().text)) unexpected("a parameter name");
+        a.name = next().text;
+        a.output = next().kind == Tok::Arrow;
+        if (a.output) {
+          a.value.position = peek().position;
+          a.value.kind = Expr::Kind::Variable;
+          a.value.name = identifier("a variable");
+        } else {
+          a.value = expression();
+        }
+        s.args.push_back(std::move(a));
+        if (!at(Tok::Comma)) break;
+        next();
+      }
+    }
+    expect(Tok::RParen, ")");
+  }
+
+  Statement if_statement() {
+    Statement s;
+    s.kind = Statement::Kind::If;
+    s.position = next().position;  // IF
+    for (;;) {
+      Branch b;
+      b.condition = expression();
+      expect_word("THEN");
+      b.body = statement_list();
+      s.branches.push_back(std::move(b));
+      if (at_word("ELSIF")) {
+        next();
+        continue;
+      }
+      break;
+    }
+    if (at_word("ELSE")) {
+      next();
+      s.has_else = true;
+      s.else_body = statement_list();
+    }
+    expect_word("END_IF");
+    expect(Tok::Semicolon, ";");
+    return s;
+  }
+
+  std::int64_t case_value() {
+    bool negative = false;
+    const Position pos = peek().position;
+    if (at(Tok::Minus)) {
+      next();
+      negative = true;
+    }
+    if (!at(Tok::Integer))
+      fail(pos, "a CASE label must be an integer literal or a range `a..b` (docs/plc.md P.4)");
+    const std::int64_t v = next().integer;
+    return negative ? -v : v;
+  }
+
+  bool label_ahead() {  // `1:`, `-1:`, `1,`, `1..`
+    std::size_t k = at(Tok::Minus) ? 1 : 0;
+    if (peek(k).kind != Tok::Integer) return false;
+    const Tok after = peek(k + 1).kind;
+    return after == Tok::Colon || after == Tok::Comma || after == Tok::DotDot;
+  }
+
+  Statement case_statement() {
+    Statement s;
+    s.kind = Statement::Kind::Case;
+    s.position = next().position;  // CASE
+    s.value = expression();
+    expect_word("OF");
+    while (label_ahead()) {
+      CaseArm arm;
+      arm.position = peek().position;
+      for (;;) {
+        CaseRange r;
+        r.low = r.high = case_value();
+        if (at(Tok::DotDot)) {
+          next();
+          r.high = case_value();
+        }
+        arm.labels.push_back(r);
+        if (!at(Tok::Comma)) break;
+        next();
+      }
+      expect(Tok::Colon, ":");
+      arm.body = case_body();
+      s.arms.push_back(std::move(arm));
+    }
+    if (s.arms.empty() && !at_word("ELSE")) {
+      if (at(Tok::Identifier) && !is_keyword(peek().text))
+        fail(peek().position, "a CASE label must be an integer literal or a range `a..b` (docs/plc.md P.4)");
+      unexpected("a CASE label");
+    }
+    if (at_word("ELSE")) {
+      next();
+      s.has_else = true;
+      s.else_body = case_body();
+    }
+    if (!at_word("END_CASE") && at(Tok::Identifier) && peek(1).kind == Tok::Colon)
+      fail(peek().position, "a CASE label must be an integer literal or a range `a..b` (docs/plc.md P.4)");
+    expect_word("END_CASE");
+    expect(Tok::Semicolon, ";");
+    return s;
+  }
+
+  std::vector<Statement> case_body() {
+    std::vector<Statement> out;
+    for (;;) {
+      if (at(Tok::Semicolon)) {
+        next();
+        continue;
+      }
+      if (label_ahead() || !at(Tok::Identifier) || at_word("ELSE") || at_word("END_CASE")) return out;
+      if (is_keyword(peek().text) && !at_word("IF") && !at_word("CASE") && !at_word("FOR")) {
+        auto rest = statement_list();  // refuses WHILE etc., else returns empty
+        if (rest.empty()) return out;
+      }
+      out.push_back(statement());
+    }
+  }
+
+  Expr bound() {
+    const Position pos = peek().position;
+    Expr e = unary();
+    const bool constant = e.kind == Expr::Kind::Literal || e.kind == Expr::Kind::Variable ||
+                          (e.kind == Expr::Kind::Unary && e.unary == UnaryOp::Negate &&
+                           e.args[0].kind == Expr::Kind::Variable);
+    if (!constant || at(Tok::Plus) || at(Tok::Minus) || at(Tok::Star) || at(Tok::Slash) || at_word("MOD"))
+      fail(pos, "FOR bounds must be constants (a literal or a VAR CONSTANT) (docs/plc.md P.4)");
+    return e;
+  }
+
+  Statement for_statement() {
+    Statement s;
+    s.kind = Statement::Kind::For;
+    s.position = next().position;  // FOR
+    s.target = identifier("the FOR variable");
+    expect(Tok::Assign, ":=");
+    s.value = bound();
+    expect_word("TO");
+    s.limit = bound();
+    if (at_word("BY")) {
+      next();
+      s.step = bound();
+    } else {
+      s.step.kind = Expr::Kind::Literal;
+      s.step.literal = Literal{Type::Dint, 1, 0};
+      s.step.type = Type::Dint;
+      s.step.position = s.position;
+    }
+    expect_word("DO");
+    s.body = statement_list();
+    expect_word("END_FOR");
+    expect(Tok::Semicolon, ";");
+    return s;
+  }
+
+  // Precedence, lowest first (IEC 61131-3 Table 71): OR, XOR, AND/&,
+  // = <>, < > <= >=, + -, * / MOD, unary - NOT, primary.
+  Expr expression() { return binary_level(0); }
+
+  std::optional<BinaryOp> binary_at(int level) {
+    const Token& t = peek();
+    switch (level) {
+      case 0: if (at_word("OR")) return BinaryOp::Or; break;
+      case 1: if (at_word("XOR")) return BinaryOp::Xor; break;
+      case 2: if (at_word("AND") || t.kind == Tok::Ampersand) return BinaryOp::And; break;
+      case 3:
+        if (t.kind == Tok::Eq) return BinaryOp::Eq;
+        if (t.kind == Tok::Ne) return BinaryOp::Ne;
+        break;
+      case 4:
+        if (t.kind == Tok::Lt) return BinaryOp::Lt;
+        if (t.kind == Tok::Le) return BinaryOp::Le;
+        if (t.kind == Tok::Gt) return BinaryOp::Gt;
+        if (t.kind == Tok::Ge) return BinaryOp::Ge;
+        break;
+      case 5:
+        if (t.kind == Tok::Plus) return BinaryOp::Add;
+        if (t.kind == Tok::Minus) return BinaryOp::Sub;
+        break;
+      case 6:
+        if (t.kind == Tok::Star) return BinaryOp::Mul;
+        if (t.kind == Tok::Slash) return BinaryOp::Div;
+        if (at_word("MOD")) return BinaryOp::Mod;
+        break;
+      default: break;
+    }
+    return std::nullopt;
+  }
+
+  Expr binary_level(int level) {
+    if (level == 7) return unary();
+    Expr left = binary_level(level + 1);
+    int depth = last_depth_;
+    while (auto op = binary_at(level)) {
+      Expr e;
+      e.kind = Expr::Kind::Binary;
+      e.binary = *op;
+      e.position = left.position;
+      next();
+      Expr right = binary_level(level + 1);
+      deeper(1 + std::max(depth, last_depth_), e.position);
+      depth = last_depth_;
+      e.args.push_back(std::move(left));
+      e.args.push_back(std::move(right));
+      left = std::move(e);
+    }
+    if (at(Tok::Power)) fail(peek().position, "operator '**' is not in the subset (docs/plc.md P.5)");
+    last_depth_ = depth;
+    return left;
+  }
+
+  Expr unary() {
+    const Position pos = peek().position;
+    if (at(Tok::Minus) || at_word("NOT")) {
+      const bool negate = at(Tok::Minus);
+      next();
+      Nest nest(*this, pos);
+      Expr operand = unary();
+      if (negate && operand.kind == Expr::Kind::Literal && operand.literal.type != Type::Bool &&
+          operand.position == Position{pos.line, pos.column + 1}) {
+        // `-5`, `-1.5`, `-T#5s` written together: a signed literal
+        operand.literal.integer = -operand.literal.integer;
+        operand.literal.real = -operand.literal.real;
+        operand.position = pos;
+        return operand;
+      }
+      Expr e;
+      e.kind = Expr::Kind::Unary;
+      e.unary = negate ? UnaryOp::Negate : UnaryOp::Not;
+      e.position = pos;
+      e.args.push_back(std::move(operand));
+      deeper(last_depth_ + 1, pos);
+      return e;
+    }
+    if (at(Tok::Plus)) fail(pos, "unary '+' is not in the subset (docs/plc.md P.5)");
+    return primary();
+  }
+
+  Expr literal(Type type, std::int64_t integer, float real, Position pos) {
+    Expr e;
+    e.kind = Expr::Kind::Literal;
+    e.position = pos;
+    e.type = type;
+    e.literal = Literal{type, integer, real};
+    last_depth_ = 1;
+    return e;
+  }
+
+  Expr primary() {
+    const Token t = peek();
+    const Position pos = t.position;
+    switch (t.kind) {
+      case Tok::Integer: next(); return literal(Type::Dint, t.integer, 0, pos);
+      case Tok::Real: next(); return literal(Type::Real, 0, t.real, pos);
+      case Tok::Time: next(); return literal(Type::Time, t.integer, 0, pos);
+      case Tok::LParen: {
+        next();
+        Nest nest(*this, pos);
+        Expr e = expression();
+        expect(Tok::RParen, ")");
+        return e;
+      }
+      case Tok::Identifier: break;
+      default: unexpected("an expression");
+    }
+    if (at_word("TRUE") || at_word("FALSE")) {
+      const bool v = at_word("TRUE");
+      next();
+      return literal(Type::Bool, v ? 1 : 0, 0, pos);
+    }
+    if (is_keyword(t.text)) unexpected("an expression");
+    const std::string name = next().text;
+    if (at(Tok::LParen)) return function_call(name, pos);
+    Expr e;
+    e.position = pos;
+    e.name = name;
+    e.kind = Expr::Kind::Variable;
+    if (at(Tok::Dot)) {
+      next();
+      e.kind = Expr::Kind::Member;
+      e.member = identifier("a block output after '.'");
+    }
+    if (at(Tok::LBracket)) fail(peek().position, "array indexing is not in the subset (docs/plc.md P.2)");
+    if (at(Tok::Caret)) fail(peek().position, "pointer dereference is not in the subset (docs/plc.md P.2)");
+    last_depth_ = 1;
+    return e;
+  }
+
+  Expr function_call(const std::string& name, Position pos) {
+    const auto f = function_from_name(name);
+    if (!f) {
+      if (in(kRefusedFunctions, name) || is_conversion(name))
+        fail(pos, "function " + model::in_quotes(upper(name)) + " is not in the subset (docs/plc.md P.5)");
+      fail(pos, "unknown function " + model::in_quotes(name) +
+                    " (the subset has MIN, MAX, ABS, SEL, LIMIT; a block instance is called as a statement; "
+                    "docs/plc.md P.5)");
+    }
+    Expr e;
+    e.kind = Expr::Kind::Call;
+    e.function = *f;
+    e.position = pos;
+    next();  // (
+    Nest nest(*this, pos);
+    int depth = 0;
+    if (!at(Tok::RParen)) {
+      for (;;) {
+        if (at(Tok::Identifier) && (peek(1).kind == Tok::Assign || peek(1).kind == Tok::Arrow))
+          fail(peek().position, "named arguments of a function are not in the subset (docs/plc.md P.5)");
+        e.args.push_back(expression());
+        depth = std::max(depth, last_depth_);
+        if (!at(Tok::Comma)) break;
+        next();
+      }
+    }
+    expect(Tok::RParen, ")");
+    deeper(depth + 1, pos);
+    return e;
+  }
+};
+
+}  // namespace
+
+VarType parse_type_name(const std::string& word, const std::string& file, Position at) {
+  VarType t;
+  if (auto e = type_from_name(word)) {
+    t.type = *e;
+    return t;
+  }
+  if (auto b = block_from_name(word)) {
+    t.kind = VarType::Kind::Standard;
+    t.block = *b;
+    return t;
+  }
+  if (in(kRefusedTypes, word))
+    refuse(file, at, "type " + model::in_quotes(word) + " is not in the subset (BOOL, INT, DINT, REAL, TIME; docs/plc.md P.2)");
+  if (in(kRefusedBlocks, word))
+    refuse(file, at, "standard block " + model::in_quotes(word) + " is not in the subset (docs/plc.md P.6)");
+  if (is_keyword(word)) refuse(file, at, "expected a type, found " + model::in_quotes(word));
+  t.kind = VarType::Kind::User;
+  t.user = word;
+  return t;
+}
+
+std::vector<Statement> parse_statements(std::string_view text, const Origin& origin) {
+  return Parser(text, origin).statements_to_end();
+}
+
+Literal parse_initial_value(std::string_view text, const Origin& origin, Position& at) {
+  return Parser(text, origin).initial_value_to_end(at);
+}
+
+Program parse_st(std::string_view text, const std::string& file) {
+  Program p = Parser(text, Origin{file, 1, 1}).program();
+  check_program(p);
+  return p;
+}
+
+Program parse_program_text(std::string_view text, const std::string& file) {
+  std::size_t i = 0;
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") i = 3;  // a UTF-8 byte order mark
+  while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+  if (i < text.size() && text[i] == '<') return parse_plcopen(text, file);
+  return parse_st(text.substr(text.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0), file);
+}
+
+Program read_program(const std::filesystem::path& file) {
+  return parse_program_text(formats::read_text_file(file), file.string());
+}
+
+}  // namespace cemv::plc
