@@ -51,5 +51,6 @@ void add_response_commands(CLI::App& app, Context& ctx);  // response
 void add_defeats_commands(CLI::App& app, Context& ctx);   // defeats
 void add_evidence_commands(CLI::App& app, Context& ctx);  // evidence
 void add_workbook_commands(CLI::App& app, Context& ctx);  // import-workbook, export-workbook
+void add_plc_commands(CLI::App& app, Context& ctx);       // plc-check
 
 }  // namespace cemv::cli

@@ -181,10 +181,7 @@ plc::Value value_of(const z3::expr& e, plc::Type t) {
   } else {
     EXPECT_TRUE(e.is_numeral()) << e;
     if (!e.is_numeral()) return v;
-    const unsigned w = e.get_sort().bv_size();
-    std::int64_t x = static_cast<std::int64_t>(e.get_numeral_uint64());
-    if (x >= (std::int64_t{1} << (w - 1))) x -= std::int64_t{1} << w;
-    v.integer = x;
+    v.integer = e.get_numeral_int64();
   }
   return v;
 }
@@ -201,10 +198,9 @@ std::string text(const plc::Value& v) {
 plc::Type type_of_state(const plc::Program& p, const std::string& key, const z3::expr& var) {
   if (var.is_bool()) return plc::Type::Bool;
   if (var.is_fpa()) return plc::Type::Real;
-  if (var.get_sort().bv_size() == 16) return plc::Type::Int;
   (void)p;
   (void)key;
-  return plc::Type::Dint;  // TIME and DINT compare as 32-bit integers
+  return plc::Type::Dint;  // INT, DINT and TIME compare as integers
 }
 
 // What the interpreter names: variables and the outputs of the blocks (their
@@ -265,8 +261,7 @@ TEST(PlcEncoderDiff, RandomProgramsAgreeWithTheInterpreter) {
         from.push_back(i.var);
         to.push_back(i.type == plc::Type::Bool   ? ctx.bool_val(v.integer != 0)
                      : i.type == plc::Type::Real ? ctx.fpa_val(v.real)
-                     : i.type == plc::Type::Int  ? ctx.bv_val(static_cast<int>(v.integer), 16)
-                                                 : ctx.bv_val(v.integer, 32));
+                                                 : ctx.int_val(v.integer));
       }
       z3::expr_vector next(ctx);
       for (const auto& s : sys.states) next.push_back(z3::expr(s.next).substitute(from, to).simplify());

@@ -1,0 +1,240 @@
+// `cemv plc-check MATRIX PROGRAM`: a PLC program compared with its matrix,
+// output tag by output tag (docs/plc.md). Exit 0 every output related as
+// asked, 1 a difference, 2 bad input, 3 unknown and no difference, 4
+// internal error (a run that does not replay on both sides).
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <string>
+
+#include "checker/prover.hpp"
+#include "checker/counterexample.hpp"
+#include "checker/work_queue.hpp"
+#include "cli/commands.hpp"
+#include "cli/matrix_input.hpp"
+#include "cli/output.hpp"
+#include "formats/diagnostics.hpp"
+#include "formats/matrix_json.hpp"
+#include "formats/plc_map.hpp"
+#include "plc/parser.hpp"
+#include "plc_check/check.hpp"
+#include "plc_check/report.hpp"
+#include "plc_encoder/encode.hpp"
+#include "reports/check_report.hpp"
+#include "reports/timing_svg.hpp"
+
+namespace cemv::cli {
+
+namespace {
+
+struct PlcArgs {
+  std::string matrix, program, map, pou, save_map;
+  std::string relation = "equal";
+  std::string format = "text";
+  std::string output = "-";
+  std::string out_dir;
+  double timeout_s = 0.0;
+  double total_timeout_s = 0.0;
+  int jobs = 1;
+  bool quiet = false;
+};
+
+plc_check::VarType var_type(const plc::VarType& t) {
+  if (t.kind != plc::VarType::Kind::Elementary) return plc_check::VarType::Other;
+  switch (t.type) {
+    case plc::Type::Bool: return plc_check::VarType::Bool;
+    case plc::Type::Int:
+    case plc::Type::Dint: return plc_check::VarType::Int;
+    case plc::Type::Real: return plc_check::VarType::Real;
+    case plc::Type::Time: return plc_check::VarType::Time;
+  }
+  return plc_check::VarType::Other;
+}
+
+plc_check::VarKind var_kind(plc::Section s) {
+  switch (s) {
+    case plc::Section::Input: return plc_check::VarKind::Input;
+    case plc::Section::Output: return plc_check::VarKind::Output;
+    case plc::Section::InOut: return plc_check::VarKind::InOut;
+    default: return plc_check::VarKind::Local;
+  }
+}
+
+// The PROGRAM checked: --pou, else the map's, else the file's only PROGRAM.
+const plc::Pou& choose_pou(const plc::Program& p, const std::string& wanted, const std::string& file) {
+  if (!wanted.empty()) {
+    const plc::Pou* pou = plc::find_pou(p, wanted);
+    if (!pou || pou->kind != plc::PouKind::Program)
+      throw formats::LoadError({{"", "no PROGRAM " + wanted + " in the program", file}});
+    return *pou;
+  }
+  const plc::Pou* only = nullptr;
+  int programs = 0;
+  for (const auto& pou : p.pous)
+    if (pou.kind == plc::PouKind::Program) {
+      only = &pou;
+      ++programs;
+    }
+  if (programs != 1)
+    throw formats::LoadError({{"", std::to_string(programs) + " PROGRAMs in the file: name the one to check with --pou", file}});
+  return *only;
+}
+
+std::string stem(const std::string& tag) {
+  std::string s;
+  for (char c : tag) s += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+  return s;
+}
+
+void write_difference(const PlcArgs& a, const model::Matrix& m, plc_check::PlcCheckReport& r, std::size_t i) {
+  const auto& o = r.outputs[i];
+  if (a.out_dir.empty() || !o.difference) return;
+  const auto& d = *o.difference;
+  const std::string base = (std::filesystem::path(a.out_dir) / ("plc." + stem(o.question.tag))).string();
+  const std::string key = "effect[" + std::to_string(o.question.effect) + "].tag[" + std::to_string(o.question.position) + "]";
+  std::vector<checker::ScenarioExpectation> expect{{key, model::FieldType::Bool, d.program_values.back()}};
+  r.scenario_files[i] = base + ".scenario.json";
+  write_output(r.scenario_files[i],
+               checker::scenario_json(m, d.matrix_inputs,
+                                      "Where program " + r.pou + " (" + r.program_file + ") differs from matrix " +
+                                          m.name + ": " + o.question.tag + " in scan " + std::to_string(d.scan + 1) +
+                                          "; the expectation is the program's value, so the matrix fails it",
+                                      expect));
+  reports::TimingDiagram diagram;
+  diagram.title = r.pou + " against " + m.name + ": " + o.question.tag;
+  diagram.shown.push_back(key);
+  diagram.marks.push_back({static_cast<std::size_t>(d.scan), "first difference: matrix " +
+                                                                 std::to_string(d.matrix_values.back()) + ", program " +
+                                                                 std::to_string(d.program_values.back())});
+  for (std::size_t c = 0; c < d.program_values.size(); ++c)
+    if (c == 0 || d.program_values[c] != d.program_values[c - 1])
+      diagram.notes.push_back("scan " + std::to_string(c + 1) + ": program " + o.question.variable + " = " +
+                              std::to_string(d.program_values[c]));
+  if (d.assigned_at)
+    diagram.notes.push_back(r.program_file + ":" + std::to_string(d.assigned_at->line) + ":" +
+                            std::to_string(d.assigned_at->column) + ": the statement that set " + o.question.variable +
+                            " in scan " + std::to_string(d.scan + 1));
+  r.diagram_files[i] = base + ".svg";
+  write_output(r.diagram_files[i], reports::timing_svg(m, d.runtime, diagram));
+}
+
+int run_plc_check(const PlcArgs& a) {
+  plc_check::Relation relation;
+  if (a.relation == "equal") relation = plc_check::Relation::Equal;
+  else if (a.relation == "safe-side") relation = plc_check::Relation::SafeSide;
+  else throw std::runtime_error("plc-check: --relation '" + a.relation + "': expected equal or safe-side");
+  const auto format = reports::check_format_from_string(a.format);
+  if (!format) throw std::runtime_error("plc-check: --format '" + a.format + "': expected text, json, junit or sarif");
+  if (a.jobs < 1) throw std::runtime_error("plc-check: --jobs must be at least 1");
+  const model::Matrix m = load_valid_matrix(a.matrix, "plc-check");
+  const std::string program_text = read_input(a.program);
+  const plc::Program program = plc::read_program(a.program);
+  std::optional<formats::PlcMap> given;
+  if (!a.map.empty()) given = formats::parse_plc_map(read_input(a.map), input_name(a.map));
+  const plc::Pou& pou = choose_pou(program, !a.pou.empty() ? a.pou : given ? given->pou : "", input_name(a.program));
+  plc_check::ProgramInterface iface;
+  iface.file = input_name(a.program);
+  iface.pou = pou.name;
+  if (program.scan_time_ms) iface.task_ms = static_cast<std::uint32_t>(*program.scan_time_ms);
+  for (const auto& v : pou.variables) iface.variables.push_back({v.name, var_kind(v.section), var_type(v.type)});
+  check_writable(a.output);
+  if (!a.save_map.empty()) check_writable(a.save_map);
+  if (!a.out_dir.empty()) check_writable_directory(a.out_dir);
+  const auto map = plc_check::resolve_map(m, iface, given ? &*given : nullptr, input_name(a.map));
+  if (!a.save_map.empty()) write_output(a.save_map, formats::plc_map_json(map.map));
+  if (!given && !a.quiet) std::cerr << "map found by name (--save-map writes it):\n" << formats::plc_map_json(map.map);
+
+  plc_check::PlcCheckReport r;
+  r.matrix_file = input_name(a.matrix);
+  r.matrix_signature = formats::signature(m);
+  r.program_file = input_name(a.program);
+  r.program_sha256 = formats::sha256_hex(program_text);
+  r.pou = pou.name;
+  r.relation = relation;
+  r.map = map;
+  r.map_source = given ? input_name(a.map) : "found by name";
+  r.tool_version = CEMV_VERSION;
+  // One output a task, decided in its own slot: the results do not depend
+  // on --jobs or on which worker ran what.
+  const auto start = checker::Clock::now();
+  auto seconds = [](double s) { return std::chrono::duration_cast<checker::Clock::duration>(std::chrono::duration<double>(s)); };
+  checker::CancelToken cancel(a.total_timeout_s > 0 ? start + seconds(a.total_timeout_s) : checker::Clock::time_point::max());
+  const auto qs = plc_check::questions(m, map);
+  std::vector<std::optional<plc_check::OutputResult>> slots(qs.size());
+  std::vector<std::optional<plc_encoder::Unsupported>> refused(qs.size());
+  checker::WorkQueue(a.jobs, cancel).run(qs.size(), [&](std::size_t i) {
+    plc_check::CheckOptions o;
+    o.relation = relation;
+    o.limits.cancel = &cancel;
+    if (a.timeout_s > 0) o.limits.deadline = checker::Clock::now() + seconds(a.timeout_s);
+    try {
+      slots[i] = plc_check::check_output(m, program, pou, map, qs[i], o);
+    } catch (const plc_encoder::Unsupported& e) {
+      refused[i] = e;
+    }
+  });
+  for (const auto& e : refused)
+    if (e) throw formats::LoadError({{"", e->what(), input_name(a.program), e->at.line, e->at.column}});
+  for (std::size_t i = 0; i < qs.size(); ++i) {
+    if (slots[i]) {
+      r.outputs.push_back(*slots[i]);
+    } else {
+      r.interrupted = true;
+      plc_check::OutputResult u;
+      u.question = qs[i];
+      u.reason = "total time limit";
+      r.outputs.push_back(u);
+    }
+    r.scenario_files.emplace_back();
+    r.diagram_files.emplace_back();
+    write_difference(a, m, r, i);
+  }
+  std::string text;
+  if (*format == reports::CheckFormat::Text) text = plc_check::to_text(r, m);
+  else if (*format == reports::CheckFormat::Json) text = plc_check::to_json(r);
+  else text = reports::check_report(plc_check::as_check_result(r), {input_name(a.matrix)}, *format);
+  if (!(a.quiet && *format == reports::CheckFormat::Text && a.output == "-")) write_output(a.output, text);
+  if (a.quiet)
+    for (const auto& o : r.outputs)
+      if (o.verdict != plc_check::OutputVerdict::Related)
+        std::cerr << r.program_file << ": " << (o.verdict == plc_check::OutputVerdict::Differs ? "error" : "warning")
+                  << ": output " << o.question.tag << " " << plc_check::to_string(o.verdict) << "\n";
+  return plc_check::exit_code(r);
+}
+
+}  // namespace
+
+void add_plc_commands(CLI::App& app, Context& ctx) {
+  auto* cmd = app.add_subcommand("plc-check", "Prove a PLC program (Structured Text or PLCopen XML) equal to its matrix "
+                                              "output by output, or show where it differs (docs/plc.md)");
+  static PlcArgs a;
+  cmd->add_option("MATRIX", a.matrix, "the matrix (cemv-matrix/1)")->required();
+  cmd->add_option("PROGRAM", a.program, "the program: Structured Text, or PLCopen TC6 XML 2.01")->required();
+  cmd->add_option("--map", a.map, "the map between matrix and program (cemv-plc-map/1); without it, found by name")
+      ->type_name("MAP");
+  cmd->add_option("--save-map", a.save_map, "write the completed map to FILE")->type_name("FILE");
+  cmd->add_option("--pou", a.pou, "the PROGRAM to check (default: the map's, or the file's only PROGRAM)")->type_name("NAME");
+  cmd->add_option("--relation", a.relation, "equal (the same output at every scan) or safe-side (safe whenever the matrix is)")
+      ->capture_default_str();
+  cmd->add_option("--format", a.format, "text, json (cemv-plc-result/1), junit or sarif")->capture_default_str();
+  cmd->add_option("-o,--output", a.output, "write the report to FILE ('-' = standard output)")->type_name("FILE");
+  cmd->add_option("--out", a.out_dir, "folder for each difference's scenario and timing diagram")->type_name("DIR");
+  cmd->add_option("--timeout", a.timeout_s, "wall-clock limit per output, seconds (0 = none)")->type_name("S");
+  cmd->add_option("--total-timeout", a.total_timeout_s, "wall-clock limit of the whole run, seconds (0 = none)")->type_name("S");
+  cmd->add_option("--jobs", a.jobs, "outputs decided at once (the results do not depend on it)")->type_name("N");
+  cmd->add_flag("-q,--quiet", a.quiet, "print nothing but errors (and the output asked for)");
+  cmd->footer(
+      "Exit status: 0 every output related as asked; 1 an output differs (a run replayed on the matrix's\n"
+      "runtime and the program's interpreter); 2 bad input (a program outside the subset, an incomplete\n"
+      "map); 3 some output undecided and none differs; 4 internal error (a run that does not replay).\n");
+  cmd->callback([&ctx]() {
+    try {
+      ctx.exit_code = run_plc_check(a);
+    } catch (const checker::InternalError& e) {
+      std::cerr << "internal error: " << e.what() << "\n";
+      ctx.exit_code = 4;
+    }
+  });
+}
+
+}  // namespace cemv::cli

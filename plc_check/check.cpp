@@ -1,0 +1,189 @@
+// One output tag decided and every run replayed on both sides (docs/plc.md
+// "Relations", "Counterexamples").
+#include "plc_check/check.hpp"
+
+#include <stdexcept>
+
+#include "checker/engines/bmc.hpp"
+#include "checker/engines/portfolio.hpp"
+#include "checker/replay.hpp"
+#include "model/vocabulary.hpp"
+
+namespace cemv::plc_check {
+
+namespace {
+
+using checker::InternalError;
+using checker::ProverResult;
+using checker::Verdict;
+
+// The value an input of the run had: its value in the trace, 0 when the
+// engines' reduction left it out (nothing the question reads depends on it).
+checker::Value trace_value(const checker::Trace& t, std::size_t cycle, const std::string& name) {
+  for (std::size_t i = 0; i < t.input_names.size(); ++i)
+    if (t.input_names[i] == name) return t.cycles.at(cycle).inputs.at(i);
+  return {};
+}
+
+plc::Value literal_of(plc::Type type, const checker::Value& v) {
+  plc::Value l;
+  l.type = type;
+  if (type == plc::Type::Real) l.real = v.f;
+  else if (type == plc::Type::Bool) l.integer = v.i != 0;
+  else l.integer = v.i;
+  return l;
+}
+
+// A program input the map holds at `v`.
+plc::Value literal_of(plc::Type type, double v) {
+  plc::Value l;
+  l.type = type;
+  if (type == plc::Type::Real) l.real = static_cast<float>(v);
+  else if (type == plc::Type::Bool) l.integer = v != 0.0;
+  else if (type == plc::Type::Int) l.integer = static_cast<std::int16_t>(static_cast<std::int64_t>(v));
+  else l.integer = static_cast<std::int32_t>(static_cast<std::int64_t>(v));
+  return l;
+}
+
+int observable_index(const model::Matrix& m, const std::string& key) {
+  const auto obs = model::observables(m);
+  for (std::size_t i = 0; i < obs.size(); ++i)
+    if (obs[i].key == key) return static_cast<int>(i);
+  throw std::logic_error("the matrix has no observable " + key);
+}
+
+bool related(Relation r, bool ett, int matrix, int program) {
+  if (r == Relation::Equal) return matrix == program;
+  const int safe = ett ? 1 : 0;
+  return matrix != safe || program == safe;
+}
+
+class Replay {
+ public:
+  Replay(const model::Matrix& m, const plc::Program& program, const plc::Pou& pou, const ResolvedMap& map,
+         const OutputQuestion& q, Relation relation)
+      : m_(m), program_(program), pou_(pou), map_(map), q_(q), relation_(relation) {}
+
+  // The run of `t` on both sides; the difference, or an InternalError.
+  Difference run(const ProductProblem& p, const checker::Trace& t) {
+    Difference d;
+    d.matrix_inputs = checker::cycle_inputs(t, *p.matrix, m_);
+    for (const auto& x : p.extras) {
+      if (!x.tag) continue;
+      for (std::size_t c = 0; c < t.length(); ++c) {
+        const checker::Value v = trace_value(t, c, x.name);
+        auto& tv = d.matrix_inputs[c].tags.at(*x.tag);
+        if (x.bad) tv.bad_quality = v.i != 0;
+        else tv.value = v.is_float ? v.f : static_cast<float>(v.i);
+      }
+    }
+    for (std::size_t c = 0; c < t.length(); ++c) {
+      std::map<std::string, plc::Value> in;
+      for (const auto& b : p.program_inputs)
+        in[b.variable] = b.held ? literal_of(b.type, *b.held)
+                                : literal_of(b.type, trace_value(t, c, b.term.decl().name().str()));
+      d.program_inputs.push_back(std::move(in));
+    }
+    d.runtime = checker::run_on_runtime(m_, d.matrix_inputs);
+    const int key = observable_index(m_, "effect[" + std::to_string(q_.effect) + "].tag[" + std::to_string(q_.position) + "]");
+    plc::Interpreter interp(program_, pou_.name);
+    d.scan = -1;
+    for (std::size_t c = 0; c < t.length(); ++c) {
+      interp.step(d.program_inputs[c], map_.scan_ms);
+      d.matrix_values.push_back(d.runtime.observables.at(c).at(key));
+      d.program_values.push_back(interp.value(q_.variable).integer != 0 ? 1 : 0);
+      if (!related(relation_, q_.ett, d.matrix_values.back(), d.program_values.back())) {
+        d.scan = static_cast<int>(c);
+        d.assigned_at = interp.last_assignment(q_.variable);
+        break;
+      }
+    }
+    if (d.scan < 0)
+      throw InternalError("plc-check " + q_.tag + ": the solver's run of " + std::to_string(t.length()) +
+                          " scans does not break the relation on the matrix's runtime and the program's "
+                          "interpreter (the encodings disagree with them)");
+    const std::size_t n = static_cast<std::size_t>(d.scan) + 1;
+    d.matrix_inputs.resize(n);
+    d.program_inputs.resize(n);
+    d.runtime.inputs.resize(n);
+    d.runtime.observables.resize(n);
+    return d;
+  }
+
+ private:
+  const model::Matrix& m_;
+  const plc::Program& program_;
+  const plc::Pou& pou_;
+  const ResolvedMap& map_;
+  const OutputQuestion& q_;
+  Relation relation_;
+};
+
+}  // namespace
+
+const char* to_string(OutputVerdict v) {
+  switch (v) {
+    case OutputVerdict::Related: return "related";
+    case OutputVerdict::Differs: return "differs";
+    default: return "unknown";
+  }
+}
+
+std::vector<OutputQuestion> questions(const model::Matrix& m, const ResolvedMap& map) {
+  std::vector<OutputQuestion> out;
+  for (const auto& e : m.effects) {
+    if (e.function == model::EffectFunction::Comment) continue;
+    for (std::size_t j = 0; j < e.tags.size(); ++j) {
+      OutputQuestion q;
+      q.effect = e.id;
+      q.position = static_cast<int>(j + 1);
+      q.tag = e.tags[j].name;
+      q.ett = e.tags[j].ett;
+      for (const auto& b : map.map.outputs)
+        if (model::tag_key(b.tag) == model::tag_key(q.tag) && (b.effect == 0 || b.effect == e.id)) q.variable = b.variable;
+      out.push_back(q);
+    }
+  }
+  return out;
+}
+
+OutputResult check_output(const model::Matrix& m, const plc::Program& program, const plc::Pou& pou,
+                          const ResolvedMap& map, const OutputQuestion& q, const CheckOptions& options) {
+  OutputResult out;
+  out.question = q;
+  const checker::ProblemFactory make = product_factory(m, program, pou, map, q, options.relation);
+  Replay replay(m, program, pou, map, q, options.relation);
+  // A shortest run first: a hand-coding error mostly shows within the
+  // longest delay of the matrix, which BMC reaches at once.
+  {
+    z3::context ctx;
+    const checker::OwnedProblem op = make(ctx);
+    const ProverResult r = checker::Bmc().prove(op.problem, options.limits.with_work(options.work).with_depth(options.bmc_depth));
+    if (r.verdict == Verdict::Falsified) {
+      out.verdict = OutputVerdict::Differs;
+      out.method = r.method_text();
+      out.k = static_cast<int>(r.cex.length());
+      out.difference = replay.run(*std::static_pointer_cast<ProductProblem>(op.owner), r.cex);
+      return out;
+    }
+  }
+  checker::PortfolioOptions po;
+  po.engine_work = options.work;
+  const ProverResult r = checker::Portfolio(make, po).run(options.limits);
+  out.method = r.method_text();
+  out.k = r.k;
+  if (r.verdict == Verdict::Proved) {
+    out.verdict = OutputVerdict::Related;
+  } else if (r.verdict == Verdict::Unknown) {
+    out.reason = r.reason_text();
+  } else {
+    z3::context ctx;
+    const checker::OwnedProblem op = make(ctx);
+    out.verdict = OutputVerdict::Differs;
+    out.k = static_cast<int>(r.cex.length());
+    out.difference = replay.run(*std::static_pointer_cast<ProductProblem>(op.owner), r.cex);
+  }
+  return out;
+}
+
+}  // namespace cemv::plc_check
