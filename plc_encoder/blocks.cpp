@@ -59,10 +59,10 @@ void Scan::timer(plc::StandardBlock b, const std::string& k, Env& env) {
   const z3::expr done = pin("#DONE");
   const z3::expr e = pin("#E");
   const z3::expr f = ctx_.bool_val(false), t = ctx_.bool_val(true);
-  const z3::expr zero = ctx_.bv_val(0, 32);
-  // Elapsed after this scan, compared in 64 bits so that no sum wraps.
-  const z3::expr e_next = e + ctx_.bv_val(static_cast<std::int64_t>(scan_ms_), 32);
-  const z3::expr expired = z3::sle(z3::sext(pt, 32), z3::sext(e, 32) + ctx_.bv_val(static_cast<std::int64_t>(scan_ms_), 64));
+  const z3::expr zero = ctx_.int_val(0);
+  // Elapsed after this scan; it stays below PT + scan, so never out of TIME's range.
+  const z3::expr e_next = e + ctx_.int_val(static_cast<std::int64_t>(scan_ms_));
+  const z3::expr expired = pt <= e_next;
   const z3::expr idle = !run && !done;
   switch (b) {
     case plc::StandardBlock::Ton: {

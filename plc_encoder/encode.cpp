@@ -86,7 +86,7 @@ class Builder {
         state(key + ".#PREV", ctx_.bool_sort(), f);
         state(key + ".#RUN", ctx_.bool_sort(), f);
         state(key + ".#DONE", ctx_.bool_sort(), f);
-        state(key + ".#E", ctx_.bv_sort(32), ctx_.bv_val(0, 32));
+        state(key + ".#E", ctx_.int_sort(), ctx_.int_val(0));
         break;
       default: break;
     }
@@ -106,9 +106,9 @@ class Builder {
 z3::sort sort_of(z3::context& ctx, plc::Type t) {
   switch (t) {
     case plc::Type::Bool: return ctx.bool_sort();
-    case plc::Type::Int: return ctx.bv_sort(16);
+    case plc::Type::Int:
     case plc::Type::Dint:
-    case plc::Type::Time: return ctx.bv_sort(32);
+    case plc::Type::Time: return ctx.int_sort();
     case plc::Type::Real: return ctx.fpa_sort<32>();
   }
   return ctx.bool_sort();

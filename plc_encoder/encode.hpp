@@ -51,8 +51,9 @@ struct ProgramSystem {
   std::vector<OutputTerm> outputs;
 };
 
-// The Z3 sort of a value of `t`: Bool; INT a 16-bit, DINT and TIME a 32-bit
-// bit-vector (two's complement, wrapping); REAL Float32.
+// The Z3 sort of a value of `t`: Bool; INT, DINT and TIME Int, every result
+// of arithmetic reduced to the type's range (16 or 32 bits, two's complement
+// wrapping); REAL Float32.
 z3::sort sort_of(z3::context& ctx, plc::Type t);
 
 // What the encoding does not cover (a timer called other than once per

@@ -18,10 +18,16 @@ bool is_real(const z3::expr& e) { return e.is_fpa(); }
 z3::expr fp(z3::context& c, Z3_ast a) { return z3::expr(c, a); }
 
 z3::expr less(z3::context& c, const z3::expr& a, const z3::expr& b) {
-  return is_real(a) ? fp(c, Z3_mk_fpa_lt(c, a, b)) : z3::slt(a, b);
+  return is_real(a) ? fp(c, Z3_mk_fpa_lt(c, a, b)) : a < b;
 }
 z3::expr less_eq(z3::context& c, const z3::expr& a, const z3::expr& b) {
-  return is_real(a) ? fp(c, Z3_mk_fpa_leq(c, a, b)) : z3::sle(a, b);
+  return is_real(a) ? fp(c, Z3_mk_fpa_leq(c, a, b)) : a <= b;
+}
+
+// Integer division truncated toward zero, as C's / (Z3's div is Euclidean).
+z3::expr truncated_div(const z3::expr& a, const z3::expr& b) {
+  const z3::expr q = z3::ite(a >= 0, a / z3::abs(b), -((-a) / z3::abs(b)));
+  return z3::ite(b >= 0, q, -q);
 }
 z3::expr equal(z3::context& c, const z3::expr& a, const z3::expr& b) {
   return is_real(a) ? fp(c, Z3_mk_fpa_eq(c, a, b)) : a == b;  // IEEE: NaN equals nothing
@@ -35,12 +41,27 @@ Scan::Scan(z3::context& ctx, const plc::Program& program, std::uint32_t scan_ms)
 z3::expr Scan::literal(const plc::Literal& l) {
   switch (l.type) {
     case plc::Type::Bool: return ctx_.bool_val(l.integer != 0);
-    case plc::Type::Int: return ctx_.bv_val(static_cast<int>(l.integer), 16);
+    case plc::Type::Int:
     case plc::Type::Dint:
-    case plc::Type::Time: return ctx_.bv_val(static_cast<std::int64_t>(static_cast<std::int32_t>(l.integer)), 32);
+    case plc::Type::Time: return ctx_.int_val(static_cast<std::int64_t>(l.integer));
     case plc::Type::Real: return ctx_.fpa_val(l.real);
   }
   return ctx_.bool_val(false);
+}
+
+z3::expr Scan::wrap(plc::Type t, const z3::expr& x) {
+  if (t != plc::Type::Int && t != plc::Type::Dint && t != plc::Type::Time) return x;
+  if (x.is_numeral()) {  // folded at once: most arithmetic of C&E code is on constants
+    std::int64_t v = 0;
+    if (x.is_numeral_i64(v)) {
+      if (t == plc::Type::Int) return ctx_.int_val(static_cast<std::int64_t>(static_cast<std::int16_t>(static_cast<std::uint16_t>(v))));
+      return ctx_.int_val(static_cast<std::int64_t>(static_cast<std::int32_t>(static_cast<std::uint32_t>(v))));
+    }
+  }
+  const std::int64_t half = t == plc::Type::Int ? 32768 : 2147483648LL;
+  const z3::expr h = ctx_.int_val(half), m = ctx_.int_val(2 * half);
+  // Only a value out of range is reduced, so that the common case stays linear and small.
+  return z3::ite(x >= -h && x < h, x, z3::mod(x + h, m) - h);
 }
 
 z3::expr Scan::zero(plc::Type t) {
@@ -68,8 +89,8 @@ z3::expr Scan::eval(const plc::Expr& e, const Scope& scope, Env& env) {
     case K::Member: return at(env, key(scope, e.name) + "." + upper(e.member), e.position);
     case K::Unary: {
       z3::expr a = eval(e.args.at(0), scope, env);
-      if (e.unary == plc::UnaryOp::Not) return a.is_bool() ? !a : ~a;
-      return is_real(a) ? fp(ctx_, Z3_mk_fpa_neg(ctx_, a)) : -a;
+      if (e.unary == plc::UnaryOp::Not) return !a;
+      return is_real(a) ? fp(ctx_, Z3_mk_fpa_neg(ctx_, a)) : wrap(e.type, -a);
     }
     case K::Binary: return binary(e, scope, env);
     case K::Call: return call(e, scope, env);
@@ -82,27 +103,21 @@ z3::expr Scan::binary(const plc::Expr& e, const Scope& scope, Env& env) {
   z3::expr b = eval(e.args.at(1), scope, env);
   using Op = plc::BinaryOp;
   switch (e.binary) {
-    case Op::Or: return a.is_bool() ? a || b : a | b;
-    case Op::Xor: return a.is_bool() ? a != b : a ^ b;
-    case Op::And: return a.is_bool() ? a && b : a & b;
+    case Op::Or: return a || b;
+    case Op::Xor: return a != b;
+    case Op::And: return a && b;
     case Op::Eq: return equal(ctx_, a, b);
     case Op::Ne: return !equal(ctx_, a, b);
     case Op::Lt: return less(ctx_, a, b);
     case Op::Le: return less_eq(ctx_, a, b);
     case Op::Gt: return less(ctx_, b, a);
     case Op::Ge: return less_eq(ctx_, b, a);
-    case Op::Add: return is_real(a) ? fp(ctx_, Z3_mk_fpa_add(ctx_, rne(), a, b)) : a + b;
-    case Op::Sub: return is_real(a) ? fp(ctx_, Z3_mk_fpa_sub(ctx_, rne(), a, b)) : a - b;
-    case Op::Mul: return is_real(a) ? fp(ctx_, Z3_mk_fpa_mul(ctx_, rne(), a, b)) : a * b;
-    case Op::Div: {
-      if (is_real(a)) return fp(ctx_, Z3_mk_fpa_div(ctx_, rne(), a, b));
-      const z3::expr z = ctx_.bv_val(0, a.get_sort().bv_size());
-      return z3::ite(b == z, z, fp(ctx_, Z3_mk_bvsdiv(ctx_, a, b)));  // integer division by 0 gives 0
-    }
-    case Op::Mod: {
-      const z3::expr z = ctx_.bv_val(0, a.get_sort().bv_size());
-      return z3::ite(b == z, z, fp(ctx_, Z3_mk_bvsrem(ctx_, a, b)));  // the sign of the dividend, as C's %
-    }
+    case Op::Add: return is_real(a) ? fp(ctx_, Z3_mk_fpa_add(ctx_, rne(), a, b)) : wrap(e.type, a + b);
+    case Op::Sub: return is_real(a) ? fp(ctx_, Z3_mk_fpa_sub(ctx_, rne(), a, b)) : wrap(e.type, a - b);
+    case Op::Mul: return is_real(a) ? fp(ctx_, Z3_mk_fpa_mul(ctx_, rne(), a, b)) : wrap(e.type, a * b);
+    // The checker admits only constant divisors other than zero (P.5.3).
+    case Op::Div: return is_real(a) ? fp(ctx_, Z3_mk_fpa_div(ctx_, rne(), a, b)) : wrap(e.type, truncated_div(a, b));
+    case Op::Mod: return a - b * truncated_div(a, b);  // the sign of the dividend, as C's %
   }
   throw Unsupported(e.position, "operator not encoded");
 }
@@ -125,7 +140,7 @@ z3::expr Scan::call(const plc::Expr& e, const Scope& scope, Env& env) {
     }
     case plc::Function::Abs:
       if (is_real(v.at(0))) return fp(ctx_, Z3_mk_fpa_abs(ctx_, v[0]));
-      return z3::ite(z3::slt(v[0], ctx_.bv_val(0, v[0].get_sort().bv_size())), -v[0], v[0]);
+      return wrap(e.type, z3::ite(v[0] < 0, -v[0], v[0]));
     case plc::Function::Sel: return z3::ite(v.at(0), v.at(2), v.at(1));
     case plc::Function::Limit: return min(max(v.at(1), v.at(0)), v.at(2));
   }

@@ -67,15 +67,14 @@ void Scan::branch(const plc::Statement& s, const Scope& scope, Env& env) {
 void Scan::case_of(const plc::Statement& s, const Scope& scope, Env& env) {
   ++conditional_;
   const z3::expr selector = eval(s.value, scope, env);
-  const unsigned width = selector.get_sort().bv_size();
   std::vector<z3::expr> conditions;
   std::vector<Env> values;
   for (const auto& arm : s.arms) {
     z3::expr c = ctx_.bool_val(false);
     for (const auto& r : arm.labels) {
-      const z3::expr lo = ctx_.bv_val(static_cast<std::int64_t>(r.low), width);
-      const z3::expr hi = ctx_.bv_val(static_cast<std::int64_t>(r.high), width);
-      c = c || (r.low == r.high ? selector == lo : z3::sle(lo, selector) && z3::sle(selector, hi));
+      const z3::expr lo = ctx_.int_val(static_cast<std::int64_t>(r.low));
+      const z3::expr hi = ctx_.int_val(static_cast<std::int64_t>(r.high));
+      c = c || (r.low == r.high ? selector == lo : lo <= selector && selector <= hi);
     }
     conditions.push_back(c.simplify());
     Env copy = env;
@@ -92,7 +91,7 @@ void Scan::case_of(const plc::Statement& s, const Scope& scope, Env& env) {
 // and, after the loop, the first value beyond it.
 void Scan::for_loop(const plc::Statement& s, const Scope& scope, Env& env) {
   const std::string k = key(scope, s.target);
-  const unsigned width = at(env, k, s.position).get_sort().bv_size();
+  at(env, k, s.position);
   if (s.by == 0) throw Unsupported(s.position, "FOR with a step of 0 never ends");
   const std::int64_t count = s.by > 0 ? (s.to >= s.from ? (s.to - s.from) / s.by + 1 : 0)
                                       : (s.from >= s.to ? (s.from - s.to) / -s.by + 1 : 0);
@@ -102,11 +101,11 @@ void Scan::for_loop(const plc::Statement& s, const Scope& scope, Env& env) {
   ++conditional_;
   std::int64_t i = s.from;
   for (std::int64_t n = 0; n < count; ++n, i += s.by) {
-    env.at(k) = ctx_.bv_val(i, width);
+    env.at(k) = ctx_.int_val(i);
     exec(s.body, scope, env);
   }
   --conditional_;
-  env.at(k) = ctx_.bv_val(i, width);
+  env.at(k) = ctx_.int_val(i);
 }
 
 void Scan::block_call(const plc::Statement& s, const Scope& scope, Env& env) {

@@ -35,6 +35,8 @@ class Scan {
   z3::context& ctx() { return ctx_; }
   z3::expr literal(const plc::Literal& l);
   z3::expr zero(plc::Type t);
+  // An integer result reduced to the range of `t` (two's complement wrapping).
+  z3::expr wrap(plc::Type t, const z3::expr& x);
   z3::expr rne() { return z3::expr(ctx_, Z3_mk_fpa_rne(ctx_)); }
 
   // The key of variable `name` as seen from `scope`.
