@@ -87,8 +87,11 @@ class Binder {
     const auto& t = enc.inputs.tags()[idx];
     const std::string name = "input." + t.name + (bad ? ".bad" : "");
     if (auto v = enc.ts.inputvar(name)) return *v;
-    const z3::sort s = !bad && t.kind == model::TagKind::Analog ? ctx_.fpa_sort<32>() : ctx_.bool_sort();
-    return extra(name, s, ProductProblem::Extra{name, idx, bad});
+    const bool analog = !bad && t.kind == model::TagKind::Analog;
+    const z3::expr v = extra(name, analog ? ctx_.fpa_sort<32>() : ctx_.bool_sort(), ProductProblem::Extra{name, idx, bad});
+    // As the matrix encoder states of its own analog inputs: a scan reads no NaN.
+    if (analog) p_.matrix->ts.add_constraint(name + ".not_nan", !z3::expr(ctx_, Z3_mk_fpa_is_nan(ctx_, v)));
+    return v;
   }
 
   z3::expr extra(const std::string& name, const z3::sort& s, ProductProblem::Extra e) {
