@@ -18,3 +18,14 @@ if(TARGET cemv_plc_check AND TARGET cemv_plc)
   target_compile_definitions(test_plc_check PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   gtest_discover_tests(test_plc_check DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 900)
 endif()
+# The command line: a refutation (exit 1) with its scenario, an incomplete map (exit 2).
+if(TARGET cemv_plc_check AND TARGET cemv_plc)
+  set(PLC_TANK ${PROJECT_SOURCE_DIR}/examples/tank-overfill)
+  cemv_cli_test(NAME cli_plc_check_reset_dominant_exit1 EXIT 1
+    MATCH "XV_101 \\(effect 1 CLOSE_XV101\\) = XV_101: differs in scan 1: matrix 0, program 1.*tank_t100_reset_dominant.st:118:1"
+    COMMAND bash -c "set -o pipefail && \"$1\" plc-check \"$2\"/matrix.json \"$2\"/plc/tank_t100_reset_dominant.st --map \"$2\"/plc/tank_t100.map.json --timeout 5 | tr '\\n' ' '" plc
+            $<TARGET_FILE:cemv> ${PLC_TANK})
+  cemv_cli_test(NAME cli_plc_check_no_map_exit2 EXIT 2
+    MATCH "tank_t100.st: error: operator commands the matrix accepts without a program variable"
+    COMMAND $<TARGET_FILE:cemv> plc-check ${PLC_TANK}/matrix.json ${PLC_TANK}/plc/tank_t100.st)
+endif()
