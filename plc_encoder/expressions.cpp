@@ -60,8 +60,11 @@ z3::expr Scan::wrap(plc::Type t, const z3::expr& x) {
   }
   const std::int64_t half = t == plc::Type::Int ? 32768 : 2147483648LL;
   const z3::expr h = ctx_.int_val(half), m = ctx_.int_val(2 * half);
-  // Only a value out of range is reduced, so that the common case stays linear and small.
-  return z3::ite(x >= -h && x < h, x, z3::mod(x + h, m) - h);
+  // A sum, difference, negation or quotient of values in range is at most one
+  // range away: one correction, no `mod` (which the checker's concrete
+  // evaluator does not take). A product may be further away.
+  if (x.is_app() && x.decl().decl_kind() == Z3_OP_MUL) return z3::ite(x >= -h && x < h, x, z3::mod(x + h, m) - h);
+  return z3::ite(x >= h, x - m, z3::ite(x < -h, x + m, x));
 }
 
 z3::expr Scan::zero(plc::Type t) {
