@@ -64,11 +64,12 @@ if(SOFFICE)
   set_tests_properties(cli_workbook_libreoffice_examples PROPERTIES TIMEOUT 600
     PASS_REGULAR_EXPRESSION "all ${wb_examples} matrices: same signature after LibreOffice re-saved them")
   add_test(NAME cli_workbook_libreoffice_lsst
-    COMMAND bash ${WB_CASES}/libreoffice_lsst.sh $<TARGET_FILE:cemv> ${SOFFICE}
+    COMMAND ${CEMV_WITH_LSST} bash ${WB_CASES}/libreoffice_lsst.sh $<TARGET_FILE:cemv> ${SOFFICE}
             ${CEMV_LSST_DIR}/lsst-tma-interlock-table.csv ${WB_TMP}/libreoffice_lsst
     WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
   set_tests_properties(cli_workbook_libreoffice_lsst PROPERTIES TIMEOUT 600
     PASS_REGULAR_EXPRESSION "LSST saved as XLSX by LibreOffice imports as its CSV: 36 causes, 17 effects, 102 intersections")
+  cemv_external_test(cli_workbook_libreoffice_lsst)
   # A contractor's SIS workbook (docs/workbook.md "Vendor C&E workbooks"), built
   # by LibreOffice from the committed flat ODS as XLSX, ODS and the CSV of its
   # matrix sheet: every variant read right or refused with the cell named.
