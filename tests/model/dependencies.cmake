@@ -5,7 +5,7 @@
 # grep exits 1 when no include breaks the rule.
 set(_cemv_inc "#include *[<\"](\\.\\./)*")
 cemv_cli_test(NAME layout_model_includes_only_model EXIT 1
-  COMMAND grep -rnE "${_cemv_inc}(formats|reports|runtime|encoder|properties|checker|testgen|cli)/"
+  COMMAND grep -rnE "${_cemv_inc}(formats|reports|runtime|encoder|plc|properties|checker|testgen|cli)/"
           ${PROJECT_SOURCE_DIR}/model)
 cemv_cli_test(NAME layout_runtime_includes_only_model EXIT 1
   COMMAND grep -rnE "${_cemv_inc}(formats|reports|encoder|properties|checker|testgen|cli)/"
@@ -13,8 +13,13 @@ cemv_cli_test(NAME layout_runtime_includes_only_model EXIT 1
 cemv_cli_test(NAME layout_encoder_includes_only_model EXIT 1
   COMMAND grep -rnE "${_cemv_inc}(formats|reports|runtime|properties|checker|testgen|cli)/"
           ${PROJECT_SOURCE_DIR}/encoder)
+# plc/ uses model and formats only: never the matrix's runtime or encoder,
+# nor anything above them.
+cemv_cli_test(NAME layout_plc_includes_only_its_row EXIT 1
+  COMMAND grep -rnE "${_cemv_inc}(reports|runtime|encoder|properties|checker|testgen|mutate|diff|response|defeats|cli)/"
+          ${PROJECT_SOURCE_DIR}/plc)
 cemv_cli_test(NAME layout_formats_includes_only_model EXIT 1
-  COMMAND grep -rnE "${_cemv_inc}(reports|runtime|encoder|properties|checker|testgen|cli)/"
+  COMMAND grep -rnE "${_cemv_inc}(reports|runtime|encoder|plc|properties|checker|testgen|cli)/"
           ${PROJECT_SOURCE_DIR}/formats)
 # reports/ may also include checker/result.hpp, the plain data the check
 # printers render (and nothing else of checker/).
