@@ -57,3 +57,12 @@ cemv_cli_test(NAME layout_response_includes_only_its_row EXIT 1
 # test generator, mutation or change comparison.
 cemv_cli_test(NAME layout_defeats_includes_only_its_row EXIT 1
   COMMAND grep -rnE "${_cemv_inc}(runtime|encoder|testgen|mutate|diff|cli)/" ${PROJECT_SOURCE_DIR}/defeats)
+# plc_encoder/ is the program's second semantics: plc/'s AST and model/ only,
+# never the interpreter's files, the matrix's encoder or runtime, nor any
+# consumer (docs/architecture.md "Two independent implementations").
+cemv_cli_test(NAME layout_plc_encoder_includes_only_plc_and_model EXIT 1
+  COMMAND bash -c "grep -rnE '${_cemv_inc}(formats|reports|runtime|encoder|properties|checker|testgen|mutate|diff|response|defeats|plc_check|cli)/|${_cemv_inc}plc/(interpreter|blocks)' ${PROJECT_SOURCE_DIR}/plc_encoder")
+# plc_check/ stands on the checker and both program semantics; never the CLI
+# or another consumer of the checker.
+cemv_cli_test(NAME layout_plc_check_includes_only_its_row EXIT 1
+  COMMAND grep -rnE "${_cemv_inc}(properties|testgen|mutate|diff|response|defeats|cli)/" ${PROJECT_SOURCE_DIR}/plc_check)
