@@ -20,7 +20,6 @@
 #include "formats/scenario.hpp"
 #include "model/text.hpp"
 #include "properties/evaluator.hpp"
-#include "properties/parser.hpp"
 #include "testgen/field_words.hpp"
 
 namespace cemv::testgen {
@@ -623,7 +622,7 @@ FieldSuite generate_field_suite(const model::Matrix& m, const FieldOptions& o) {
 
   // Which objectives each step witnesses (the concrete evaluator on the run).
   std::vector<Objective> all = derive_objectives(m);
-  const properties::PropertyFile file = properties::parse_properties(objectives_file_text(all), m, "objectives");
+  const properties::PropertyFile file = objectives_file(all);
   properties::Evaluator ev(m);
   for (auto& ob : all) s.objectives.push_back({std::move(ob), -1, 0, ""});
   std::vector<bool> elsewhere(s.objectives.size(), false);
