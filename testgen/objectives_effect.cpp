@@ -108,9 +108,13 @@ void intersection_objectives(ObjectiveBuilder& b, const Effect& e) {
     // override on a V/R request (E.3 step 2): a reset-tag edge where the
     // effect has a reset tag (the override command is refused then, O.3),
     // no override running, the effect not bypassed, no output delay running.
+    // The edge is the runtime's (T.4): the tag TRUE now and FALSE in the
+    // cycle before. `rose` also holds in the first cycle for a tag that
+    // starts TRUE, where the runtime sees no edge: a witness there toggles
+    // nothing, and an S cell changed to R goes unseen.
     if (!overridable(x->type) && e.override_time) {
       const Expr ov = b.effect(e, EF::OverrideActive);
-      All toggle = e.reset_tag ? All{Builder::rose(b.tag(*e.reset_tag))}
+      All toggle = e.reset_tag ? All{b.tag(*e.reset_tag), Builder::prev(Builder::negate(b.tag(*e.reset_tag)))}
                                : command(b, model::CommandOp::OverrideEffect, e);
       toggle << Builder::negate(Builder::prev(ov)) << Builder::negate(b.effect(e, EF::Bypassed));
       if (e.output_delay_ms > 0) toggle << Builder::negate(Builder::prev(b.effect(e, EF::OutputDelayRunning)));

@@ -106,6 +106,37 @@ TEST(Objectives, ReferenceObjectivesForEffectsReachedThroughReferences) {
     for (const auto& o : testgen::derive_objectives(example(name))) EXPECT_NE(o.kind, "reference") << name;
 }
 
+// burner-management: an S cell of cause 1 on effect 1, whose override a
+// reset-tag edge toggles. The edge must be the runtime's (T.4): in the first
+// cycle there is none, so a run that starts with the reset tag TRUE and
+// cause 1 tripping toggles nothing and witnesses nothing; the same tag
+// raised a cycle later does.
+TEST(Objectives, NotOverriddenNeedsAnEdgeTheRuntimeSees) {
+  const model::Matrix m = example("burner-management");
+  testgen::Objective o;
+  for (const auto& x : testgen::derive_objectives(m))
+    if (x.id == "intersection.c1.e1.not_overridden") o = x;
+  ASSERT_EQ(o.id, "intersection.c1.e1.not_overridden");
+  const model::InputTable table(m);
+  model::CycleInput tripped = model::default_cycle_input(m);
+  auto set = [&](model::CycleInput& in, const char* tag, float v, bool bad) {
+    in.tags[*table.find(tag)] = {v, bad};
+  };
+  set(tripped, "BSL_201B", 1.0f, true);  // bad quality counts as tripped: cause 1 trips (2oo3 with C)
+  set(tripped, "BSL_201C", 0.0f, false);
+  model::CycleInput reset = tripped;
+  set(reset, "HS_221_RST", 1.0f, false);
+  auto witness = [&](const std::vector<model::CycleInput>& inputs) {
+    const auto run = checker::run_on_runtime(m, inputs);
+    properties::Trace trace;
+    for (std::size_t k = 0; k < run.inputs.size(); ++k) trace.push_back({run.inputs[k], run.observables[k]});
+    const auto e = properties::Evaluator(m).evaluate(o.property, {}, trace);
+    return e.holds ? e.cycle : std::nullopt;
+  };
+  EXPECT_EQ(witness({reset, reset}), std::nullopt);  // held TRUE from start-up: no edge
+  EXPECT_EQ(witness({tripped, reset}), std::optional<std::size_t>(1));
+}
+
 TEST(Objectives, CatalogueNamesTheIssueKinds) {
   model::Matrix m = example("tank-overfill");
   std::set<std::string> kinds;
