@@ -18,6 +18,7 @@
 #include "checker/support.hpp"
 #include "encoder/encode.hpp"
 #include "formats/matrix_json.hpp"
+#include "formats/scenario_writer.hpp"
 #include "model/text.hpp"
 #include "properties/evaluator.hpp"
 #include "properties/monitor.hpp"
@@ -94,7 +95,7 @@ std::string timing_table(const model::Matrix& m, const ConcreteTrace& t,
   }
   for (std::size_t k = 0; k < t.inputs.size(); ++k)
     for (const auto& c : t.inputs[k].commands)
-      out << "  command in cycle " << k + 1 << ": " << command_text(m, c) << "\n";
+      out << "  command in cycle " << k + 1 << ": " << formats::command_text(m, c) << "\n";
   const auto all = model::observables(m);
   for (const auto& o : shown)
     for (std::size_t i = 0; i < all.size(); ++i)
@@ -338,13 +339,14 @@ void PropertyChecker::report_trace(ConcreteTrace runtime_trace, int violation_cy
   for (const auto& o : shown) out.matters.push_back(o.key);
   out.timing_table = timing_table(m_, runtime_trace, shown);
   if (!options_.out_dir.empty()) {
-    std::vector<ScenarioExpectation> expect;
+    std::vector<formats::ExpectedValue> expect;
     const auto all = model::observables(m_);
     for (const auto& o : shown)
       for (std::size_t i = 0; i < all.size(); ++i)
         if (all[i].key == o.key) expect.push_back({o.key, o.type, runtime_trace.observables.back()[i]});
     std::string what = p_.kind == PropertyKind::Reachable ? "Witness of" : "Counterexample to";
-    std::string text = scenario_json(m_, inputs, what + " property " + p_.name + " (" + file_.file_name + ")", expect);
+    std::string text = formats::scenario_text(
+        m_, formats::checked_at_end(inputs, what + " property " + p_.name + " (" + file_.file_name + ")", expect));
     std::filesystem::path path = std::filesystem::path(options_.out_dir) / (file_stem(p_.name) + ".scenario.json");
     write_text_atomically(path, text);
     out.scenario_file = path.string();

@@ -51,15 +51,12 @@ void write_scenarios(const DiffArgs& a, diff::DiffReport& r) {
     const auto& d = *e.result.distinction;
     // Under NEW's own numbers (after a move, the run mapped back and
     // confirmed on NEW by the semantic comparison).
-    std::vector<checker::ScenarioExpectation> expect{{e.new_key, d.type, d.value_a}};
     const std::string file = (std::filesystem::path(a.out_dir) / (file_stem(e.result.group) + ".diff.scenario.json")).string();
-    write_output(file, with_other_defaults(
-                           checker::scenario_json(*r.new_m, e.new_inputs,
-                                                  "Where " + r.new_m->name + " (NEW) differs from OLD: " + e.new_key +
-                                                      " in cycle " + std::to_string(d.cycle + 1) +
-                                                      "; the expectation is OLD's value, so NEW fails it",
-                                                  expect),
-                           *r.new_m, e.new_inputs.front(), *r.old_m));
+    write_output(file, scenario_for_both(*r.new_m, *r.old_m, e.new_inputs,
+                                         "Where " + r.new_m->name + " (NEW) differs from OLD: " + e.new_key +
+                                             " in cycle " + std::to_string(d.cycle + 1) +
+                                             "; the expectation is OLD's value, so NEW fails it",
+                                         {{e.new_key, d.type, d.value_a}}));
     r.scenarios.emplace_back(e.result.group, file);
   }
 }

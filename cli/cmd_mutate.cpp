@@ -52,13 +52,10 @@ struct MutateArgs {
 // the original's value where the mutant differs: it passes on the original
 // and fails on the mutant (a test that kills the mutant).
 std::string killing_scenario(const model::Matrix& m, const mutate::Mutant& mu, const checker::Distinction& d) {
-  std::vector<checker::ScenarioExpectation> expect{{d.key, d.type, d.value_a}};
-  return with_other_defaults(
-      checker::scenario_json(m, d.run_a.inputs,
-                             "Distinguishes mutant " + mu.id + " (" + mu.description + ", " + mu.element + ") from " +
-                                 m.name + ": " + d.key + " in cycle " + std::to_string(d.cycle + 1),
-                             expect),
-      m, d.run_a.inputs.front(), mu.matrix);
+  return scenario_for_both(m, mu.matrix, d.run_a.inputs,
+                           "Distinguishes mutant " + mu.id + " (" + mu.description + ", " + mu.element + ") from " +
+                               m.name + ": " + d.key + " in cycle " + std::to_string(d.cycle + 1),
+                           {{d.key, d.type, d.value_a}});
 }
 
 int run_mutate(const MutateArgs& a) {

@@ -20,7 +20,6 @@
 #include "formats/scenario.hpp"
 #include "properties/evaluator.hpp"
 #include "properties/monitor.hpp"
-#include "properties/parser.hpp"
 #include "testgen/explore.hpp"
 #include "testgen/scenario_writer.hpp"
 #include "testgen/search.hpp"
@@ -324,7 +323,7 @@ TestSuite generate_tests(const model::Matrix& m, const TestgenOptions& options) 
   for (auto& o : all)
     if ((!options.sif || o.sif == *options.sif) && (!options.elements || options.elements->count(o.element)))
       chosen.push_back(std::move(o));
-  const properties::PropertyFile file = properties::parse_properties(objectives_file_text(chosen), m, "objectives");
+  const properties::PropertyFile file = objectives_file(chosen);
   for (auto& o : chosen) {
     ObjectiveResult r;
     r.objective = std::move(o);
