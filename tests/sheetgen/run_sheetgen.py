@@ -98,7 +98,7 @@ def normalise(expected):
     return e
 
 
-def difference(want, got, limit=12):
+def difference(want, got, limit=8):
     """What differs, one line each, the first `limit` of them."""
     out = []
     for table in ("causes", "effects"):
@@ -249,9 +249,13 @@ def main():
     for (info, fmt), r in zip(tasks, results):
         counts[fmt][r["status"]] += 1
         by_status[r["status"]].append((info, fmt, r))
+    # Each misread sheet once, with the formats that read it alike.
+    misread = {}
     for info, fmt, r in by_status["misread"]:
-        print("MISREAD seed %d %s (%s): exit 0 with another matrix; %s" % (info["seed"], fmt, r["file"], info["describe"]))
-        for line in r["diff"]:
+        misread.setdefault((info["seed"], tuple(r["diff"])), (info, []))[1].append(fmt)
+    for (seed, diff), (info, fmts) in sorted(misread.items()):
+        print("MISREAD seed %d %s: exit 0 with another matrix; %s" % (seed, ", ".join(fmts), info["describe"]))
+        for line in diff:
             print("    " + line)
     for info, fmt, r in by_status["failed"]:
         print("FAILED seed %d %s (%s): %s; %s" % (info["seed"], fmt, r["file"], r["why"], info["describe"]))
