@@ -262,6 +262,10 @@ def main():
     if a.verbose:
         for info, fmt, r in by_status["refused"]:
             print("refused seed %d %s: %s" % (info["seed"], fmt, r["why"][:220]))
+    with open(os.path.join(work, "report.json"), "w", encoding="utf-8") as f:
+        json.dump([{"seed": info["seed"], "format": fmt, "file": r.get("file"), "status": r["status"],
+                    "why": r.get("why", ""), "difference": r.get("diff", [])} for (info, fmt), r in zip(tasks, results)],
+                  f, indent=1, ensure_ascii=False)
     total = {k: sum(c[k] for c in counts.values()) for k in ("read", "refused", "misread", "failed")}
     for fmt in FORMATS:
         c = counts[fmt]
