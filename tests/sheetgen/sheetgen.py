@@ -276,7 +276,8 @@ def make_effects(rng, s):
     n = rng.randint(*limits(s)[1])
     s.effects = []
     used = set()
-    base = rng.choice([1, 100, 300, 1000, 2000]) if rng.random() < 0.5 else s.unit_no
+    # Tags of two or more digits, as plants number them (XV-11, P-302, BDV-2017).
+    base = rng.choice([10, 100, 300, 1000, 2000]) if rng.random() < 0.5 else s.unit_no
     k = 0
     for i in range(n):
         letters, action, text = rng.choice(FINAL_ELEMENTS)
