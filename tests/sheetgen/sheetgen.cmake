@@ -19,5 +19,5 @@ if(SOFFICE)
     COMMAND python3 ${_sg}/run_sheetgen.py --cemv $<TARGET_FILE:cemv> --soffice ${SOFFICE}
             --work ${_sg_tmp}/sheets --first 1 --count 200 --jobs 2)
   # LibreOffice on 200 workbooks takes about a minute; give a loaded machine room.
-  set_tests_properties(cli_sheetgen_contractor_sheets PROPERTIES TIMEOUT 900)
+  set_tests_properties(cli_sheetgen_contractor_sheets PROPERTIES TIMEOUT 900 PROCESSORS 2)
 endif()
