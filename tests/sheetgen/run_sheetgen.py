@@ -220,23 +220,31 @@ def main():
     p.add_argument("--count", type=int, default=200)
     p.add_argument("--jobs", type=int, default=2)
     p.add_argument("--verbose", action="store_true", help="print every refusal too")
+    p.add_argument("--reuse", action="store_true",
+                   help="import again the files an earlier run left in --work (another cemv, the same sheets)")
     a = p.parse_args()
     cemv = os.path.abspath(a.cemv)
     work = os.path.abspath(a.work)
-    shutil.rmtree(work, ignore_errors=True)
     gen = os.path.join(work, "gen")
-    os.makedirs(gen)
-    os.makedirs(os.path.join(work, "json"))
     seeds = list(range(a.first, a.first + a.count))
     started = time.monotonic()
-    infos = [sheetgen.write(seed, gen) for seed in seeds]
-    files = [os.path.join(gen, i["stem"] + ".fods") for i in infos]
-    runs = [convert(a.soffice, work, files, to) for to in FORMATS]
-    for to, run in zip(FORMATS, runs):
-        if run.wait(timeout=900) != 0:
-            print("LibreOffice failed converting to %s:" % to)
-            print(open(os.path.join(work, "soffice-%s.log" % to)).read()[-2000:])
-            return 1
+    if a.reuse:
+        shutil.rmtree(os.path.join(work, "json"), ignore_errors=True)
+        os.makedirs(os.path.join(work, "json"))
+        infos = [json.load(open(os.path.join(gen, "sheet_%d.expected.json" % seed), encoding="utf-8"))
+                 for seed in seeds]
+    else:
+        shutil.rmtree(work, ignore_errors=True)
+        os.makedirs(gen)
+        os.makedirs(os.path.join(work, "json"))
+        infos = [sheetgen.write(seed, gen) for seed in seeds]
+        files = [os.path.join(gen, i["stem"] + ".fods") for i in infos]
+        runs = [convert(a.soffice, work, files, to) for to in FORMATS]
+        for to, run in zip(FORMATS, runs):
+            if run.wait(timeout=900) != 0:
+                print("LibreOffice failed converting to %s:" % to)
+                print(open(os.path.join(work, "soffice-%s.log" % to)).read()[-2000:])
+                return 1
 
     converted = time.monotonic()
     tasks = [(info, fmt) for info in infos for fmt in FORMATS]
