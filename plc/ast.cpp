@@ -27,13 +27,7 @@ constexpr Named<Function> kFunctions[] = {{Function::Min, "MIN"},
                                           {Function::Max, "MAX"},
                                           {Function::Abs, "ABS"},
                                           {Function::Sel, "SEL"},
-                                          {Function::Limit, "LIMIT"},
-                                          {Function::BoolToInt, "BOOL_TO_INT"},
-                                          {Function::BoolToDint, "BOOL_TO_DINT"},
-                                          {Function::IntToDint, "INT_TO_DINT"},
-                                          {Function::DintToInt, "DINT_TO_INT"},
-                                          {Function::IntToReal, "INT_TO_REAL"},
-                                          {Function::DintToReal, "DINT_TO_REAL"}};
+                                          {Function::Limit, "LIMIT"}};
 
 template <class E, std::size_t N>
 std::string_view name_of(const Named<E> (&table)[N], E v) {

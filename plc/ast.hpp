@@ -32,9 +32,8 @@ enum class StandardBlock { Ton, Tof, Tp, RTrig, FTrig, Sr, Rs };
 // The pins of the standard blocks (IEC 61131-3 names).
 enum class Pin { In, Pt, Q, Et, Clk, S1, R, S, R1, Q1 };
 
-// The standard functions of the subset (P.5.6), and the type conversions
-// that cannot lose a value or wrap as P.5.3 does (P.5.7).
-enum class Function { Min, Max, Abs, Sel, Limit, BoolToInt, BoolToDint, IntToDint, DintToInt, IntToReal, DintToReal };
+// The standard functions of the subset (P.5.6).
+enum class Function { Min, Max, Abs, Sel, Limit };
 
 enum class PouKind { Program, FunctionBlock };
 

@@ -24,24 +24,8 @@ bool adaptable(const Expr& e) {
              adaptable(e.args[0]) && adaptable(e.args[1]);
     case Expr::Kind::Call:
       if (e.function == Function::Sel) return e.args.size() == 3 && adaptable(e.args[1]) && adaptable(e.args[2]);
-      if (e.function != Function::Min && e.function != Function::Max && e.function != Function::Abs &&
-          e.function != Function::Limit)
-        return false;
       return std::all_of(e.args.begin(), e.args.end(), adaptable);
     default: return false;
-  }
-}
-
-// The argument and result types of a conversion function (P.5.7).
-std::pair<Type, Type> conversion(Function f) {
-  switch (f) {
-    case Function::BoolToInt: return {Type::Bool, Type::Int};
-    case Function::BoolToDint: return {Type::Bool, Type::Dint};
-    case Function::IntToDint: return {Type::Int, Type::Dint};
-    case Function::DintToInt: return {Type::Dint, Type::Int};
-    case Function::IntToReal: return {Type::Int, Type::Real};
-    case Function::DintToReal: return {Type::Dint, Type::Real};
-    default: return {Type::Bool, Type::Bool};
   }
 }
 
@@ -243,18 +227,6 @@ Type ExpressionChecker::call(Expr& e, std::optional<Type> hint) {
       const Type t = check(e.args[0], hint);
       if (!is_numeric(t)) fail(e.position, "ABS of a " + quoted_type(t) + " (docs/plc.md P.5)");
       return t;
-    }
-    case Function::BoolToInt:
-    case Function::BoolToDint:
-    case Function::IntToDint:
-    case Function::DintToInt:
-    case Function::IntToReal:
-    case Function::DintToReal: {
-      arity(1, 1);
-      const auto [from, to] = conversion(e.function);
-      const Type t = check(e.args[0], from);
-      if (t != from) fail(e.args[0].position, name + " takes a " + quoted_type(from) + ", found " + quoted_type(t));
-      return to;
     }
     case Function::Sel: {
       arity(3, 3);

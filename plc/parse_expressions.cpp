@@ -143,8 +143,8 @@ Expr ExpressionParser::function_call(const std::string& name, Position pos) {
     if (refused_function(name))
       fail(pos, "function " + model::in_quotes(upper(name)) + " is not in the subset (docs/plc.md P.5)");
     fail(pos, "unknown function " + model::in_quotes(name) +
-                  " (the subset has MIN, MAX, ABS, SEL, LIMIT and the conversions of P.5.7; a block instance "
-                  "is called as a statement; docs/plc.md P.5)");
+                  " (the subset has MIN, MAX, ABS, SEL, LIMIT; a block instance is called as a statement; "
+                  "docs/plc.md P.5)");
   }
   Expr e;
   e.kind = Expr::Kind::Call;

@@ -76,14 +76,6 @@ Literal call(Function f, const std::vector<Literal>& args) {
       Literal v = less(args[1], args[0]) ? args[0] : args[1];
       return less(args[2], v) ? args[2] : v;
     }
-    // P.5.7: BOOL as 0 or 1; INT to DINT and INT to REAL exactly; DINT to INT
-    // wraps (P.5.3); DINT to REAL rounds to the nearest float, ties to even
-    case Function::BoolToInt: return integer(Type::Int, args[0].integer);
-    case Function::BoolToDint: return integer(Type::Dint, args[0].integer);
-    case Function::IntToDint: return integer(Type::Dint, args[0].integer);
-    case Function::DintToInt: return integer(Type::Int, args[0].integer);
-    case Function::IntToReal:
-    case Function::DintToReal: return real(static_cast<float>(args[0].integer));
   }
   return {};
 }

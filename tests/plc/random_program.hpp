@@ -187,16 +187,6 @@ class Generator {
       }
     }
     const bool integer = t == Type::Int || t == Type::Dint;
-    if (t != Type::Time && pick(8) == 0) {  // a conversion into t
-      static constexpr Function kInto[3][2] = {{Function::BoolToInt, Function::DintToInt},
-                                               {Function::BoolToDint, Function::IntToDint},
-                                               {Function::IntToReal, Function::DintToReal}};
-      const Function f = kInto[t == Type::Int ? 0 : t == Type::Dint ? 1 : 2][pick(2)];
-      const Type from = f == Function::BoolToInt || f == Function::BoolToDint ? Type::Bool
-                        : f == Function::DintToInt || f == Function::DintToReal ? Type::Dint
-                                                                                : Type::Int;
-      return fn(f, {expression(from, depth - 1)});
-    }
     switch (pick(7)) {
       case 0: return bin(coin() ? BinaryOp::Add : BinaryOp::Sub, t);
       case 1:

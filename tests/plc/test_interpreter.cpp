@@ -71,27 +71,6 @@ TEST(PlcInterpreter, FunctionsAndTime) {
   EXPECT_EQ(run.value("t").integer, 30000);
 }
 
-TEST(PlcInterpreter, Conversions) {
-  const Program p = parse_st(
-      test::program("a, b, c : BOOL; n, w : INT; d : DINT := 70000; r, s : REAL; big : DINT := 16777217;",
-                    "n := BOOL_TO_INT(a) + BOOL_TO_INT(b) + BOOL_TO_INT(c); w := DINT_TO_INT(d);"
-                    "r := INT_TO_REAL(n) / 2.0; s := DINT_TO_REAL(big); d := INT_TO_DINT(w) + BOOL_TO_DINT(b);"),
-      "v.st");
-  Interpreter run(p);
-  run.step({}, 10);
-  EXPECT_EQ(run.value("n").integer, 0);
-  EXPECT_EQ(run.value("w").integer, 70000 - 65536);
-  EXPECT_EQ(run.value("s").real, 16777216.0f);  // rounded to the nearest float, ties to even
-  EXPECT_EQ(run.value("d").integer, 70000 - 65536);
-  const Program q = parse_st(test::program("a, b, c : BOOL := TRUE; n : INT; r : REAL;",
-                                           "n := BOOL_TO_INT(a) + BOOL_TO_INT(b) + BOOL_TO_INT(c); r := INT_TO_REAL(n) / 2.0;"),
-                             "w.st");
-  Interpreter vote(q);
-  vote.step({}, 10);
-  EXPECT_EQ(vote.value("n").integer, 3);
-  EXPECT_EQ(vote.value("r").real, 1.5f);
-}
-
 TEST(PlcInterpreter, ControlFlow) {
   const Program p = parse_st(test::program("i, sum, k : INT; mode : DINT := 4;",
                                            "sum := 0;\n"

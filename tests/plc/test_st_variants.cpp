@@ -21,7 +21,7 @@ const char* kWords[] = {"PROGRAM", "END_PROGRAM", "FUNCTION_BLOCK", "END_FUNCTIO
                         "VAR_OUTPUT", "VAR_IN_OUT", "END_VAR", "CONSTANT", "IF", "THEN", "ELSIF", "ELSE", "END_IF",
                         "CASE", "OF", "END_CASE", "FOR", "TO", "BY", "DO", "END_FOR", "AND", "OR", "XOR", "NOT",
                         "MOD", "TRUE", "FALSE", "BOOL", "INT", "DINT", "REAL", "TIME", "TON", "TOF", "TP", "R_TRIG",
-                        "F_TRIG", "SR", "RS", "MIN", "MAX", "ABS", "SEL", "LIMIT", "BOOL_TO_INT", "INT_TO_REAL"};
+                        "F_TRIG", "SR", "RS", "MIN", "MAX", "ABS", "SEL", "LIMIT"};
 
 class Scrambler {
  public:
