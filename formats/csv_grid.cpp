@@ -306,7 +306,8 @@ CsvImportResult import_grid(std::string_view text, const std::string& source, co
   Sheet sheet = read_sheet(text, options.separator, source);
   sheet.extras = extras;
   const Shape shape = find_shape(sheet, source, layout);
-  OrientationDecision orientation = decide_orientation(sheet, shape, requested, source, given_by);
+  OrientationDecision orientation =
+      decide_orientation(sheet, shape, requested, source, given_by, layout.orientation != CsvOrientation::Auto);
   return GridImporter(sheet, shape, std::move(orientation), source, options.matrix_name, layout,
                       options.parameter_trip_sides).run();
 }

@@ -188,12 +188,15 @@ struct OrientationDecision {
 
 // Auto: decided from the corner labels and the id patterns; refused (LoadError
 // naming the id row's line) when they are missing or disagree. Otherwise the
-// requested orientation, with any evidence against it as a disagreement.
+// requested orientation, with any evidence against it as a disagreement;
+// corner labels or attribute headers that all say the other are a refusal,
+// but for corner labels when `over_labels` (a layout's orientation: it says
+// what the sheet cannot, and wins over its labels with a warning).
 // `given_by` names where a requested orientation comes from in messages
 // ("--orientation", "the layout's orientation").
 OrientationDecision decide_orientation(const Sheet& sheet, const Shape& shape,
                                        CsvOrientation requested, const std::string& source,
-                                       const std::string& given_by = "--orientation");
+                                       const std::string& given_by = "--orientation", bool over_labels = false);
 
 // One cause or effect as the sheet has it, then as numbered and named.
 struct SheetElement {

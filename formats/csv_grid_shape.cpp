@@ -357,6 +357,10 @@ Fixed fixed_by(const Sheet& sheet, const SheetLayout& layout, const std::string&
       throw LoadError({{where_of(source, last_line), "the layout places a header in row " + std::to_string(last_line) +
                                                          ", which is no row of the grid (empty, or a legend row)"}});
     f.r0 = *r + 1;
+    // Below the header rows given, the row of the label columns' headers
+    // (Item | Description | Tag No. | ...) when the layout gives no place of
+    // theirs: headers only, never an element.
+    if (columns.empty() && *f.r0 < sheet.rows.size() && headers_only(sheet.rows[*f.r0])) ++*f.r0;
   }
   return f;
 }

@@ -383,3 +383,97 @@ TEST(StackedHeader, ActionVerbsAndTagShapes) {
 }  // namespace
 }  // namespace cemv::formats
 
+namespace cemv::formats {
+namespace {
+
+// A contractor sheet with `EFFECTS` over its attribute columns: the label is
+// nearer the rows, so it says the effects are the rows, against the
+// attribute headers. A layout stating the orientation, or the whole effect
+// header, is obeyed (docs/csv.md "Orientation"); the label is named in a
+// warning.
+const char* kEffectsLabelSheet =
+    "EFFECTS,,,,,,,,\n"
+    "Description,,,,,,,Close inlet valve,Stop feed pump\n"
+    "Action,,,,,,,CLOSE,STOP\n"
+    "Tag No.,,,,,,,XV-301,P-302\n"
+    "SIL,,,,,,,2,1\n"
+    "Item,Description,Tag No.,Set point,EU,Vote,SIL,,\n"
+    "1,Feed drum pressure high-high,PT-101,45,barg,1oo1,2,S,N\n"
+    "2,Feed drum level low-low,LT-102,20,%,1oo1,2,N,\n"
+    "3,Manual shutdown,HS-103,-,-,1oo1,1,S,S\n";
+
+void expect_contractor_effects(const CsvImportResult& r) {
+  const Matrix& m = r.matrix;
+  ASSERT_EQ(m.effects.size(), 2u) << r.summary;
+  ASSERT_EQ(m.causes.size(), 3u) << r.summary;
+  EXPECT_EQ(m.effects[0].tags.at(0).name, "XV-301");
+  EXPECT_EQ(m.effects[0].name, "XV_301");
+  EXPECT_EQ(m.effects[0].sil, 2);
+  EXPECT_EQ(m.effects[0].description, "Close inlet valve");
+  EXPECT_NE(m.effects[0].note.find("Action: CLOSE"), std::string::npos) << m.effects[0].note;
+  EXPECT_EQ(m.effects[1].tags.at(0).name, "P-302");
+  EXPECT_EQ(m.effects[1].sil, 1);
+  EXPECT_EQ(m.intersections.size(), 5u);
+}
+
+bool warned(const CsvImportResult& r, const std::string& what) {
+  return std::any_of(r.warnings.begin(), r.warnings.end(),
+                     [&](const LoadIssue& w) { return w.str().find(what) != std::string::npos; });
+}
+
+TEST(StackedHeaderLayout, WithoutALayoutTheConflictIsRefused) {
+  try {
+    import_csv(kEffectsLabelSheet, "contractor.csv");
+    ADD_FAILURE() << "read without an orientation";
+  } catch (const LoadError& e) {
+    EXPECT_NE(std::string(e.what()).find("the evidence conflicts: the corner labels ('EFFECTS' in line 1, column 1) "
+                                         "say effects-as-rows"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(StackedHeaderLayout, TheLayoutsOrientationIsObeyed) {
+  CsvImportOptions opt;
+  SheetLayout layout;
+  layout.orientation = CsvOrientation::CausesAsRows;
+  opt.sheet_layout = layout;
+  const auto r = import_csv(kEffectsLabelSheet, "contractor.csv", opt);
+  expect_contractor_effects(r);
+  EXPECT_TRUE(warned(r, "the corner labels ('EFFECTS' in line 1, column 1) say effects-as-rows"));
+  EXPECT_TRUE(warned(r, "read as causes-as-rows as the layout's orientation says (a layout wins over the corner labels)"));
+  // The option alone reads it too: the attribute headers are for it.
+  CsvImportOptions option;
+  option.orientation = CsvOrientation::CausesAsRows;
+  expect_contractor_effects(import_csv(kEffectsLabelSheet, "contractor.csv", option));
+}
+
+TEST(StackedHeaderLayout, TheLayoutsEffectHeaderIsObeyed) {
+  CsvImportOptions opt;
+  SheetLayout layout;
+  layout.orientation = CsvOrientation::CausesAsRows;
+  layout.effects = {{SheetAttribute::Description, 2}, {SheetAttribute::Action, 3}, {SheetAttribute::Tag, 4},
+                    {SheetAttribute::Sil, 5}};
+  opt.sheet_layout = layout;
+  const auto r = import_csv(kEffectsLabelSheet, "contractor.csv", opt);
+  expect_contractor_effects(r);
+  EXPECT_TRUE(warned(r, "'EFFECTS' in line 1, column 1) say effects-as-rows; read as causes-as-rows as the layout's "
+                        "orientation says (a layout wins over the corner labels)"));
+  // The row of the causes' headers below the places given is no cause.
+  EXPECT_EQ(r.matrix.causes[0].tags.at(0).name, "PT-101");
+  // Against the attribute headers, a layout's orientation is still refused.
+  layout.effects.clear();
+  layout.orientation = CsvOrientation::EffectsAsRows;
+  opt.sheet_layout = layout;
+  try {
+    import_csv(kEffectsLabelSheet, "contractor.csv", opt);
+    ADD_FAILURE() << "read against the attribute headers";
+  } catch (const LoadError& e) {
+    EXPECT_NE(std::string(e.what()).find("the layout's orientation effects-as-rows would read every cause as an effect"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace cemv::formats
