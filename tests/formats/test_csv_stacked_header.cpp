@@ -12,6 +12,7 @@
 #include <fstream>
 #include <iterator>
 #include <random>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -82,7 +83,9 @@ std::vector<Row> header_rows(std::mt19937& rng) {
   return rows;
 }
 
-Generated generate(unsigned seed, std::vector<Row> rows = {}) {
+// transposable: no banner, SIL as `SIL n`, the causes' headers on a row of
+// their own (what the transposed sheet still says without row labels).
+Generated generate(unsigned seed, std::vector<Row> rows = {}, bool transposable = false) {
   std::mt19937 rng(seed);
   Generated g;
   if (rows.empty()) rows = header_rows(rng);
@@ -99,9 +102,9 @@ Generated generate(unsigned seed, std::vector<Row> rows = {}) {
     e.sil = std::uniform_int_distribution<int>(0, 3)(rng);
     g.effects.push_back(e);
   }
-  const bool banner = coin(rng);
-  const bool shared = coin(rng, 0.4);  // the causes' headers share the last effect header row
-  const bool bare_sil = coin(rng, 0.3);
+  const bool banner = coin(rng) && !transposable;
+  const bool shared = coin(rng, 0.4) && !transposable;  // the causes' headers share the last effect header row
+  const bool bare_sil = coin(rng, 0.3) && !transposable;
   const std::vector<std::string> cause_headers{
       pick(rng, std::vector<std::string>{"Item", "Item No.", "No."}),
       pick(rng, std::vector<std::string>{"Description", "Cause description", "Service"}),
@@ -279,6 +282,67 @@ TEST(StackedHeader, SeededVariantsReadRight) {
       continue;
     }
     expect_effects(r.matrix, g);
+  }
+}
+
+// The sheet with rows and columns swapped: the effects on the rows, their
+// tag, action, SIL and description in label columns.
+std::string transposed(const std::string& csv) {
+  std::vector<std::vector<std::string>> cells;
+  std::size_t width = 0;
+  std::size_t start = 0;
+  while (start < csv.size()) {
+    const std::size_t end = csv.find('\n', start);
+    std::vector<std::string> row;
+    std::string cell;
+    for (char ch : csv.substr(start, end - start) + ",") {
+      if (ch == ',') row.push_back(cell), cell.clear();
+      else cell += ch;
+    }
+    width = std::max(width, row.size());
+    cells.push_back(row);
+    start = end + 1;
+  }
+  std::string out;
+  for (std::size_t c = 0; c < width; ++c) {
+    std::vector<std::string> row;
+    for (const auto& r : cells) row.push_back(c < r.size() ? r[c] : "");
+    out += join(row);
+  }
+  return out;
+}
+
+TEST(StackedHeader, TransposedVariantsReadRight) {
+  for (unsigned seed = 1; seed <= 60; ++seed) {
+    const Generated g = generate(1000 + seed, {}, true);
+    CsvImportResult r;
+    try {
+      r = import(transposed(g.csv));
+    } catch (const LoadError& e) {
+      ADD_FAILURE() << "seed " << seed << " (" << g.describe << ") refused: " << e.what() << "\n" << transposed(g.csv);
+      continue;
+    }
+    EXPECT_EQ(r.orientation, CsvOrientation::EffectsAsRows) << g.describe;
+    expect_effects(r.matrix, g);
+  }
+}
+
+// Without a tag row, a stacked header is refused at its first row, every
+// seed: never an effect named after its SIL, action or description.
+TEST(StackedHeader, SeededVariantsWithoutTagsAreRefused) {
+  for (unsigned seed = 1; seed <= 60; ++seed) {
+    std::mt19937 rng(seed);
+    std::vector<Row> rows{Row::Description};
+    rows.push_back(coin(rng) ? Row::Action : Row::Sil);
+    if (coin(rng)) rows.push_back(rows.back() == Row::Action ? Row::Sil : Row::Action);
+    std::shuffle(rows.begin(), rows.end(), rng);
+    const Generated g = generate(2000 + seed, rows);
+    const std::string all = refusal(g.csv);
+    // At the first value of the first header row (column 8, or further right
+    // when the first effects are never marked).
+    const std::regex place("^contractor\\.csv: line " + std::to_string(g.first_header_line) +
+                           ", column [0-9]+: no row holds the tags or ids of the elements on the columns");
+    EXPECT_TRUE(std::regex_search(all, place)) << "seed " << seed << " (" << g.describe << "): " << all << "\n" << g.csv;
   }
 }
 
