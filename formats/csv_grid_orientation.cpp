@@ -206,7 +206,7 @@ std::string describe(const char* what, const Evidence& ev) {
 
 OrientationDecision decide_orientation(const Sheet& sheet, const Shape& shape,
                                        CsvOrientation requested, const std::string& source,
-                                       const std::string& given_by) {
+                                       const std::string& given_by, bool over_labels) {
   const Evidence labels = corner_labels(sheet, shape);
   const Evidence ids = id_patterns(sheet, shape);
   const Evidence headers = attribute_headers(sheet, shape);
@@ -225,11 +225,13 @@ OrientationDecision decide_orientation(const Sheet& sheet, const Shape& shape,
     // for its axes: read against all of them, every cause would become an
     // effect. Id patterns are only letters, and a given orientation may
     // overrule them.
-    std::set<CsvOrientation> words = labels.says;
+    // A layout's orientation is there to say what the sheet cannot: it wins
+    // over corner labels (a warning names them), not over attribute headers.
+    std::set<CsvOrientation> words = over_labels ? std::set<CsvOrientation>{} : labels.says;
     words.insert(headers.says.begin(), headers.says.end());
     if (!words.empty() && !words.count(requested)) {
       std::string against;
-      if (!labels.items.empty()) join_to(against, "; ", describe("the corner labels", labels));
+      if (!labels.items.empty() && !over_labels) join_to(against, "; ", describe("the corner labels", labels));
       if (!headers.items.empty()) join_to(against, "; ", describe("the attribute headers", headers));
       throw LoadError({{where_of(source, id_line),
                         against + "; " + given_by + " " + name_of(requested) +
@@ -238,10 +240,14 @@ OrientationDecision decide_orientation(const Sheet& sheet, const Shape& shape,
     }
     decision.orientation = requested;
     decision.evidence = "as given by " + given_by;
-    if (says.count(requested == CsvOrientation::CausesAsRows ? CsvOrientation::EffectsAsRows
-                                                             : CsvOrientation::CausesAsRows))
-      decision.disagreement = LoadIssue{where_of(source, id_line),
-                                        found + "; read as " + name_of(requested) + " as " + given_by + " says"};
+    const CsvOrientation other = requested == CsvOrientation::CausesAsRows ? CsvOrientation::EffectsAsRows
+                                                                           : CsvOrientation::CausesAsRows;
+    if (says.count(other))
+      decision.disagreement =
+          LoadIssue{where_of(source, id_line), found + "; read as " + name_of(requested) + " as " + given_by + " says" +
+                                                   (over_labels && labels.says.count(other)
+                                                        ? " (a layout wins over the corner labels)"
+                                                        : "")};
     return decision;
   }
   if (says.size() != 1) {

@@ -1,7 +1,7 @@
 # Spreadsheet import/export (6.6, docs/csv.md).
 add_executable(test_formats_csv ${CMAKE_CURRENT_LIST_DIR}/test_csv.cpp ${CMAKE_CURRENT_LIST_DIR}/test_csv_grid.cpp
   ${CMAKE_CURRENT_LIST_DIR}/test_csv_layouts.cpp ${CMAKE_CURRENT_LIST_DIR}/test_sheet_layout.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/test_csv_vendor.cpp)
+  ${CMAKE_CURRENT_LIST_DIR}/test_csv_vendor.cpp ${CMAKE_CURRENT_LIST_DIR}/test_csv_stacked_header.cpp)
 target_link_libraries(test_formats_csv PRIVATE cemv_formats GTest::gtest_main)
 target_compile_definitions(test_formats_csv PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}" CEMV_LSST_DIR="${CEMV_LSST_DIR}")
 gtest_discover_tests(test_formats_csv DISCOVERY_MODE PRE_TEST)

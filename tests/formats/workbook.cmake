@@ -93,3 +93,14 @@ cemv_cli_test(NAME cli_export_workbook_unwritable EXIT 2 MATCH "^error: /no/such
   COMMAND $<TARGET_FILE:cemv> export-workbook ${_wb_tank} -o /no/such/dir/x.ods)
 cemv_cli_test(NAME cli_import_workbook_stdin EXIT 0 MATCH "<stdin>: note: read 4 causes, 3 effects and 8 intersections from the six tables"
   COMMAND bash -c "$0 export-workbook ${_wb_tank} -o ${WB_TMP}/stdin.xlsx && $0 import-workbook - -o ${WB_TMP}/stdin.json < ${WB_TMP}/stdin.xlsx" $<TARGET_FILE:cemv>)
+
+# The stacked effect headers of docs/csv.md "Stacked effect header", saved by
+# LibreOffice as XLSX and ODS: read as their CSV, the output tags as the tags.
+if(SOFFICE)
+  add_test(NAME cli_workbook_libreoffice_stacked_headers
+    COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/stacked_cases/stacked_workbooks.sh $<TARGET_FILE:cemv> ${SOFFICE}
+            ${CMAKE_CURRENT_LIST_DIR}/stacked_cases ${WB_TMP}/libreoffice_stacked
+    WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+  set_tests_properties(cli_workbook_libreoffice_stacked_headers PROPERTIES TIMEOUT 600
+    PASS_REGULAR_EXPRESSION "stacked effect headers: all 5 variants read alike from CSV, XLSX and ODS")
+endif()
