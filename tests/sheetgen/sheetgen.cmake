@@ -11,7 +11,7 @@ file(MAKE_DIRECTORY ${_sg_tmp})
 add_test(NAME sheetgen_reproducible
   COMMAND bash -c "rm -rf $1/a $1/b && python3 $0 --first 1 --count 25 --out $1/a >/dev/null && python3 $0 --first 1 --count 25 --out $1/b >/dev/null && diff -r $1/a $1/b && echo 'same 50 files from the same seeds'"
           ${_sg}/sheetgen.py ${_sg_tmp}/reproducible)
-set_tests_properties(sheetgen_reproducible PROPERTIES PASS_REGULAR_EXPRESSION "same 50 files from the same seeds")
+set_tests_properties(sheetgen_reproducible PROPERTIES TIMEOUT 120 PASS_REGULAR_EXPRESSION "same 50 files from the same seeds")
 
 find_program(SOFFICE soffice)
 if(SOFFICE)
