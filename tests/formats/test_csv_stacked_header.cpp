@@ -583,3 +583,25 @@ TEST(StackedHeaderBanner, TheLeftLabelOfABannerNamesTheRows) {
 
 }  // namespace
 }  // namespace cemv::formats
+
+namespace cemv::formats {
+namespace {
+
+// A group's tags all in its first row's cell, an empty row below (tests/sheetgen
+// seeds 92, 140, 187): the group is that row; the empty row is not one of its.
+TEST(StackedHeaderGroups, AllTagsInOneCellMakeAGroupOfOneRow) {
+  const std::string csv =
+      ",,,,Close valve,Stop pump\n"
+      "Item,Description,Tag,Voting,1,2\n"
+      "1,Fire detected,\"BS-1A, BS-1B, BS-1C\",3oo3,S,N\n"
+      ",,,,,\n"
+      "2,Level low,LT-2,1oo1,,N\n";
+  const auto r = import_csv(csv, "groups.csv");
+  ASSERT_EQ(r.matrix.causes.size(), 2u) << r.summary;
+  EXPECT_EQ(r.matrix.causes[0].tags.size(), 3u);
+  EXPECT_EQ(r.matrix.causes[0].function, model::CauseFunction::And);
+  EXPECT_EQ(r.matrix.intersections.size(), 3u);
+}
+
+}  // namespace
+}  // namespace cemv::formats
