@@ -541,3 +541,67 @@ TEST(StackedHeaderLayout, TheLayoutsEffectHeaderIsObeyed) {
 
 }  // namespace
 }  // namespace cemv::formats
+
+namespace cemv::formats {
+namespace {
+
+// A banner row, `CAUSES` over few label columns and `EFFECTS` over the data,
+// above a tall stacked header: the left label names the rows whatever the
+// distances (it is nearer the column headers here). Found by the seeded
+// contractor sheets of tests/sheetgen (seeds 4, 24, 29, 39, 43, ...).
+TEST(StackedHeaderBanner, TheLeftLabelOfABannerNamesTheRows) {
+  const std::string csv =
+      "CAUSES,,,EFFECTS,,\n"
+      "Description,,,Close inlet valve,Stop pump,Open vent\n"
+      "Action,,,CLOSE,STOP,OPEN\n"
+      "Tag No.,,,XV-301,P-302,XV-303\n"
+      "SIL,,,2,1,1\n"
+      "Item,Description,Tag No.,,,\n"
+      "1,Pressure high-high,PT-101,S,N,\n"
+      "2,Level low-low,LT-102,,N,S\n";
+  const auto r = import_csv(csv, "banner.csv");
+  EXPECT_EQ(r.orientation, CsvOrientation::CausesAsRows);
+  ASSERT_EQ(r.matrix.effects.size(), 3u);
+  EXPECT_EQ(r.matrix.effects[2].tags.at(0).name, "XV-303");
+  EXPECT_NE(r.summary.find("from the corner labels ('EFFECTS' in line 1, column 4; 'CAUSES' in line 1, column 1)"),
+            std::string::npos)
+      << r.summary;
+  // The labels in the other order name the other axis, against the attribute
+  // headers: refused.
+  std::string swapped = csv;
+  swapped.replace(0, 17, "EFFECTS,,,CAUSES,");
+  try {
+    import_csv(swapped, "banner.csv");
+    ADD_FAILURE() << "read against the banner";
+  } catch (const LoadError& e) {
+    EXPECT_NE(std::string(e.what()).find("the corner labels ('CAUSES' in line 1, column 4; 'EFFECTS' in line 1, "
+                                         "column 1) say effects-as-rows"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace cemv::formats
+
+namespace cemv::formats {
+namespace {
+
+// A group's tags all in its first row's cell, an empty row below (tests/sheetgen
+// seeds 92, 140, 187): the group is that row; the empty row is not one of its.
+TEST(StackedHeaderGroups, AllTagsInOneCellMakeAGroupOfOneRow) {
+  const std::string csv =
+      ",,,,Close valve,Stop pump\n"
+      "Item,Description,Tag,Voting,1,2\n"
+      "1,Fire detected,\"BS-1A, BS-1B, BS-1C\",3oo3,S,N\n"
+      ",,,,,\n"
+      "2,Level low,LT-2,1oo1,,N\n";
+  const auto r = import_csv(csv, "groups.csv");
+  ASSERT_EQ(r.matrix.causes.size(), 2u) << r.summary;
+  EXPECT_EQ(r.matrix.causes[0].tags.size(), 3u);
+  EXPECT_EQ(r.matrix.causes[0].function, model::CauseFunction::And);
+  EXPECT_EQ(r.matrix.intersections.size(), 3u);
+}
+
+}  // namespace
+}  // namespace cemv::formats
