@@ -126,8 +126,9 @@ struct TestgenOptions {
 };
 
 // Throws checker::InternalError when a test does not replay green on the
-// runtime (never a silent pass), checker::Interrupted when the options'
-// cancel token ends the run first.
+// runtime (never a silent pass). When the options' cancel token ends the run
+// first, the suite holds the tests made until then and every objective not
+// decided is undecided ("time limit").
 TestSuite generate_tests(const model::Matrix& m, const TestgenOptions& options = {});
 
 // ---- replay -----------------------------------------------------------------
