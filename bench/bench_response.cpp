@@ -88,8 +88,7 @@ void BM_LongDelayPlainBmc(benchmark::State& state, model::Matrix m, int cause, i
   response::Path path;
   for (const auto& p : response::response_paths(m, {}))
     if (p.effect == effect && p.causes == std::vector<int>{cause}) path = p;
-  auto file = properties::parse_properties(
-      response::response_property_text(m, path, response::Mode::Normal, t - 1, "bmc"), m, "bmc");
+  auto file = response::response_property(m, path, response::Mode::Normal, t - 1, "bmc");
   const auto& prop = file.properties.at(0);
   checker::ProverResult r;
   for (auto _ : state) {

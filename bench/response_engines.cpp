@@ -34,6 +34,7 @@
 #include "checker/property_problem.hpp"
 #include "checker/reduce.hpp"
 #include "formats/matrix_json.hpp"
+#include "properties/build.hpp"
 #include "properties/evaluator.hpp"
 #include "properties/parser.hpp"
 #include "response/paths.hpp"
@@ -98,7 +99,7 @@ int main(int argc, char** argv) {
       if (auto reset = response::demand_run_after_reset(m, path, mode, t)) run = *reset;
     auto trace = checker::run_on_runtime(m, run);
     if (std::getenv("JUDGE")) {  // the concrete evaluator's verdict on the run
-      auto file = properties::parse_properties(response::response_property_text(m, path, mode, t, "probe"), m, "probe");
+      auto file = response::response_property(m, path, mode, t, "probe");
       properties::Trace pt;
       for (std::size_t k = 0; k < trace.inputs.size(); ++k) pt.push_back({trace.inputs[k], trace.observables[k]});
       auto e = properties::Evaluator(m).evaluate(file, pt).at(0);
@@ -137,27 +138,29 @@ int main(int argc, char** argv) {
   }
   // PROPERTY=FILE: that property file's first property instead of the
   // path's (the same text at T and T - 1).
-  auto property_text = [&](long long bound) {
+  auto property_file = [&](long long bound) {
     if (const char* f = std::getenv("PROPERTY")) {
       std::ifstream in(f);
-      return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+      return properties::parse_properties(
+          std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()), m, f);
     }
-    return response::response_property_text(m, path, mode, bound, "probe");
+    return response::response_property(m, path, mode, bound, "probe");
   };
+  const model::InputTable inputs(m);
   if (std::getenv("SHOW_PROPERTY")) {
     if (std::getenv("SHOW_PROPERTY")[0] == '2') {  // the member lemmas, and the bound assuming them
       auto lemmas = response::member_lemmas(m, path, mode, t, "probe.members");
       if (!lemmas) return 1;
-      std::cout << lemmas->property_text;
-      std::cerr << response::response_property_text(m, path, mode, t, "probe", lemmas->terms);
+      std::cout << properties::build::file_text(lemmas->file, inputs);
+      std::cerr << properties::build::file_text(response::response_property(m, path, mode, t, "probe", lemmas->terms),
+                                                inputs);
       return 0;
     }
-    std::cout << response::response_property_text(m, path, mode, t, "probe");
+    std::cout << properties::build::file_text(response::response_property(m, path, mode, t, "probe"), inputs);
     return 0;
   }
   if (std::getenv("SHOW_CHECK")) {
-    auto file = properties::parse_properties(
-        response::response_property_text(m, path, mode, t, "probe"), m, "probe");
+    auto file = response::response_property(m, path, mode, t, "probe");
     checker::CheckOptions o;
     o.budgets.engine = work;
     o.support = false;
@@ -175,8 +178,7 @@ int main(int argc, char** argv) {
     return 0;
   }
   for (long long bound : {t, t - 1}) {
-    auto file = properties::parse_properties(
-        property_text(bound), m, "probe");
+    auto file = property_file(bound);
     const auto& prop = file.properties.at(0);
     auto make = checker::property_problem(m, file, prop);
     for (const auto& engine : engines) {

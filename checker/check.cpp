@@ -142,15 +142,20 @@ CheckResult check_properties(const model::Matrix& m, const std::vector<propertie
     }
   });
 
-  // 3. Support.
-  std::vector<Job*> proofs;
-  for (const auto& members : open)
+  // 3. Support, a cone group at a time as the decisions were, each member's
+  // from its own proof (checker/property_support.cpp).
+  std::vector<std::vector<Job*>> proofs;
+  for (const auto& members : open) {
+    std::vector<Job*> group;
     for (Job* j : members)
-      if (!j->done && j->checker->needs_support(*j->result)) proofs.push_back(j);
-  queue.run(proofs.size(), [&](std::size_t i) {
-    Job& j = *proofs[i];
-    j.checker->find_support(*j.result, j.clock.limits(cancel));
-    report(j);
+      if (!j->done && j->checker->needs_support(*j->result)) group.push_back(j);
+    if (!group.empty()) proofs.push_back(std::move(group));
+  }
+  queue.run(proofs.size(), [&](std::size_t g) {
+    for (Job* j : proofs[g]) {
+      j->checker->find_support(*j->result, j->clock.limits(cancel));
+      report(*j);
+    }
   });
 
   for (auto& j : jobs) {
@@ -170,6 +175,7 @@ CheckResult check_properties(const model::Matrix& m, const std::vector<propertie
     }
   }
   result.interrupted = cancel.cancelled();
+  result.support_mode = options.support ? options.support_mode : SupportMode::Off;
   if (options.standard) result.unsupported = unsupported_elements(m, result.properties);
   return result;
 }

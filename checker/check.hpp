@@ -35,7 +35,7 @@ struct CheckBudgets {
   Work quick = 2 * kMega;     // the quick k-induction before the engines
   Work shrink = kMega;        // the solver's pass of making a counterexample readable (checker/shrink.hpp)
   Work vacuity = 4 * kMega;   // each engine of a vacuity question
-  Work support = 2 * kMega;   // each engine of a support trial
+  Work support = 2 * kMega;   // the core's obligations of a proof; each engine of a --support full trial
 };
 
 struct CheckOptions {
@@ -48,7 +48,8 @@ struct CheckOptions {
   int shard_index = 1;              // --shard i/n: 1-based i
   int shard_count = 1;
   std::string out_dir;              // counterexample scenarios go here ("" = nowhere)
-  bool support = true;              // compute the support of proofs
+  bool support = true;              // compute the support of proofs (false: as SupportMode::Off)
+  SupportMode support_mode = SupportMode::Core;  // --support: how (checker/result.hpp)
   bool standard = false;            // the properties are the standard set
   CheckBudgets budgets;
   // The engines that decide each property, in order (empty = the

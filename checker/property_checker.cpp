@@ -18,6 +18,7 @@
 #include "checker/support.hpp"
 #include "encoder/encode.hpp"
 #include "formats/matrix_json.hpp"
+#include "formats/scenario_writer.hpp"
 #include "model/text.hpp"
 #include "properties/evaluator.hpp"
 #include "properties/monitor.hpp"
@@ -94,7 +95,7 @@ std::string timing_table(const model::Matrix& m, const ConcreteTrace& t,
   }
   for (std::size_t k = 0; k < t.inputs.size(); ++k)
     for (const auto& c : t.inputs[k].commands)
-      out << "  command in cycle " << k + 1 << ": " << command_text(m, c) << "\n";
+      out << "  command in cycle " << k + 1 << ": " << formats::command_text(m, c) << "\n";
   const auto all = model::observables(m);
   for (const auto& o : shown)
     for (std::size_t i = 0; i < all.size(); ++i)
@@ -129,30 +130,6 @@ Judgement judge(const model::Matrix& m, const properties::PropertyFile& f, const
     j.cycle = static_cast<int>(*ev.cycle);
   }
   return j;
-}
-
-// The input tags a property reads are resolved to positions in the matrix's
-// input table (properties/ast.hpp). A support trial deletes elements, and a
-// deleted bypass, inhibit or reset tag leaves the table, moving the positions
-// after it: rewrite them for the trial matrix. False when a tag the property
-// reads is gone (the element cannot be deleted without changing the property).
-bool remap_inputs(Expr& e, const model::InputTable& from, const model::InputTable& to) {
-  if (e.kind == Expr::Kind::InputValue || e.kind == Expr::Kind::InputBad) {
-    auto index = to.find(from.tags()[e.input].name);
-    if (!index) return false;
-    e.input = *index;
-  }
-  for (auto& a : e.args)
-    if (!remap_inputs(a, from, to)) return false;
-  return true;
-}
-
-bool remap_inputs(properties::PropertyFile& f, properties::Property& p, const model::InputTable& from,
-                  const model::InputTable& to) {
-  bool ok = remap_inputs(p.body, from, to) && remap_inputs(p.trigger, from, to) && remap_inputs(p.response, from, to);
-  for (auto& a : p.assumptions) ok = ok && remap_inputs(a.expr, from, to);
-  for (auto& a : f.assumptions) ok = ok && remap_inputs(a.expr, from, to);
-  return ok;
 }
 
 }  // namespace
@@ -310,6 +287,7 @@ bool PropertyChecker::early_answer(PropertyResult& out) {
     // fresh context (checker/cone_group.hpp).
     const ProverResult& r = *early_.proof;
     sliced_ = true;
+    proof_ = r;
     out.method = r.method_text();
     out.depth = r.k;
     out.work = r.work;
@@ -338,13 +316,14 @@ void PropertyChecker::report_trace(ConcreteTrace runtime_trace, int violation_cy
   for (const auto& o : shown) out.matters.push_back(o.key);
   out.timing_table = timing_table(m_, runtime_trace, shown);
   if (!options_.out_dir.empty()) {
-    std::vector<ScenarioExpectation> expect;
+    std::vector<formats::ExpectedValue> expect;
     const auto all = model::observables(m_);
     for (const auto& o : shown)
       for (std::size_t i = 0; i < all.size(); ++i)
         if (all[i].key == o.key) expect.push_back({o.key, o.type, runtime_trace.observables.back()[i]});
     std::string what = p_.kind == PropertyKind::Reachable ? "Witness of" : "Counterexample to";
-    std::string text = scenario_json(m_, inputs, what + " property " + p_.name + " (" + file_.file_name + ")", expect);
+    std::string text = formats::scenario_text(
+        m_, formats::checked_at_end(inputs, what + " property " + p_.name + " (" + file_.file_name + ")", expect));
     std::filesystem::path path = std::filesystem::path(options_.out_dir) / (file_stem(p_.name) + ".scenario.json");
     write_text_atomically(path, text);
     out.scenario_file = path.string();
@@ -421,55 +400,8 @@ void PropertyChecker::settle_vacuity(PropertyResult& r, const WitnessPool& known
 }
 
 bool PropertyChecker::needs_support(const PropertyResult& r) const {
-  return options_.support && sliced_ && r.verdict == PropertyVerdict::Proved;
-}
-
-void PropertyChecker::find_support(PropertyResult& out, const Limits& limits) const {
-  if (!needs_support(out)) return;
-  const auto start = Clock::now();
-  std::vector<Deletion> candidates = candidate_deletions(m_, roots_);
-  const model::InputTable table(m_);
-  // The problem of the property on an edited matrix, its input tags found
-  // again there; nullopt when a tag it reads is gone.
-  struct Trial {
-    properties::PropertyFile file;
-    properties::Property property;
-  };
-  auto prove = [&](const model::Matrix& trial, bool checked) -> std::optional<ProverResult> {
-    auto t = std::make_shared<Trial>(Trial{file_, p_});
-    if (!remap_inputs(t->file, t->property, table, model::InputTable(trial))) return std::nullopt;
-    ProblemOptions o;
-    o.modify_encoding = options_.modify_encoding;
-    PortfolioOptions po;
-    po.preferred = preferred_;
-    po.quick_work = options_.budgets.quick;
-    po.engine_work = options_.budgets.support;
-    // A trial only steers the search: its answer is not reported, so it
-    // skips the re-check and the readable counterexample. The support found
-    // is proved once more below, checked.
-    po.recheck = checked;
-    po.shrink_work = 0;
-    return Portfolio(property_problem(trial, t->file, t->property, o), po).run(limits);
-  };
-  auto reprove = [&](const model::Matrix& trial) {
-    if (limits.interrupted()) return ReproveOutcome::Undecided;
-    std::optional<ProverResult> r = prove(trial, false);
-    if (!r || r->verdict == Verdict::Falsified) return ReproveOutcome::NotProved;
-    return r->verdict == Verdict::Proved ? ReproveOutcome::Proved : ReproveOutcome::Undecided;
-  };
-  model::Matrix reduced = m_;
-  out.support = minimal_support(m_, candidates, reprove, out.support_minimal, &reduced);
-  out.seconds += seconds_since(start);
-  if (out.support.size() == candidates.size()) return;  // nothing deleted: the proof above stands
-  std::optional<ProverResult> r = prove(reduced, true);
-  if (r && r->verdict == Verdict::Proved) return;
-  if (r && r->verdict == Verdict::Falsified)
-    throw InternalError("the support of property " + p_.name + " does not carry its proof: a trial was proved, " +
-                        "its re-proof is falsified");
-  // Undecided within the limits: claim nothing smaller than the whole cone.
-  out.support.clear();
-  for (const auto& d : candidates) out.support.push_back(d.element);
-  out.support_minimal = false;
+  return options_.support && options_.support_mode != SupportMode::Off && sliced_ &&
+         r.verdict == PropertyVerdict::Proved && proof_.has_value();
 }
 
 PropertyResult PropertyChecker::decide(const Limits& limits) {
@@ -532,6 +464,7 @@ PropertyResult PropertyChecker::decide(const Limits& limits) {
         return finish(p_.kind == PropertyKind::Reachable ? PropertyVerdict::Reachable : PropertyVerdict::Falsified);
       case Verdict::Proved:
         out.invariant = r.invariant.text();
+        proof_ = r;
         return finish(p_.kind == PropertyKind::Reachable ? PropertyVerdict::Unreachable : PropertyVerdict::Proved);
       case Verdict::Unknown:
         out.unknown = r.reason;

@@ -32,6 +32,7 @@
 #include "checker/random_runs.hpp"
 #include "checker/result.hpp"
 #include "checker/shrink.hpp"
+#include "checker/support.hpp"
 #include "checker/witness_pool.hpp"
 #include "properties/ast.hpp"
 
@@ -56,6 +57,9 @@ class PropertyChecker {
   // cone group, asked after `known` and given what this one finds.
   void settle_vacuity(PropertyResult& r, const WitnessPool& known, WitnessPool& group, const Limits& limits) const;
   bool needs_support(const PropertyResult& r) const;
+  // --support core: the cells of the proof's unsat core, re-checked on the
+  // matrix without the others; full: that core minimised by deletion
+  // (docs/checker.md, "Support").
   void find_support(PropertyResult& r, const Limits& limits) const;
   // The runtime runs decide() made (its directed runs, the replayed
   // counterexample or witness), as property traces: witnesses of other
@@ -78,6 +82,15 @@ class PropertyChecker {
   // encoding is an InternalError (else the run is left to the engines).
   bool answered_by_run(const std::vector<model::CycleInput>& inputs, Method method, bool agree_or_throw,
                        PropertyResult& out) const;
+  // The candidates (candidate_deletions) the proof's unsat core needs, or
+  // every candidate when no core is found; `reduced`: the matrix without the
+  // others, on which the proof was re-checked.
+  std::vector<SupportElement> core_support(const std::vector<Deletion>& candidates, model::Matrix& reduced,
+                                           const Limits& limits) const;
+  // Whether the property is proved on `trial` (a matrix with cells deleted),
+  // `checked`: re-checked as every reported answer; nullopt when a tag the
+  // property reads is gone.
+  std::optional<ProverResult> prove_on(const model::Matrix& trial, bool checked, const Limits& limits) const;
   // The group's answer, when it has one.
   bool early_answer(PropertyResult& out);
   // A confirmed violation of the runtime, cut after its first violating
@@ -101,6 +114,7 @@ class PropertyChecker {
   PreferredValue preferred_;   // the plant at rest, for readable counterexamples
   RunSpace cone_space_;        // the inputs and commands of the cone, for random witnesses
   EarlyAnswer early_;
+  std::optional<ProverResult> proof_;  // decide()'s proof, re-checked: what the support's core asks of
   mutable std::vector<properties::Trace> runs_;
 };
 

@@ -50,7 +50,9 @@ ProblemFactory property_problem(const model::Matrix& m, const properties::Proper
   const properties::Property* property = &p;
   const properties::PropertyFile* f = &file;
   return [m, roots, property, f, options](z3::context& ctx) {
-    std::shared_ptr<encoder::Encoding> enc = encoder::encode(ctx, m, roots);
+    encoder::EncodeOptions eo;
+    eo.guard_cells = options.guard_cells;
+    std::shared_ptr<encoder::Encoding> enc = encoder::encode(ctx, m, roots, eo);
     if (options.modify_encoding) options.modify_encoding(*enc);
     properties::Monitor mon = properties::compile_monitor(*enc, *property, f->assumptions);
     // The encoder already excludes NaN; the range goes here, as comparisons

@@ -42,6 +42,9 @@ struct ProblemOptions {
   // encoding's own Evaluator, the monitor included, so that the past-time
   // operators see them: how a test is extended.
   std::vector<model::CycleInput> prefix;
+  // Each removable cell guarded by an activation literal
+  // (encoder::EncodeOptions::guard_cells): the support's core query.
+  bool guard_cells = false;
   // Applied to every encoding before the monitor is compiled (Pono's modifiers/).
   std::function<void(encoder::Encoding&)> modify_encoding;
 };

@@ -53,6 +53,22 @@ struct SupportElement {
   std::string description;
 };
 
+// How the support of proofs is found (docs/checker.md, "Support"; `cemv check
+// --support`): not at all; the unsat core of the proof's obligations over
+// activation literals of the cells, re-checked on the matrix without the
+// others (sound, maybe not minimal); that core then minimised by deleting its
+// cells one at a time under a budget of work (minimal when every trial
+// decided).
+enum class SupportMode { Off, Core, Full };
+inline const char* to_string(SupportMode m) {
+  switch (m) {
+    case SupportMode::Off: return "off";
+    case SupportMode::Core: return "core";
+    case SupportMode::Full: return "full";
+  }
+  return "off";
+}
+
 // A concrete run: the cycle inputs and the runtime's observables (in
 // model::observables order) after each cycle.
 struct ConcreteTrace {
@@ -119,6 +135,7 @@ struct CheckResult {
   std::vector<PropertyResult> properties;
   std::vector<SupportElement> unsupported;  // --standard: elements no property depends on
   bool interrupted = false;           // the overall time limit ended the run
+  SupportMode support_mode = SupportMode::Off;  // how the supports of the proofs were found
 };
 
 }  // namespace cemv::checker

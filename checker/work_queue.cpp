@@ -22,6 +22,11 @@ std::size_t WorkQueue::run(std::size_t n, const std::function<void(std::size_t)>
       try {
         task(i);
         ++finished;
+      } catch (const Interrupted&) {
+        // The wall clock or the token ended the task (--timeout,
+        // --total-timeout): it did not finish, and that is no failure.
+        // What it left in its slot is the caller's to report as undecided.
+        continue;
       } catch (...) {
         std::lock_guard<std::mutex> lock(mutex);
         if (!failure) failure = std::current_exception();

@@ -3,8 +3,9 @@
 // the run's token, so the other workers stop at their next check (every
 // engine polls the token through Limits), and is rethrown to the caller once
 // every worker has returned. The token also carries the run's wall-clock
-// bound (--total-timeout): tasks not started by then are skipped, and the
-// caller reports them as not decided. What a task computes must not depend
+// bound (--total-timeout): tasks not started by then are skipped, a task
+// that throws Interrupted ends unfinished (not a failure), and the caller
+// reports both as not decided. What a task computes must not depend
 // on which worker runs it or when: results go to the task's own slot.
 #pragma once
 
@@ -20,7 +21,8 @@ class WorkQueue {
   WorkQueue(int jobs, CancelToken& cancel) : jobs_(jobs < 1 ? 1 : jobs), cancel_(cancel) {}
   // task(i) for every i in [0, n) (in order of i, spread over the workers),
   // unless the token is cancelled first. Returns the number of tasks that
-  // ran to their end; rethrows the first exception a task threw.
+  // ran to their end; rethrows the first exception a task threw, other than
+  // Interrupted (checker/limits.hpp), which leaves its task unfinished.
   std::size_t run(std::size_t n, const std::function<void(std::size_t)>& task);
 
  private:

@@ -55,7 +55,15 @@ struct CheckArgs {
   bool expect = false;        // --expect: verdicts against the `# expect:` comments
   std::string baseline_file;  // --baseline FILE: verdicts against an earlier cemv-result/1
   std::string cache_dir;      // --cache DIR: verdicts kept between runs
+  std::string support = "core";  // --support full|core|off (docs/checker.md, "Support")
 };
+
+// --support's word as the checker's mode (CLI::IsMember checked it).
+checker::SupportMode support_mode(const std::string& word) {
+  if (word == "full") return checker::SupportMode::Full;
+  if (word == "off") return checker::SupportMode::Off;
+  return checker::SupportMode::Core;
+}
 
 // A usage error found after parsing (exit 2).
 struct BadArguments : std::runtime_error {
@@ -205,6 +213,7 @@ int run_check(const CheckArgs& a) {
   options.shard_count = shard_count;
   options.out_dir = a.out_dir;
   options.standard = a.standard;
+  options.support_mode = support_mode(a.support);
   // --total-timeout cancels through the run's one token: every engine polls
   // it, the work queue starts nothing after it, and the checker returns with
   // what it decided; the rest is reported unknown ("time limit").
@@ -228,7 +237,9 @@ int run_check(const CheckArgs& a) {
       return confirms(m, f, p, r);
     };
 #endif
-    cache.emplace(a.cache_dir, build_version(), m, skeleton.matrix_signature, a.out_dir, confirm);
+    // A result depends on the build and on how its support was found.
+    cache.emplace(a.cache_dir, std::string(build_version()) + " --support " + a.support, m, skeleton.matrix_signature, a.out_dir,
+                  confirm);
   }
 
   checker::CheckResult result;
@@ -343,6 +354,11 @@ void add_check_commands(CLI::App& app, Context& ctx) {
                   "keep verdicts in DIR and skip properties decided there before (same matrix signature, "
                   "property text and cemv build)")
       ->type_name("DIR");
+  cmd->add_option("--support", a.support,
+                  "the cells each proof rests on: core (the proof's unsat core, re-checked; sound, maybe not "
+                  "minimal), full (that core minimised by re-proving; minimal, costlier), off")
+      ->check(CLI::IsMember({"full", "core", "off"}))
+      ->capture_default_str();
   cmd->add_flag("-q,--quiet", a.quiet, "print nothing but errors and a line per property that did not pass");
   cmd->footer(
       "Exit status: 0 every property proved or reachable; 1 some property falsified, unreachable\n"

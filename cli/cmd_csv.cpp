@@ -23,12 +23,6 @@ namespace {
 // 6.1.2: the name of a matrix in the engineering tool.
 constexpr std::size_t kMaxImportedName = 16;
 
-formats::CsvOrientation orientation_of(const std::string& text) {
-  if (text == "causes-as-rows") return formats::CsvOrientation::CausesAsRows;
-  if (text == "effects-as-rows") return formats::CsvOrientation::EffectsAsRows;
-  return formats::CsvOrientation::Auto;
-}
-
 }  // namespace
 
 void add_csv_commands(CLI::App& app, Context& ctx) {
@@ -105,10 +99,7 @@ void add_csv_commands(CLI::App& app, Context& ctx) {
       ->check(CLI::IsMember({";", ",", "tab"}));
   imp->add_option("--name", im->name,
                   "Grid: the matrix name (at most 16 characters, 6.1.2; default: from the file name)");
-  imp->add_option("--orientation", im->orientation,
-                  "Grid: auto (default: from the corner labels and id patterns, refused when "
-                  "they are missing or disagree), causes-as-rows or effects-as-rows")
-      ->check(CLI::IsMember({"auto", "causes-as-rows", "effects-as-rows"}));
+  add_orientation_option(imp, im->orientation);
   imp->add_flag("--strict", im->strict, "Every import warning is an error (exit 2), for CI");
   add_sheet_layout_options(imp, im->sheet);
   imp->add_option("--params", im->params,

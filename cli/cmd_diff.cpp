@@ -29,6 +29,7 @@ struct DiffArgs {
   std::string output = "-";
   std::string out_dir;
   double timeout_s = 0.0;  // --timeout: the user's wall clock; work budgets bound the rest
+  double total_timeout_s = 0.0;  // --total-timeout: the whole run (0 = none)
   bool quiet = false;
 };
 
@@ -51,15 +52,12 @@ void write_scenarios(const DiffArgs& a, diff::DiffReport& r) {
     const auto& d = *e.result.distinction;
     // Under NEW's own numbers (after a move, the run mapped back and
     // confirmed on NEW by the semantic comparison).
-    std::vector<checker::ScenarioExpectation> expect{{e.new_key, d.type, d.value_a}};
     const std::string file = (std::filesystem::path(a.out_dir) / (file_stem(e.result.group) + ".diff.scenario.json")).string();
-    write_output(file, with_other_defaults(
-                           checker::scenario_json(*r.new_m, e.new_inputs,
-                                                  "Where " + r.new_m->name + " (NEW) differs from OLD: " + e.new_key +
-                                                      " in cycle " + std::to_string(d.cycle + 1) +
-                                                      "; the expectation is OLD's value, so NEW fails it",
-                                                  expect),
-                           *r.new_m, e.new_inputs.front(), *r.old_m));
+    write_output(file, scenario_for_both(*r.new_m, *r.old_m, e.new_inputs,
+                                         "Where " + r.new_m->name + " (NEW) differs from OLD: " + e.new_key +
+                                             " in cycle " + std::to_string(d.cycle + 1) +
+                                             "; the expectation is OLD's value, so NEW fails it",
+                                         {{e.new_key, d.type, d.value_a}}));
     r.scenarios.emplace_back(e.result.group, file);
   }
 }
@@ -67,6 +65,13 @@ void write_scenarios(const DiffArgs& a, diff::DiffReport& r) {
 int run_diff(const DiffArgs& a) {
   if (a.format != "text" && a.format != "md" && a.format != "html" && a.format != "json" && a.format != "sarif")
     throw std::runtime_error("diff: --format '" + a.format + "': expected text, md, html, json or sarif");
+  if (a.timeout_s < 0 || a.total_timeout_s < 0) throw std::runtime_error("diff: time limits must not be negative");
+  // --total-timeout: the run's one cancel token; the effects it leaves are
+  // undecided ("time limit"), the report is written.
+  checker::CancelToken cancel(a.total_timeout_s > 0
+                                  ? checker::Clock::now() + std::chrono::duration_cast<checker::Clock::duration>(
+                                                                std::chrono::duration<double>(a.total_timeout_s))
+                                  : checker::Clock::time_point::max());
   if (a.old_file == "-" && a.new_file == "-") throw std::runtime_error("diff: '-' (standard input) can be read only once");
   // The texts are kept: SARIF places each change at its element's line. A
   // matrix with validation errors still gets its structural comparison; only
@@ -95,6 +100,7 @@ int run_diff(const DiffArgs& a) {
   if (not_compared.empty()) {
     diff::SemanticOptions o;
     o.timeout_s = a.timeout_s;
+    o.cancel = &cancel;
     r.behaviour = diff::compare_behaviour(old_m, new_m, r.structure, o);
     write_scenarios(a, r);
   }
@@ -122,6 +128,9 @@ void add_diff_commands(CLI::App& app, Context& ctx) {
   cmd->add_option("-o,--output", a.output, "write the report to FILE ('-' = standard output)")->type_name("FILE");
   cmd->add_option("--out", a.out_dir, "folder for the distinguishing scenarios (created if missing)")
       ->type_name("DIR");
+  cmd->add_option("--total-timeout", a.total_timeout_s,
+                  "wall-clock limit of the whole run, seconds (0 = none; the effects it leaves are undecided)")
+      ->type_name("S");
   cmd->add_option("--timeout", a.timeout_s, "wall-clock limit per effect, seconds (0 = none; an effect it cuts short is undecided)")
       ->capture_default_str()
       ->type_name("S");

@@ -8,6 +8,7 @@
 // reproducible-builds convention), else now. Exit 0 when the report is
 // written, whatever the verdicts (the report says them); 2 invalid input;
 // 4 internal error (an answer refuted by the re-check).
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <iostream>
@@ -50,6 +51,8 @@ struct EvidenceArgs {
   std::string json_file;
   bool response = false;
   double timeout_s = 60.0;
+  double total_timeout_s = 0.0;  // --total-timeout: the whole run (0 = none)
+  std::string support = "core";  // --support full|core|off, as `cemv check`
   int jobs = 1;
   bool quiet = false;
 };
@@ -109,7 +112,14 @@ std::string report_date() {
 
 int run_evidence(const EvidenceArgs& a) {
   if (a.jobs < 1) throw BadArguments("--jobs must be at least 1");
-  if (a.timeout_s < 0) throw BadArguments("--timeout must not be negative");
+  if (a.timeout_s < 0 || a.total_timeout_s < 0) throw BadArguments("time limits must not be negative");
+  // --total-timeout: one deadline for the checks and the response analysis;
+  // what it leaves is reported unknown ("time limit"), the report written.
+  const checker::Clock::time_point deadline =
+      a.total_timeout_s > 0 ? checker::Clock::now() + std::chrono::duration_cast<checker::Clock::duration>(
+                                                          std::chrono::duration<double>(a.total_timeout_s))
+                            : checker::Clock::time_point::max();
+  checker::CancelToken cancel(deadline);
 #ifndef CEMV_WITH_RESPONSE
   if (a.response) throw BadArguments("--response: this cemv is built without `cemv response`");
 #endif
@@ -164,6 +174,10 @@ int run_evidence(const EvidenceArgs& a) {
   if (!a.defeats_file.empty() && valid) in.defeats = read_defeats(a.defeats_file, m);
   checker::CheckOptions options;
   options.property_timeout_s = a.timeout_s;
+  options.cancel = &cancel;
+  options.support_mode = a.support == "full" ? checker::SupportMode::Full
+                         : a.support == "off" ? checker::SupportMode::Off
+                                              : checker::SupportMode::Core;
   options.jobs = a.jobs;
   options.standard = a.standard;
   std::size_t total = 0;
@@ -172,6 +186,7 @@ int run_evidence(const EvidenceArgs& a) {
   Progress progress("cemv evidence", total, "properties", !a.quiet && Progress::terminal(), std::cerr);
   options.on_start = [&](const std::string& name) { progress.started(name); };
   options.on_result = [&](const checker::PropertyResult& r) { progress.finished(r.name); };
+  bool response_interrupted = false;
   try {
     if (!files.empty()) {
       in.check = checker::check_properties(m, files, options);
@@ -183,8 +198,12 @@ int run_evidence(const EvidenceArgs& a) {
       progress.started("every SIF path");
       response::ResponseOptions ro;
       ro.timeout_s = a.timeout_s;
+      if (a.total_timeout_s > 0)  // what is left of the run's bound (a positive bound: 0 means none)
+        ro.total_timeout_s = std::max(1e-3, std::chrono::duration<double>(deadline - checker::Clock::now()).count());
       ro.jobs = a.jobs;
-      in.response = response_figures(m, response::analyse(m, ro));
+      const response::ResponseResult rr = response::analyse(m, ro);
+      response_interrupted = rr.interrupted;
+      in.response = response_figures(m, rr);
     }
 #endif
   } catch (const std::exception& e) {
@@ -209,7 +228,13 @@ int run_evidence(const EvidenceArgs& a) {
                               (in.check.properties.size() == 1 ? " property" : " properties")
                         : std::string("validation errors, nothing checked"))
               << "; wrote " << a.out_file << (a.json_file.empty() ? "" : " and " + a.json_file) << "\n";
-  return valid ? 0 : 1;
+  if (!valid) return 1;
+  // The report is complete but for what the time limit left unknown.
+  const bool interrupted = in.check.interrupted || response_interrupted;
+  if (interrupted && !a.quiet)
+    std::cerr << "cemv evidence: the overall time limit of " << a.total_timeout_s
+              << " s is up; what was not decided is reported unknown\n";
+  return interrupted ? 3 : 0;
 }
 
 }  // namespace
@@ -240,10 +265,19 @@ void add_evidence_commands(CLI::App& app, Context& ctx) {
   cmd->add_option("--timeout", a.timeout_s, "wall-clock limit per property, seconds (0 = none)")
       ->type_name("S")
       ->capture_default_str();
+  cmd->add_option("--total-timeout", a.total_timeout_s,
+                  "wall-clock limit of the whole run, seconds (0 = none; what it leaves is reported unknown, exit 3)")
+      ->type_name("S");
+  cmd->add_option("--support", a.support,
+                  "the cells each proof rests on, as cemv check --support: core (sound, maybe not minimal), "
+                  "full (minimal), off")
+      ->check(CLI::IsMember({"full", "core", "off"}))
+      ->capture_default_str();
   cmd->add_option("--jobs", a.jobs, "worker threads over the properties")->capture_default_str();
   cmd->add_flag("-q,--quiet", a.quiet, "print nothing but errors");
   cmd->footer("Exit status: 0 report written (the verdicts are in the report); 1 report written for a matrix\n"
-              "with validation errors (nothing checked); 2 invalid input; 4 internal error. The date is\n"
+              "with validation errors (nothing checked); 2 invalid input; 3 report written, --total-timeout\n"
+              "left some property or path unknown; 4 internal error. The date is\n"
               "SOURCE_DATE_EPOCH (UTC) when set, else now.\n");
   cmd->callback([&ctx]() {
     try {

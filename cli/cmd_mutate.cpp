@@ -43,6 +43,7 @@ struct MutateArgs {
   std::string out_dir;
   bool equivalence = false;
   double timeout_s = 0.0;  // --timeout: the user's wall clock; work budgets bound the rest
+  double total_timeout_s = 0.0;  // --total-timeout: the whole run (0 = none)
   bool list_operators = false;
   bool quiet = false;
   std::string suite_dir;
@@ -52,13 +53,10 @@ struct MutateArgs {
 // the original's value where the mutant differs: it passes on the original
 // and fails on the mutant (a test that kills the mutant).
 std::string killing_scenario(const model::Matrix& m, const mutate::Mutant& mu, const checker::Distinction& d) {
-  std::vector<checker::ScenarioExpectation> expect{{d.key, d.type, d.value_a}};
-  return with_other_defaults(
-      checker::scenario_json(m, d.run_a.inputs,
-                             "Distinguishes mutant " + mu.id + " (" + mu.description + ", " + mu.element + ") from " +
-                                 m.name + ": " + d.key + " in cycle " + std::to_string(d.cycle + 1),
-                             expect),
-      m, d.run_a.inputs.front(), mu.matrix);
+  return scenario_for_both(m, mu.matrix, d.run_a.inputs,
+                           "Distinguishes mutant " + mu.id + " (" + mu.description + ", " + mu.element + ") from " +
+                               m.name + ": " + d.key + " in cycle " + std::to_string(d.cycle + 1),
+                           {{d.key, d.type, d.value_a}});
 }
 
 int run_mutate(const MutateArgs& a) {
@@ -69,6 +67,13 @@ int run_mutate(const MutateArgs& a) {
     return 0;
   }
   if (a.out_dir.empty()) throw std::runtime_error("mutate: --out DIR is required");
+  if (a.timeout_s < 0 || a.total_timeout_s < 0) throw std::runtime_error("mutate: time limits must not be negative");
+  // --total-timeout: the run's one cancel token; the mutants it leaves are
+  // undecided ("time limit"), every file is still written.
+  checker::CancelToken cancel(a.total_timeout_s > 0
+                                  ? checker::Clock::now() + std::chrono::duration_cast<checker::Clock::duration>(
+                                                                std::chrono::duration<double>(a.total_timeout_s))
+                                  : checker::Clock::time_point::max());
   const model::Matrix m = load_valid_matrix(a.matrix_file, "mutated");
   check_writable_directory(a.out_dir);
   const std::filesystem::path dir(a.out_dir);
@@ -93,7 +98,7 @@ int run_mutate(const MutateArgs& a) {
       t.scenario_json = text.str();
       suite.tests.push_back(std::move(t));
     }
-    return mutation_report(m, suite, a.out_dir);
+    return mutation_report(m, suite, a.out_dir, &cancel);
 #else
     throw std::runtime_error("mutate: --suite needs the test generator, which this build does not include");
 #endif
@@ -118,7 +123,14 @@ int run_mutate(const MutateArgs& a) {
     if (a.equivalence) {
       checker::EquivalenceOptions o;
       o.timeout_s = a.timeout_s;
-      checker::GroupEquivalence r = checker::decide_equivalence(m, mu.matrix, checker::whole_matrix(m, mu.matrix), o);
+      o.cancel = &cancel;
+      checker::GroupEquivalence r;
+      if (cancel.cancelled()) {
+        r.unknown = checker::UnknownReason::TimeLimit;
+        r.reason = checker::to_string(r.unknown);
+      } else {
+        r = checker::decide_equivalence(m, mu.matrix, checker::whole_matrix(m, mu.matrix), o);
+      }
       j["equivalence"] = checker::to_string(r.verdict);
       j["method"] = r.method;
       if (!r.reason.empty()) j["reason"] = r.reason;
@@ -169,6 +181,10 @@ void add_mutate_commands(CLI::App& app, Context& ctx) {
                 "distinguishing scenario for each non-equivalent one");
   cmd->add_option("--timeout", a.timeout_s, "wall-clock limit per mutant with --equivalence, seconds (0 = none; a mutant it cuts short is undecided)")
       ->capture_default_str()
+      ->type_name("S");
+  cmd->add_option("--total-timeout", a.total_timeout_s,
+                  "wall-clock limit of the whole run with --equivalence or --suite, seconds (0 = none; the "
+                  "mutants it leaves are undecided)")
       ->type_name("S");
   cmd->add_flag("--list-operators", a.list_operators, "print the mutation operators and exit");
   cmd->add_flag("-q,--quiet", a.quiet, "print nothing but errors (no summary)");

@@ -18,8 +18,10 @@ namespace cemv::cli {
 namespace {
 
 mutate::MutationReport write_report(const model::Matrix& m, const testgen::TestSuite& suite, const std::string& out_dir,
-                                    const std::string& label) {
-  const mutate::MutationReport r = mutate::mutation_report(m, suite);
+                                    const std::string& label, checker::CancelToken* cancel) {
+  mutate::MutationOptions o;
+  o.cancel = cancel;
+  const mutate::MutationReport r = mutate::mutation_report(m, suite, o);
   const std::filesystem::path dir(out_dir);
   write_output((dir / "mutation-report.json").string(), mutate::report_json(r));
   write_output((dir / "mutation-report.md").string(), mutate::report_markdown(r));
@@ -32,11 +34,12 @@ mutate::MutationReport write_report(const model::Matrix& m, const testgen::TestS
 }  // namespace
 
 int field_mutation_report(const model::Matrix& m, const testgen::TestSuite* automated, testgen::FieldSuite& field,
-                          const std::string& out_dir, const std::string& date, const std::string& tool) {
+                          const std::string& out_dir, const std::string& date, const std::string& tool,
+                          checker::CancelToken* cancel) {
   int code = 0;
   std::optional<mutate::MutationReport> a;
   if (automated) {
-    a = write_report(m, *automated, out_dir, "");
+    a = write_report(m, *automated, out_dir, "", cancel);
     code = a->exit_code();
   }
   testgen::TestSuite fs;
@@ -47,7 +50,7 @@ int field_mutation_report(const model::Matrix& m, const testgen::TestSuite* auto
     fs.tests.push_back(std::move(x));
   }
   const std::filesystem::path dir = std::filesystem::path(out_dir) / "field";
-  const mutate::MutationReport f = write_report(m, fs, dir.string(), "field suite ");
+  const mutate::MutationReport f = write_report(m, fs, dir.string(), "field suite ", cancel);
   if (!a) return std::max(code, f.exit_code());
   // The two reports list the same mutants in the same order (one operator set).
   testgen::FieldMutation mu;
@@ -74,8 +77,11 @@ int field_mutation_report(const model::Matrix& m, const testgen::TestSuite* auto
   return code;
 }
 
-int mutation_report(const model::Matrix& m, const testgen::TestSuite& suite, const std::string& out_dir) {
-  const mutate::MutationReport r = mutate::mutation_report(m, suite);
+int mutation_report(const model::Matrix& m, const testgen::TestSuite& suite, const std::string& out_dir,
+                    checker::CancelToken* cancel) {
+  mutate::MutationOptions o;
+  o.cancel = cancel;
+  const mutate::MutationReport r = mutate::mutation_report(m, suite, o);
   const std::filesystem::path dir(out_dir);
   write_output((dir / "mutation-report.json").string(), mutate::report_json(r));
   write_output((dir / "mutation-report.md").string(), mutate::report_markdown(r));

@@ -27,6 +27,7 @@ struct ResponseArgs {
   std::string out_dir;
   bool conservative = false;
   double timeout_s = 0.0;
+  double total_timeout_s = 0.0;  // --total-timeout: the whole run (0 = none)
   int jobs = 1;
   bool quiet = false;
 };
@@ -43,7 +44,7 @@ int run_response(const ResponseArgs& a) {
   else if (a.format == "sarif") format = response::Format::Sarif;
   else throw BadArguments("--format: '" + a.format + "' is not a format; expected text, json, junit or sarif");
   if (a.jobs < 1) throw BadArguments("--jobs must be at least 1");
-  if (a.timeout_s < 0) throw BadArguments("--timeout must not be negative");
+  if (a.timeout_s < 0 || a.total_timeout_s < 0) throw BadArguments("time limits must not be negative");
   check_writable(a.output);
   if (!a.out_dir.empty()) check_writable_directory(a.out_dir);
 
@@ -52,6 +53,7 @@ int run_response(const ResponseArgs& a) {
   o.sifs = a.sifs;
   o.conservative = a.conservative;
   o.timeout_s = a.timeout_s;
+  o.total_timeout_s = a.total_timeout_s;
   o.jobs = a.jobs;
   o.out_dir = a.out_dir;
   std::optional<response::ResponseResult> analysed;
@@ -91,6 +93,9 @@ void add_response_commands(CLI::App& app, Context& ctx) {
   cmd->add_flag("--conservative", a.conservative,
                 "the controller's share is twice watchdog_ms instead of twice cycle_ms (HIMatrix 3.2.6)");
   cmd->add_option("--timeout", a.timeout_s, "wall-clock limit per decided property, seconds (0 = none)")
+      ->type_name("S");
+  cmd->add_option("--total-timeout", a.total_timeout_s,
+                  "wall-clock limit of the whole run, seconds (0 = none; the paths it leaves are unknown)")
       ->type_name("S");
   cmd->add_option("--jobs", a.jobs, "paths decided in parallel")->capture_default_str();
   cmd->add_flag("-q,--quiet", a.quiet, "print nothing but errors and a line per path over, unbounded or unknown");

@@ -6,10 +6,12 @@
 // Exit status: 0 every objective covered or proved infeasible; 2 invalid
 // input or an unwritable destination; 3 some objective undecided (a limit);
 // 4 internal error (a generated test that does not replay green).
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
 
+#include "checker/limits.hpp"
 #include "checker/prover.hpp"
 #include "cli/commands.hpp"
 #include "cli/matrix_input.hpp"
@@ -38,6 +40,7 @@ struct TestgenArgs {
   bool mutation_report = false;
   std::string changed_from;  // OLD: only the tests the change needs
   double diff_timeout_s = 0.0;
+  double total_timeout_s = 0.0;  // --total-timeout: the whole run (0 = none)
   bool quiet = false;
   bool verbose = false;
   double resolution = 0.1;   // of the field suite's values
@@ -73,6 +76,14 @@ std::string write_field_suite(const model::Matrix& m, const TestgenArgs& a, cons
 }
 
 int run_testgen(const TestgenArgs& a) {
+  if (a.total_timeout_s < 0) throw std::invalid_argument("--total-timeout must not be negative");
+  // --total-timeout: the run's one cancel token. Every search polls it; the
+  // objectives it leaves are undecided ("time limit") and the suite holds
+  // the tests made before, every one replayed green.
+  checker::CancelToken cancel(a.total_timeout_s > 0
+                                  ? checker::Clock::now() + std::chrono::duration_cast<checker::Clock::duration>(
+                                                                std::chrono::duration<double>(a.total_timeout_s))
+                                  : checker::Clock::time_point::max());
   model::Matrix m = load_valid_matrix(a.matrix_file, "tested");
   check_writable_directory(a.out_dir);
   if (!(a.resolution > 0.0) || a.resolution > 1000.0) throw std::invalid_argument("--resolution must be in (0, 1000]");
@@ -87,11 +98,12 @@ int run_testgen(const TestgenArgs& a) {
   }
   if (a.field_only) {
     if (!a.quiet) write_output("-", "matrix " + m.name + "\n" + field_summary);
-    return a.mutation_report ? field_mutation_report(m, nullptr, field, a.out_dir, testgen::report_date(), tool) : 0;
+    return a.mutation_report ? field_mutation_report(m, nullptr, field, a.out_dir, testgen::report_date(), tool, &cancel) : 0;
   }
   testgen::TestgenOptions o;
   if (a.sif > 0) o.sif = a.sif;
   o.jobs = a.jobs;
+  o.cancel = &cancel;
   if (!(a.budget > 0) || !(a.proof_budget > 0)) throw std::invalid_argument("--budget and --proof-budget must be positive");
   o.objective_work = static_cast<checker::Work>(a.budget * checker::kMega);
   o.proof_work = static_cast<checker::Work>(a.proof_budget * checker::kMega);
@@ -157,7 +169,7 @@ int run_testgen(const TestgenArgs& a) {
   }
   int code = suite.undecided > 0 ? 3 : 0;
   if (a.mutation_report)
-    code = std::max(code, field_mutation_report(m, &suite, field, a.out_dir, testgen::report_date(), tool));
+    code = std::max(code, field_mutation_report(m, &suite, field, a.out_dir, testgen::report_date(), tool, &cancel));
   return code;
 }
 
@@ -191,6 +203,10 @@ void add_testgen_commands(CLI::App& app, Context& ctx) {
                   "with --changed-from: wall-clock limit per effect of the comparison, seconds (0 = none; an "
                   "effect it cuts short is undecided)")
       ->capture_default_str()
+      ->type_name("S");
+  cmd->add_option("--total-timeout", a.total_timeout_s,
+                  "wall-clock limit of the whole run, seconds (0 = none; the objectives it leaves are undecided, "
+                  "the tests made before are written)")
       ->type_name("S");
   cmd->add_option("--resolution", a.resolution,
                   "field suite: the resolution values are set and printed with (the calibrator's, the tag unit's)")

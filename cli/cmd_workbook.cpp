@@ -46,6 +46,7 @@ void add_workbook_commands(CLI::App& app, Context& ctx) {
     std::string output = "-";
     std::string into;
     std::string sheet;
+    std::string orientation = "auto";
     SheetLayoutOptions layout;
     std::string params;
   };
@@ -61,6 +62,7 @@ void add_workbook_commands(CLI::App& app, Context& ctx) {
                   "comparison of cemv diff)");
   imp->add_option("--sheet", im->sheet,
                   "Grid: the sheet that holds the matrix, by name or number (default: the one sheet with a C&E grid)");
+  add_orientation_option(imp, im->orientation);
   add_sheet_layout_options(imp, im->layout);
   imp->add_option("--params", im->params,
                   "Plant parameters the sheet cannot state (cemv-params/1, docs/params.md), applied and recorded "
@@ -77,6 +79,7 @@ void add_workbook_commands(CLI::App& app, Context& ctx) {
     formats::WorkbookImportResult result;
     formats::WorkbookImportOptions options;
     options.sheet = im->sheet;
+    options.orientation = orientation_of(im->orientation);
     options.sheet_layout = load_sheet_layout(im->layout);
     options.parameter_trip_sides = parameter_trip_sides(im->params);
     try {

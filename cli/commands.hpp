@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 namespace cemv::model { struct Matrix; }
+namespace cemv::checker { class CancelToken; }
 namespace cemv::testgen { struct TestSuite; struct FieldSuite; }
 
 namespace cemv::cli {
@@ -40,11 +41,14 @@ void add_record_commands(CLI::App& app, Context& ctx);    // record
 
 // `cemv testgen --mutation-report`: after the suite is written to `out_dir`,
 // the mutation adequacy report (docs/testgen.md); returns an exit status.
-int mutation_report(const model::Matrix& m, const testgen::TestSuite& suite, const std::string& out_dir);
+// `cancel`: the run's token (--total-timeout; nullptr: none).
+int mutation_report(const model::Matrix& m, const testgen::TestSuite& suite, const std::string& out_dir,
+                    checker::CancelToken* cancel = nullptr);
 // The same for the automated suite and the field suite (DIR/field/), and the
 // comparison of the two in the field checklists; returns an exit status.
 int field_mutation_report(const model::Matrix& m, const testgen::TestSuite* automated, testgen::FieldSuite& field,
-                          const std::string& out_dir, const std::string& date, const std::string& tool);
+                          const std::string& out_dir, const std::string& date, const std::string& tool,
+                          checker::CancelToken* cancel = nullptr);
 void add_mutate_commands(CLI::App& app, Context& ctx);    // mutate
 void add_diff_commands(CLI::App& app, Context& ctx);      // diff
 void add_response_commands(CLI::App& app, Context& ctx);  // response

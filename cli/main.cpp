@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "checker/limits.hpp"
 #include "cli/commands.hpp"
 #include "cli/errors.hpp"
 #include "cli/output.hpp"
@@ -122,6 +123,12 @@ int main(int argc, char** argv) {
     // The reader went away (`cemv ... | head`): end quietly, with the status
     // of a process that SIGPIPE killed.
     return 128 + 13;
+  } catch (const cemv::checker::Interrupted&) {
+    // Every command turns the end of its time limit into unknown results in
+    // a complete report; this is the last guard against one that does not:
+    // no report, but no crash either.
+    std::cerr << "error: the time limit ended the run before its report could be written\n";
+    return 3;
   } catch (const cemv::formats::LoadError& e) {
     cemv::cli::print_load_error(e, std::cerr);
     return 2;

@@ -7,35 +7,34 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
-#include <nlohmann/json.hpp>
-
+#include "formats/scenario_writer.hpp"
 #include "model/matrix.hpp"
-#include "model/text.hpp"
 #include "model/vocabulary.hpp"
 
 namespace cemv::cli {
 
-inline std::string with_other_defaults(const std::string& scenario, const model::Matrix& m,
-                                       const model::CycleInput& first, const model::Matrix& other) {
-  nlohmann::ordered_json doc = nlohmann::ordered_json::parse(scenario);
-  if (!doc.contains("steps") || doc["steps"].empty()) return scenario;
+// The input tags of `m` (model::InputTable indices) whose start-up value
+// differs in `other`.
+inline std::vector<std::size_t> other_defaults(const model::Matrix& m, const model::Matrix& other) {
   const model::InputTable table(m), theirs_table(other);
   const auto mine = model::default_cycle_input(m).tags, theirs = model::default_cycle_input(other).tags;
-  auto& step = doc["steps"][0];
-  bool changed = false;
+  std::vector<std::size_t> out;
   for (std::size_t i = 0; i < table.size(); ++i) {
-    const std::string& name = table.tags()[i].name;
-    auto j = theirs_table.find(name);
-    if (!j || theirs[*j].value == mine[i].value) continue;
-    if (step.contains("inputs") && step["inputs"].contains(name)) continue;
-    const model::TagValue& v = first.tags[i];
-    step["inputs"][name] = table.tags()[i].kind == model::TagKind::Bool
-                               ? nlohmann::ordered_json(v.value != 0.0f)
-                               : nlohmann::ordered_json::parse(model::float_text(v.value));
-    changed = true;
+    auto j = theirs_table.find(table.tags()[i].name);
+    if (j && theirs[*j].value != mine[i].value) out.push_back(i);
   }
-  return changed ? doc.dump(1) + "\n" : scenario;
+  return out;
+}
+
+// A run of `m` checked at its end, written so that it runs on `other` too.
+inline std::string scenario_for_both(const model::Matrix& m, const model::Matrix& other,
+                                     const std::vector<model::CycleInput>& inputs, const std::string& description,
+                                     std::vector<formats::ExpectedValue> expect) {
+  formats::ScenarioRun run = formats::checked_at_end(inputs, description, std::move(expect));
+  run.first_step_also_states = other_defaults(m, other);
+  return formats::scenario_text(m, run);
 }
 
 }  // namespace cemv::cli

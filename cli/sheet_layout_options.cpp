@@ -17,6 +17,19 @@ void add_sheet_layout_options(CLI::App* cmd, SheetLayoutOptions& options) {
                   "--sheet-layout for the next revision");
 }
 
+void add_orientation_option(CLI::App* cmd, std::string& orientation) {
+  cmd->add_option("--orientation", orientation,
+                  "Grid: auto (default: from the corner labels, id patterns and attribute headers, refused when "
+                  "they are missing or disagree), causes-as-rows or effects-as-rows")
+      ->check(CLI::IsMember({"auto", "causes-as-rows", "effects-as-rows"}));
+}
+
+formats::CsvOrientation orientation_of(const std::string& text) {
+  if (text == "causes-as-rows") return formats::CsvOrientation::CausesAsRows;
+  if (text == "effects-as-rows") return formats::CsvOrientation::EffectsAsRows;
+  return formats::CsvOrientation::Auto;
+}
+
 void check_sheet_layout_output(const SheetLayoutOptions& options) {
   if (!options.save_file.empty()) check_writable(options.save_file);
 }

@@ -1,5 +1,6 @@
 // The options of import-csv and import-workbook that describe a vendor's C&E
-// sheet (docs/csv.md "The layout description"): `--sheet-layout FILE` gives a
+// sheet (docs/csv.md "The layout description"): `--orientation`,
+// `--sheet-layout FILE` gives a
 // cemv-sheet-layout/1 file, `--save-layout FILE` writes the layout the sheet
 // was read with, and the summary prints it, so that the next revision of the
 // same sheet is read the same way.
@@ -20,6 +21,11 @@ struct SheetLayoutOptions {
 };
 
 void add_sheet_layout_options(CLI::App* cmd, SheetLayoutOptions& options);
+
+// `--orientation auto|causes-as-rows|effects-as-rows` of a grid import (the
+// layout's `orientation` the same, or auto), and its value.
+void add_orientation_option(CLI::App* cmd, std::string& orientation);
+formats::CsvOrientation orientation_of(const std::string& text);
 
 // Checks before the work that --save-layout can be written.
 void check_sheet_layout_output(const SheetLayoutOptions& options);

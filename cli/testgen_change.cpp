@@ -22,6 +22,7 @@ ChangeScope apply_change(const std::string& old_file, const std::string& new_fil
   r.structure = diff::compare_structure(old_m, new_m);
   diff::SemanticOptions so;
   so.timeout_s = timeout_s;
+  so.cancel = options.cancel;  // --total-timeout bounds the comparison too
   r.behaviour = diff::compare_behaviour(old_m, new_m, r.structure, so);
   const diff::RetestScope scope = diff::retest_scope(r.behaviour);
 

@@ -290,8 +290,9 @@ SemanticDiff compare_behaviour(const model::Matrix& old_m, const model::Matrix& 
   // One group per effect of OLD or NEW, in OLD's numbering, each in its own
   // slot: the result does not depend on the number of workers.
   const std::vector<checker::ObservableGroup> groups = checker::effect_groups(old_m, rel);
-  out.effects.resize(groups.size());
-  const std::size_t done = checker::WorkQueue(options.jobs, cancel).run(groups.size(), [&](std::size_t gi) {
+  // Each effect undecided ("time limit") until its task decides it: the
+  // cancel token (--total-timeout) may end the run first.
+  auto undecided = [&](std::size_t gi) {
     const checker::ObservableGroup& g = groups[gi];
     const int id = g.roots.front().id;
     EffectBehaviour e;
@@ -300,6 +301,16 @@ SemanticDiff compare_behaviour(const model::Matrix& old_m, const model::Matrix& 
     e.name = e.new_id ? new_m.find_effect(e.new_id)->name : old_m.find_effect(id)->name;
     e.structurally_changed = touched(d, old_cones, new_cones, e.old_id, e.new_id, false);
     e.critically_changed = touched(d, old_cones, new_cones, e.old_id, e.new_id, true);
+    e.result.group = g.name;
+    e.result.unknown = checker::UnknownReason::TimeLimit;
+    e.result.reason = checker::to_string(e.result.unknown);
+    return e;
+  };
+  for (std::size_t gi = 0; gi < groups.size(); ++gi) out.effects.push_back(undecided(gi));
+  checker::WorkQueue(options.jobs, cancel).run(groups.size(), [&](std::size_t gi) {
+    const checker::ObservableGroup& g = groups[gi];
+    const int id = g.roots.front().id;
+    EffectBehaviour e = undecided(gi);
     e.result = checker::decide_equivalence(old_m, rel, g, eo);
     if (e.result.distinction && e.new_id) {
       const auto& dist = *e.result.distinction;
@@ -329,7 +340,6 @@ SemanticDiff compare_behaviour(const model::Matrix& old_m, const model::Matrix& 
         }
     out.effects[gi] = std::move(e);
   });
-  if (done < groups.size()) throw checker::Interrupted{};
 
   // The impact set: changed effects, their cones' causes, tags and SIF groups.
   for (const auto& e : out.effects) {

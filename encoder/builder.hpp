@@ -47,14 +47,28 @@ struct Simulation {
 
 class Builder {
  public:
-  Builder(z3::context& ctx, const model::Matrix& m, Encoding& enc)
+  Builder(z3::context& ctx, const model::Matrix& m, Encoding& enc, bool guard_cells = false)
       : c_(ctx), m_(m), enc_(enc), ts_(enc.ts), graph_(m), first_(ctx), cmd_ok_(ctx), gd_(ctx),
-        fp32_(ctx.fpa_sort(8, 24)) {}
+        fp32_(ctx.fpa_sort(8, 24)), guard_cells_(guard_cells) {}
 
   void build(const std::vector<Node>& roots);
 
  private:
   expr B(bool b) { return c_.bool_val(b); }
+  // EncodeOptions::guard_cells: `term` under the activation literal of the
+  // cell with support key `key` (made once); unguarded, `term` itself, so
+  // that the plain encoding's terms (and its SMT-LIB text) stay as they are.
+  expr guarded(const std::string& key, const expr& term) {
+    if (!guard_cells_) return term;
+    return guard(key) && term;
+  }
+  expr guard(const std::string& key) {
+    for (const auto& [k, g] : enc_.guards)
+      if (k == key) return g;
+    expr g = c_.bool_const(("guard." + key).c_str());
+    enc_.guards.emplace_back(key, g);
+    return g;
+  }
   expr I(int v) { return c_.int_val(v); }
   expr count(const std::vector<expr>& bs) {
     if (bs.empty()) return I(0);
@@ -214,6 +228,7 @@ class Builder {
   expr cmd_ok_;  // M.3: commands accepted in this cycle
   expr gd_;      // M.2: group deactivation in this cycle
   z3::sort fp32_;
+  bool guard_cells_ = false;
   std::set<Node> cone_;
   std::vector<const model::Cause*> causes_;    // processed causes in the cone, by id
   std::vector<const model::Effect*> effects_;  // processed effects in the cone, by id

@@ -492,9 +492,9 @@ void Builder::build(const std::vector<Node>& roots) {
 }  // namespace detail
 
 std::unique_ptr<Encoding> encode(z3::context& ctx, const model::Matrix& m,
-                                 const std::vector<Node>& roots) {
+                                 const std::vector<Node>& roots, const EncodeOptions& options) {
   auto enc = std::make_unique<Encoding>(ctx);
-  Builder b(ctx, m, *enc);
+  Builder b(ctx, m, *enc, options.guard_cells);
   b.build(roots);
   enc->ts.check_complete();
   return enc;

@@ -60,6 +60,12 @@ struct Encoding {
   // inputs above were created in it.
   model::CommandOrder order;
 
+  // EncodeOptions::guard_cells: each guarded cell's activation literal, a
+  // free Boolean constant (neither state nor input, the same in every
+  // cycle), by the cell's support key ("intersection[3,2]",
+  // "cause[1].bypass_tag"; checker/support.hpp). Empty otherwise.
+  std::vector<std::pair<std::string, z3::expr>> guards;
+
   // The commands of one cycle as the encoding processes them: the model's
   // canonical order (a set, repeats keep the last one's value) without the
   // commands the encoding has no input for (always refused, or outside the
@@ -67,10 +73,22 @@ struct Encoding {
   std::vector<model::Command> canonical_commands(const std::vector<model::Command>& cmds) const;
 };
 
+struct EncodeOptions {
+  // Each cell the support of a proof may leave out (docs/checker.md,
+  // "Support") guarded by an activation literal (Encoding::guards): with the
+  // literal true the cell acts as encoded, with it false the system is that
+  // of the matrix without the cell. Guarded: the intersections outside XooN
+  // groups (deleting a member invalidates the matrix), the bypass and
+  // inhibit tags of causes, the bypass and reset tags of effects. An unsat
+  // core over the literals names the cells a proof used (JKind's
+  // activation literals for inductive validity cores).
+  bool guard_cells = false;
+};
+
 // Builds the transition system of a validated matrix. `roots`: the causes and
 // effects whose cone of influence (DependencyGraph::feeders_of) to encode;
 // empty = every processed cause and effect.
 std::unique_ptr<Encoding> encode(z3::context& ctx, const model::Matrix& m,
-                                 const std::vector<model::Node>& roots = {});
+                                 const std::vector<model::Node>& roots = {}, const EncodeOptions& options = {});
 
 }  // namespace cemv::encoder

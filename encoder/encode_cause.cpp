@@ -222,8 +222,9 @@ Builder::CauseActive Builder::cause_latch_and_active(const model::Cause& cz, con
                                                      const expr& tr, const expr& tm) {
   const Node self{Node::Kind::Cause, cz.id};
   const CauseCommands& cmds = cause_cmds_.at(cz.id);
-  expr hard = cz.bypass_tag ? bool_read(*cz.bypass_tag, self) : B(false);
-  expr inhibited = cz.inhibit_tag ? bool_read(*cz.inhibit_tag, self) : B(false);
+  const std::string P = cause_prefix(cz.id);
+  expr hard = cz.bypass_tag ? guarded(P + ".bypass_tag", bool_read(*cz.bypass_tag, self)) : B(false);
+  expr inhibited = cz.inhibit_tag ? guarded(P + ".inhibit_tag", bool_read(*cz.inhibit_tag, self)) : B(false);
   expr bypassed = hard || soft_bypass;
   expr latch_now = B(false);
   bool has_latch = !cz.auto_ack && (cz.time.mode == model::TimeMode::None ||

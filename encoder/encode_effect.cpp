@@ -35,13 +35,18 @@ Builder::EffectRequests Builder::effect_requests(const model::Effect& ef) {
     if (!cz || cz->function == model::CauseFunction::Comment) continue;
     auto it = cause_active_.find(is->cause);
     if (it == cause_active_.end()) throw std::logic_error("cause read before evaluation");
-    linked.emplace_back(is->cause, it->second);
     if (is->xoon) {
+      linked.emplace_back(is->cause, it->second);
       xoon_members.push_back(it->second);
       xoon_type = is->type;
       xoon_x = xoon_x == 0 ? *is->xoon : std::min(xoon_x, *is->xoon);
     } else {
-      direct[is->type].push_back(it->second);
+      // Guarded (EncodeOptions::guard_cells): without the cell the cause
+      // requests nothing of this effect.
+      const expr on = guarded("intersection[" + std::to_string(is->cause) + "," + std::to_string(ef.id) + "]",
+                              it->second);
+      linked.emplace_back(is->cause, on);
+      direct[is->type].push_back(on);
     }
   }
   auto req = [&](model::IntersectionType t) {
@@ -62,10 +67,13 @@ Builder::EffectReads Builder::effect_reads(const model::Effect& ef) {
   const Node self{Node::Kind::Effect, ef.id};
   const std::string P = effect_prefix(ef.id);
   const EffectCommands& cmds = effect_cmds_.at(ef.id);
-  expr hard = ef.bypass_tag ? bool_read(*ef.bypass_tag, self) : B(false);
+  expr hard = ef.bypass_tag ? guarded(P + ".bypass_tag", bool_read(*ef.bypass_tag, self)) : B(false);
   expr bypassed = hard || cmds.sb_on;
   expr toggle = cmds.toggle;
-  if (ef.reset_tag) toggle = edge_of("prev." + P + ".reset_tag", bool_read(*ef.reset_tag, self));
+  if (ef.reset_tag) {
+    const expr edge = edge_of("prev." + P + ".reset_tag", bool_read(*ef.reset_tag, self));
+    toggle = guard_cells_ ? z3::ite(guard(P + ".reset_tag"), edge, cmds.toggle) : edge;
+  }
   expr od_prev = bool_state(P + ".output_delay_running_prev", false);
   return {bypassed, toggle, od_prev};
 }

@@ -41,6 +41,8 @@ std::string read_as(SheetAttribute a, const std::string& kind) {
     case SheetAttribute::Voting: return "read as the " + kind + " voting";
     case SheetAttribute::Sil: return "read as the " + kind + " SIL";
     case SheetAttribute::TripSide: return "read as the trip sides of the setpoints";
+    case SheetAttribute::Id: return "read as the " + kind + " ids";
+    case SheetAttribute::Description: return "read as the " + kind + " descriptions";
     default: return "kept in the " + kind + " notes";
   }
 }
@@ -227,10 +229,12 @@ class GridImporter {
     std::vector<std::string> out;
     auto describe = [&](const std::vector<Slot>& slots, bool rows, const std::string& kind) {
       for (const Slot& s : slots) {
-        if (s.attribute == SheetAttribute::Id || s.attribute == SheetAttribute::Description) continue;
+        const bool named = s.attribute == SheetAttribute::Id || s.attribute == SheetAttribute::Description;
+        if (named && s.evidence.empty()) continue;
         const std::string where = rows ? "label column " + std::to_string(sheet_.column_of(s.index))
                                        : "header row " + std::to_string(sheet_.rows[s.index].line);
-        out.push_back(where + (s.label.empty() ? "" : " " + in_quotes(s.label)) + " " + read_as(s.attribute, kind));
+        out.push_back(where + (s.label.empty() ? "" : " " + in_quotes(s.label)) + " " + read_as(s.attribute, kind) +
+                      (s.evidence.empty() ? "" : " (" + s.evidence + ")"));
       }
     };
     describe(shape_.column_slots, false, causes_are_rows() ? "effect" : "cause");
@@ -302,7 +306,8 @@ CsvImportResult import_grid(std::string_view text, const std::string& source, co
   Sheet sheet = read_sheet(text, options.separator, source);
   sheet.extras = extras;
   const Shape shape = find_shape(sheet, source, layout);
-  OrientationDecision orientation = decide_orientation(sheet, shape, requested, source, given_by);
+  OrientationDecision orientation =
+      decide_orientation(sheet, shape, requested, source, given_by, layout.orientation != CsvOrientation::Auto);
   return GridImporter(sheet, shape, std::move(orientation), source, options.matrix_name, layout,
                       options.parameter_trip_sides).run();
 }

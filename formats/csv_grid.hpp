@@ -7,7 +7,9 @@
 //    its header rows and label columns end, and whether the description row
 //    lines up with the id row;
 //  - csv_grid_attributes.cpp: what each label column and header row holds
-//    (id, description, tag, setpoint, ...), from the layout or the headers;
+//    (id, description, tag, setpoint, ...), from the layout or the headers,
+//    with csv_grid_headers.cpp reading them from their values (a stacked
+//    effect header: description, action, tag, SIL in any order);
 //  - csv_grid_orientation.cpp: which axis holds the causes, from evidence;
 //  - csv_grid_elements.cpp: the elements of each axis, voting groups and
 //    deleted rows, with csv_grid_values.cpp for the values of their
@@ -104,7 +106,32 @@ struct Slot {
   std::size_t index = 0;   // field index (a label column) or Sheet::rows index (a header row)
   std::string label;       // its header, e.g. "Set point"; empty when it has none
   bool by_header = false;  // recognised from its header (or given by the layout), not by position
+  std::string evidence;    // why, for the summary: "its label and tag-shaped values 'XV-301', ..."
 };
+
+// What the values of a header row (label column) are (csv_grid_headers.cpp):
+// output tags (letters, a separator, digits: `XV-301`), SIL levels (`SIL 2`),
+// action verbs (`CLOSE`, `DE-ENERGISE`), numbers 0-4 only, numbers or ids,
+// or free text.
+enum class HeaderContent { Tags, Sil, Actions, SmallNumbers, Ids, Text };
+bool tag_shaped(std::string_view text);
+bool action_word(std::string_view text);  // the verbs of docs/csv.md "Stacked effect header"
+
+// A header row (label column) without a place given by the layout.
+struct HeaderCandidate {
+  std::size_t index = 0;             // as Slot::index
+  std::string label;                 // row_label / column_header
+  std::vector<std::string> values;   // its cells over the data columns (in the data rows)
+  std::string name;                  // "header row 4", "label column 3"
+  std::string place;                 // LoadIssue::where of its first value
+};
+// The slots of one axis, each from its label and its values: a label that
+// agrees is evidence, one against the values is refused; tag, SIL and action
+// rows by their values; the id row by a label, numbers or ids, else the tags;
+// free text the description (then notes). Two rows that could each be the tag
+// (SIL, id) row, or a stacked header without tags or ids, are refused naming
+// the candidates (LoadError). header_rows: the candidates are header rows.
+std::vector<Slot> classify_headers(const std::vector<HeaderCandidate>& candidates, bool header_rows);
 
 // Where the parts of the grid are, as indexes into Sheet::rows and field
 // indexes. The header rows are the rows above first_data_row, the label columns
@@ -138,9 +165,9 @@ bool has_grid_shape(const Sheet& sheet);
 Shape find_shape(const Sheet& sheet, const std::string& source, const SheetLayout& layout);
 
 // The attributes of the label columns and header rows (csv_grid_attributes.cpp):
-// the layout's places, else each header read (attribute_of_header), the rest
-// by position (the last unread one the id, the first the description, any
-// other a note). Refuses (LoadError) a layout place outside the corner block.
+// the layout's places, else each read from its header and its values
+// (classify_headers). Refuses (LoadError) a layout place outside the corner
+// block, and what classify_headers refuses.
 void assign_slots(const Sheet& sheet, Shape& shape, const SheetLayout& layout, const std::string& source);
 
 // The header of a label column: its cell in the last row of the corner block
@@ -161,12 +188,15 @@ struct OrientationDecision {
 
 // Auto: decided from the corner labels and the id patterns; refused (LoadError
 // naming the id row's line) when they are missing or disagree. Otherwise the
-// requested orientation, with any evidence against it as a disagreement.
+// requested orientation, with any evidence against it as a disagreement;
+// corner labels or attribute headers that all say the other are a refusal,
+// but for corner labels when `over_labels` (a layout's orientation: it says
+// what the sheet cannot, and wins over its labels with a warning).
 // `given_by` names where a requested orientation comes from in messages
 // ("--orientation", "the layout's orientation").
 OrientationDecision decide_orientation(const Sheet& sheet, const Shape& shape,
                                        CsvOrientation requested, const std::string& source,
-                                       const std::string& given_by = "--orientation");
+                                       const std::string& given_by = "--orientation", bool over_labels = false);
 
 // One cause or effect as the sheet has it, then as numbered and named.
 struct SheetElement {

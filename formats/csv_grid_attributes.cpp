@@ -1,11 +1,9 @@
 // What each label column and header row of a C&E grid holds (docs/csv.md
 // "Attributes"): given by the layout, or read from its header (the common
 // spellings of id, description, tag, setpoint, unit, voting, SIL, trip side,
-// action, remarks), the rest by position as in a plain grid: the last the id,
-// the first the description, any other a note. An attribute column is never
-// read as an element.
+// action, remarks) and its values (csv_grid_headers.cpp). An attribute column
+// is never read as an element.
 #include <algorithm>
-#include <functional>
 #include <map>
 #include <optional>
 
@@ -113,30 +111,6 @@ std::vector<Slot> complete(std::vector<Slot> read, const std::vector<Slot>& unre
   return read;
 }
 
-// The slots of one axis from the headers: each header read, a second id or
-// description a note.
-std::vector<Slot> slots_from_headers(const std::vector<std::size_t>& candidates,
-                                     const std::function<std::string(std::size_t)>& header_of) {
-  std::vector<Slot> read, unread;
-  for (std::size_t index : candidates) {
-    Slot s;
-    s.index = index;
-    s.label = header_of(index);
-    const auto meaning = attribute_of_header(s.label);
-    if (!meaning) {
-      unread.push_back(s);
-      continue;
-    }
-    s.attribute = meaning->attribute;
-    s.by_header = true;
-    const bool once = s.attribute != SheetAttribute::Note && s.attribute != SheetAttribute::Tag;
-    if (once && std::any_of(read.begin(), read.end(), [&](const Slot& o) { return o.attribute == s.attribute; }))
-      s.attribute = SheetAttribute::Note;
-    read.push_back(s);
-  }
-  return complete(std::move(read), unread);
-}
-
 }  // namespace
 
 std::optional<HeaderMeaning> attribute_of_header(const std::string& text) {
@@ -202,7 +176,7 @@ void assign_slots(const Sheet& sheet, Shape& shape, const SheetLayout& layout, c
   if (!row_places.empty()) {
     for (const auto& p : row_places) {
       const long index = p.position - 1 - static_cast<long>(sheet.empty_columns_skipped);
-      Slot s{p.attribute, static_cast<std::size_t>(std::max(0L, index)), "", true};
+      Slot s{p.attribute, static_cast<std::size_t>(std::max(0L, index)), "", true, "the layout's place"};
       if (index < 0)
         problems.push_back({where_of(source, sheet.rows[shape.id_row].line),
                             "the layout's " + std::string(to_string(p.attribute)) + " column " +
@@ -211,8 +185,17 @@ void assign_slots(const Sheet& sheet, Shape& shape, const SheetLayout& layout, c
       shape.row_slots.push_back(s);
     }
   } else {
-    shape.row_slots = slots_from_headers(shape.label_columns,
-                                         [&](std::size_t c) { return column_header(sheet, shape, c); });
+    std::vector<HeaderCandidate> columns;
+    for (std::size_t c : shape.label_columns) {
+      HeaderCandidate h{c, column_header(sheet, shape, c), {}, "label column " + std::to_string(sheet.column_of(c)), ""};
+      for (std::size_t r = shape.first_data_row; r < sheet.rows.size(); ++r) {
+        if (h.place.empty() && !cell_text(sheet.rows[r], c).empty())
+          h.place = where_of(source, sheet.rows[r].line, sheet.column_of(c));
+        h.values.push_back(cell_text(sheet.rows[r], c));
+      }
+      columns.push_back(std::move(h));
+    }
+    shape.row_slots = classify_headers(columns, false);
   }
   if (!column_places.empty()) {
     for (const auto& p : column_places) {
@@ -223,10 +206,20 @@ void assign_slots(const Sheet& sheet, Shape& shape, const SheetLayout& layout, c
                                 std::to_string(p.position) + " is not a header row of the grid"});
         continue;
       }
-      shape.column_slots.push_back({p.attribute, *index, row_label(sheet, shape, *index), true});
+      shape.column_slots.push_back({p.attribute, *index, row_label(sheet, shape, *index), true, "the layout's place"});
     }
   } else {
-    shape.column_slots = slots_from_headers(shape.header_rows, [&](std::size_t r) { return row_label(sheet, shape, r); });
+    std::vector<HeaderCandidate> rows;
+    for (std::size_t r : shape.header_rows) {
+      const CsvRecord& row = sheet.rows[r];
+      HeaderCandidate h{r, row_label(sheet, shape, r), {}, "header row " + std::to_string(row.line), ""};
+      for (std::size_t i = shape.first_data_column; i < row.fields.size(); ++i) {
+        if (h.place.empty() && !cell_text(row, i).empty()) h.place = where_of(source, row.line, sheet.column_of(i));
+        h.values.push_back(cell_text(row, i));
+      }
+      rows.push_back(std::move(h));
+    }
+    shape.column_slots = classify_headers(rows, true);
   }
   if (!problems.empty()) throw LoadError(problems);
   // Places given without an id: the tag (or the description) is the id, as

@@ -255,6 +255,10 @@ class AxisReader {
       if (g.voting && !g.by_merge) {
         g.open_ended = g.voting->word.has_value();
         g.expected = g.voting->tags;
+        // Every tag in the first row's cell (`BS-7020A, BS-7020B, BS-7020C`):
+        // the group is that row; the rows below are not its.
+        const SlotCell* t = l.cell(SheetAttribute::Tag);
+        if (t && !g.open_ended && split_tags(t->text).size() >= static_cast<std::size_t>(g.expected)) g.expected = 1;
       }
     }
     group_ = g;

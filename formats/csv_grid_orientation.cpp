@@ -96,12 +96,36 @@ Evidence corner_labels(const Sheet& sheet, const Shape& shape) {
     for (std::size_t col = shape.first_data_column; !header && col < sheet.rows[r].fields.size(); ++col)
       if (const Kind kind = kind_of(cell_text(sheet.rows[r], col)); kind != Kind::None)
         item(cell_text(sheet.rows[r], col), r, col, kind == Kind::Effects);
+    // A banner: labels of one kind, then of the other, along one row
+    // (`CAUSES` over the label columns, `EFFECTS` over the data): the left
+    // kind names the rows, whatever the distances.
+    Kind left = Kind::None;
+    {
+      std::map<Kind, std::pair<std::size_t, std::size_t>> span;  // first, last column of each kind
+      for (std::size_t col = 0; !header && col < sheet.rows[r].fields.size(); ++col)
+        if (const Kind kind = kind_of(cell_text(sheet.rows[r], col)); kind != Kind::None) {
+          auto [it, fresh] = span.emplace(kind, std::make_pair(col, col));
+          if (!fresh) it->second.second = col;
+        }
+      if (span.size() == 2) {
+        const auto& c = span[Kind::Causes];
+        const auto& e = span[Kind::Effects];
+        left = c.second < e.first ? Kind::Causes : e.second < c.first ? Kind::Effects : Kind::None;
+      }
+    }
     for (std::size_t col = 0; col < shape.first_data_column; ++col) {
       const std::string t = cell_text(sheet.rows[r], col);
       const Kind kind = kind_of(t);
       if (kind == Kind::None) continue;
       const std::size_t across = shape.first_data_column - 1 - col;  // to the column headers
       const std::size_t down = shape.first_data_row - 1 - r;          // to the row headers
+      // A banner (`CAUSES` over the label columns, `EFFECTS` over the data on
+      // the same row): the label left of the data names the rows.
+      if (left != Kind::None) {
+        const bool names_rows = kind == left;
+        item(t, r, col, names_rows ? kind == Kind::Causes : kind == Kind::Effects);
+        continue;
+      }
       if (across == down) continue;  // diagonal to both: names neither axis
       const bool names_columns = across < down;
       item(t, r, col, (kind == Kind::Causes) != names_columns);
@@ -206,7 +230,7 @@ std::string describe(const char* what, const Evidence& ev) {
 
 OrientationDecision decide_orientation(const Sheet& sheet, const Shape& shape,
                                        CsvOrientation requested, const std::string& source,
-                                       const std::string& given_by) {
+                                       const std::string& given_by, bool over_labels) {
   const Evidence labels = corner_labels(sheet, shape);
   const Evidence ids = id_patterns(sheet, shape);
   const Evidence headers = attribute_headers(sheet, shape);
@@ -225,11 +249,13 @@ OrientationDecision decide_orientation(const Sheet& sheet, const Shape& shape,
     // for its axes: read against all of them, every cause would become an
     // effect. Id patterns are only letters, and a given orientation may
     // overrule them.
-    std::set<CsvOrientation> words = labels.says;
+    // A layout's orientation is there to say what the sheet cannot: it wins
+    // over corner labels (a warning names them), not over attribute headers.
+    std::set<CsvOrientation> words = over_labels ? std::set<CsvOrientation>{} : labels.says;
     words.insert(headers.says.begin(), headers.says.end());
     if (!words.empty() && !words.count(requested)) {
       std::string against;
-      if (!labels.items.empty()) join_to(against, "; ", describe("the corner labels", labels));
+      if (!labels.items.empty() && !over_labels) join_to(against, "; ", describe("the corner labels", labels));
       if (!headers.items.empty()) join_to(against, "; ", describe("the attribute headers", headers));
       throw LoadError({{where_of(source, id_line),
                         against + "; " + given_by + " " + name_of(requested) +
@@ -238,10 +264,14 @@ OrientationDecision decide_orientation(const Sheet& sheet, const Shape& shape,
     }
     decision.orientation = requested;
     decision.evidence = "as given by " + given_by;
-    if (says.count(requested == CsvOrientation::CausesAsRows ? CsvOrientation::EffectsAsRows
-                                                             : CsvOrientation::CausesAsRows))
-      decision.disagreement = LoadIssue{where_of(source, id_line),
-                                        found + "; read as " + name_of(requested) + " as " + given_by + " says"};
+    const CsvOrientation other = requested == CsvOrientation::CausesAsRows ? CsvOrientation::EffectsAsRows
+                                                                           : CsvOrientation::CausesAsRows;
+    if (says.count(other))
+      decision.disagreement =
+          LoadIssue{where_of(source, id_line), found + "; read as " + name_of(requested) + " as " + given_by + " says" +
+                                                   (over_labels && labels.says.count(other)
+                                                        ? " (a layout wins over the corner labels)"
+                                                        : "")};
     return decision;
   }
   if (says.size() != 1) {

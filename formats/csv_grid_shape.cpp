@@ -92,6 +92,20 @@ bool ids_of_one_pattern(const std::vector<std::string>& cells) {
   return best >= 2 && 2 * best > filled;
 }
 
+// A row of headers: two or more attribute headers (Item, Tag No., Set point,
+// ...), more than half of its texts, and no mark.
+bool headers_only(const CsvRecord& row) {
+  int headers = 0, texts = 0;
+  for (std::size_t i = 0; i < row.fields.size(); ++i) {
+    const std::string t = cell_text(row, i);
+    if (t.empty()) continue;
+    if (parse_mark(t)) return false;
+    ++texts;
+    headers += attribute_of_header(t) ? 1 : 0;
+  }
+  return headers >= 2 && 2 * headers > texts;
+}
+
 struct Cells {
   int marks = 0;
   int other = 0;
@@ -204,12 +218,22 @@ class ShapeFinder {
     for (std::size_t r = 1; r < rows_.size() && !marked_row; ++r)
       if (row_cells(r, c0).marks > 0 && !label_row(r, c0) && !id_row(r, c0)) marked_row = r;
     if (!marked_row) return Round::NoGrid;
-    std::optional<std::size_t> id_row;
+    // The rows below the label columns' headers (Item | Description | Tag No.)
+    // are data, marked or not: the id row is that row or above it.
+    std::size_t id_end = *marked_row;
     for (std::size_t r = 0; r < *marked_row; ++r)
+      if (headers_only(rows_[r])) {
+        id_end = r + 1;
+        break;
+      }
+    std::optional<std::size_t> id_row;
+    for (std::size_t r = 0; r < id_end; ++r)
       if (row_cells(r, c0).non_blank() > 0 && !label_row(r, c0)) id_row = r;
     if (!id_row) return Round::NoGrid;
     r0 = *id_row + 1;
-    while (r0 < rows_.size() && (label_row(r0, c0) || blank(rows_[r0]))) ++r0;
+    // Below the id row: bands, empty rows, and the headers of the label
+    // columns when they have a row of their own (Item | Description | Tag No.).
+    while (r0 < rows_.size() && (label_row(r0, c0) || blank(rows_[r0]) || headers_only(rows_[r0]))) ++r0;
 
     std::optional<std::size_t> marked_column;
     for (std::size_t col = 1; col < width_ && !marked_column; ++col)
@@ -333,6 +357,10 @@ Fixed fixed_by(const Sheet& sheet, const SheetLayout& layout, const std::string&
       throw LoadError({{where_of(source, last_line), "the layout places a header in row " + std::to_string(last_line) +
                                                          ", which is no row of the grid (empty, or a legend row)"}});
     f.r0 = *r + 1;
+    // Below the header rows given, the row of the label columns' headers
+    // (Item | Description | Tag No. | ...) when the layout gives no place of
+    // theirs: headers only, never an element.
+    if (columns.empty() && *f.r0 < sheet.rows.size() && headers_only(sheet.rows[*f.r0])) ++*f.r0;
   }
   return f;
 }

@@ -43,11 +43,11 @@ WorkbookImportResult import_workbook(std::string_view bytes, const std::string& 
              "Office Open XML one ([Content_Types].xml)");
   for (Sheet& s : wb.sheets) s.sort();
   if (has_tables(wb)) {
-    if (!options.sheet.empty() || options.sheet_layout) {
+    if (!options.sheet.empty() || options.sheet_layout || options.orientation != CsvOrientation::Auto) {
       LoadIssue issue;
       issue.file = file_name;
       issue.what = "the workbook holds the six tables of 6.6.2 (sheet '" + std::string(kCausesSheet) +
-                   "'), which say where everything is; a sheet or a layout description is for a C&E grid";
+                   "'), which say where everything is; a sheet, an orientation or a layout description is for a C&E grid";
       throw LoadError({issue});
     }
     TablesImport t = workbook_to_matrix(wb, file_name);

@@ -45,6 +45,7 @@ struct WorkbookImportResult {
 struct WorkbookImportOptions {
   std::string sheet;                       // a name (any letter case) or a number 1-64; empty = the one with a grid
   std::optional<SheetLayout> sheet_layout; // its `sheet`, if any, is the sheet too
+  CsvOrientation orientation = CsvOrientation::Auto;  // as CsvImportOptions (the layout's must agree)
   std::map<std::string, model::LimitType> parameter_trip_sides;  // as CsvImportOptions
 };
 

@@ -209,6 +209,7 @@ WorkbookImportResult import_grid_workbook(const Workbook& wb, const std::string&
   csv.layout = CsvLayoutKind::Grid;
   csv.separator = ',';
   csv.sheet_layout = options.sheet_layout;
+  csv.orientation = options.orientation;
   csv.parameter_trip_sides = options.parameter_trip_sides;
   grid::SheetExtras extras = extras_of(sheet);
   const std::string remarks = options.sheet_layout ? options.sheet_layout->remarks_sheet : "";

@@ -68,12 +68,20 @@ MutationReport mutation_report(const model::Matrix& m, const testgen::TestSuite&
   r.refused = set.refused.size();
   std::vector<std::pair<std::string, std::string>> texts;
   for (const auto& t : suite.tests) texts.emplace_back(t.file_name, t.scenario_json);
-  checker::CancelToken cancel;
+  checker::CancelToken own;
+  checker::CancelToken& cancel = options.cancel ? *options.cancel : own;
   checker::EquivalenceOptions eo;
   eo.work = options.work;
   eo.timeout_s = options.timeout_s;
   eo.cancel = &cancel;
-  r.mutants.resize(set.mutants.size());
+  // Each mutant undecided until its task decides it: the cancel token may
+  // end the run first.
+  for (const auto& mu : set.mutants) {
+    MutantOutcome o{mu.id, mu.op, mu.element, mu.description, MutantStatus::Undecided, {}, {}};
+    o.equivalence.unknown = checker::UnknownReason::TimeLimit;
+    o.equivalence.reason = checker::to_string(o.equivalence.unknown);
+    r.mutants.push_back(std::move(o));
+  }
   checker::WorkQueue(options.jobs, cancel).run(set.mutants.size(), [&](std::size_t mi) {
     const auto& mu = set.mutants[mi];
     MutantOutcome o{mu.id, mu.op, mu.element, mu.description, MutantStatus::Undecided, {}, {}};

@@ -44,6 +44,9 @@ struct MutationOptions {
   checker::Work work = 20 * checker::kMega;  // each engine's budget of work per mutant
   double timeout_s = 0.0;                    // --timeout: the user's wall clock per mutant (0 = none)
   int jobs = 1;                              // mutants decided in parallel (the run's one work queue)
+  // The run's cancel token (--total-timeout): the mutants it leaves are
+  // undecided ("time limit").
+  checker::CancelToken* cancel = nullptr;
 };
 
 // Replays the suite on every mutant; decides equivalence of the mutants the

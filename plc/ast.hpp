@@ -32,7 +32,7 @@ enum class StandardBlock { Ton, Tof, Tp, RTrig, FTrig, Sr, Rs };
 // The pins of the standard blocks (IEC 61131-3 names).
 enum class Pin { In, Pt, Q, Et, Clk, S1, R, S, R1, Q1 };
 
-// The standard functions of the subset (P.5).
+// The standard functions of the subset (P.5.6).
 enum class Function { Min, Max, Abs, Sel, Limit };
 
 enum class PouKind { Program, FunctionBlock };

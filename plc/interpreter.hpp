@@ -23,7 +23,8 @@ Value default_value(Type t);  // FALSE, 0, 0.0, T#0s (P.3)
 
 class Interpreter {
  public:
-  // Runs the PROGRAM `pou` of a checked program (empty: its only PROGRAM).
+  // Runs the PROGRAM `pou` of a checked program (empty: its only PROGRAM),
+  // which must outlive the interpreter (it is read, not copied).
   // Throws std::invalid_argument when there is no such PROGRAM, or no name
   // is given and the file has several.
   explicit Interpreter(const Program& program, std::string_view pou = {});

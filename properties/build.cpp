@@ -11,7 +11,20 @@ const char* to_string(CauseField f) {
   switch (f) {
     case CauseField::Active: return "active";
     case CauseField::TripRequested: return "trip_requested";
+    case CauseField::TrippedTags: return "tripped_tags";
     case CauseField::Voting: return "voting";
+    case CauseField::Degraded: return "degraded";
+    case CauseField::Bypassed: return "bypassed";
+    case CauseField::SoftBypassed: return "soft_bypassed";
+    case CauseField::Inhibited: return "inhibited";
+    case CauseField::AckRequired: return "ack_required";
+    case CauseField::FirstOut: return "first_out";
+    case CauseField::HysteresisActive: return "hysteresis_active";
+    case CauseField::DeltaAlarm: return "delta_alarm";
+    case CauseField::Prewarning: return "prewarning";
+    case CauseField::TimerRunning: return "timer_running";
+    case CauseField::BypassTimeout: return "bypass_timeout";
+    case CauseField::BypassPrealarm: return "bypass_prealarm";
   }
   return "active";
 }
@@ -19,10 +32,17 @@ const char* to_string(CauseField f) {
 const char* to_string(EffectField f) {
   switch (f) {
     case EffectField::Active: return "active";
-    case EffectField::Bypassed: return "bypassed";
-    case EffectField::OverrideActive: return "override_active";
-    case EffectField::OutputDelayRunning: return "output_delay_running";
     case EffectField::Latched: return "latched";
+    case EffectField::OkToReset: return "ok_to_reset";
+    case EffectField::OverrideActive: return "override_active";
+    case EffectField::OverrideFailedTimeout: return "override_failed_timeout";
+    case EffectField::OverrideFailedCause: return "override_failed_cause";
+    case EffectField::OverridePrealarm: return "override_prealarm";
+    case EffectField::Bypassed: return "bypassed";
+    case EffectField::SoftBypassed: return "soft_bypassed";
+    case EffectField::Masked: return "masked";
+    case EffectField::PassThroughActive: return "pass_through_active";
+    case EffectField::OutputDelayRunning: return "output_delay_running";
   }
   return "active";
 }
@@ -52,7 +72,26 @@ Expr Builder::effect(int id, EffectField f) const {
   return Expr::of_observable(resolved(names_.effect_field(id, to_string(f))));
 }
 
+Expr Builder::effect_tag(int id, int k) const { return Expr::of_observable(resolved(names_.effect_tag(id, k))); }
+
+Expr Builder::tag(const std::string& name) const {
+  auto r = names_.tag(name);
+  if (auto* why = std::get_if<std::string>(&r)) throw std::logic_error("generated property: " + *why);
+  const TagRef t = std::get<TagRef>(std::move(r));
+  if (t.input) return Expr::input_value(*t.input, names_.inputs().tags()[*t.input].kind);
+  return Expr::of_observable(*t.value);
+}
+
 Expr Builder::bad(const std::string& tag) const { return Expr::input_bad(*input_tag(names_, tag).input); }
+
+Expr Builder::issued(model::CommandOp op, int cause, int effect, std::optional<bool> on) {
+  CommandPattern p;
+  p.op = op;
+  if (cause > 0) p.cause = cause;
+  if (effect > 0) p.effect = effect;
+  p.on = on;
+  return Expr::issued(std::move(p));
+}
 
 Expr Builder::simulate_issued(const std::string& tag) const {
   CommandPattern p;
@@ -79,12 +118,26 @@ Property Builder::invariant(std::string name, std::string description, Expr body
   return p;
 }
 
-Property Builder::reachable(std::string name, std::string description, Expr body) {
-  Property p;
-  p.name = std::move(name);
-  p.description = std::move(description);
+Property Builder::reachable(std::string name, std::string description, Expr body, std::vector<Expr> assumptions) {
+  Property p = invariant(std::move(name), std::move(description), std::move(body), std::move(assumptions));
   p.kind = PropertyKind::Reachable;
-  p.body = std::move(body);
+  return p;
+}
+
+Property Builder::never(std::string name, std::string description, Expr body, std::vector<Expr> assumptions) {
+  Property p = invariant(std::move(name), std::move(description), std::move(body), std::move(assumptions));
+  p.kind = PropertyKind::Never;
+  return p;
+}
+
+Property Builder::response(std::string name, std::string description, Expr trigger, Expr response, int cycles,
+                           std::vector<Expr> assumptions) {
+  Property p = invariant(std::move(name), std::move(description), Expr::boolean(true), std::move(assumptions));
+  p.kind = PropertyKind::Response;
+  p.body = Expr{};
+  p.trigger = std::move(trigger);
+  p.response = std::move(response);
+  p.within_cycles = cycles;
   return p;
 }
 
@@ -101,6 +154,13 @@ std::string block_text(const Property& p, const model::InputTable& inputs) {
   out += " {\n";
   for (const auto& a : p.assumptions) out += "  assume " + to_text(a.expr, inputs) + "\n";
   return out + "  " + statement_text(p, inputs) + "\n}\n";
+}
+
+std::string file_text(const PropertyFile& f, const model::InputTable& inputs) {
+  std::string out;
+  for (const auto& a : f.assumptions) out += "assume " + to_text(a.expr, inputs) + "\n";
+  for (const auto& p : f.properties) out += block_text(p, inputs);
+  return out;
 }
 
 }  // namespace cemv::properties::build

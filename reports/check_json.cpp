@@ -65,6 +65,7 @@ std::string check_json(const checker::CheckResult& r, const CheckReportInputs& i
   j["standard"] = r.standard;
   j["shard"] = optional_text(r.shard);
   j["interrupted"] = r.interrupted;
+  j["support_mode"] = checker::to_string(r.support_mode);
   auto counts = verdict_counts(r);
   ordered_json summary;
   summary["properties"] = r.properties.size();

@@ -42,12 +42,19 @@ void indented(std::ostringstream& out, const std::string& block, const char* ind
   while (std::getline(in, line)) out << indent << line << "\n";
 }
 
-void details(std::ostringstream& out, const PropertyResult& p, const CheckReportInputs& in) {
+// How a support was found, as the reports say it (docs/checker.md, "Support").
+std::string support_words(const PropertyResult& p, checker::SupportMode mode) {
+  if (mode == checker::SupportMode::Core) return "core of the proof, re-checked";
+  return p.support_minimal ? "minimal" : "not minimised";
+}
+
+void details(std::ostringstream& out, const PropertyResult& p, const CheckReportInputs& in,
+             checker::SupportMode mode) {
   for (const auto& n : p.notes) out << "    note: " << n << "\n";
   // FILE:LINE:COL: error: ..., so editors and CI logs can jump there.
   if (std::string line = finding_line(p, in); !line.empty()) out << "    " << line << "\n";
   if (p.verdict == PropertyVerdict::Proved && !p.support.empty()) {
-    out << "    support (" << (p.support_minimal ? "minimal" : "not minimised") << "):";
+    out << "    support (" << support_words(p, mode) << "):";
     for (const auto& s : p.support) out << " " << s.key;
     out << "\n";
   }
@@ -84,7 +91,7 @@ std::string check_text(const checker::CheckResult& r, const CheckReportInputs& i
         << std::string(name_width - p.name.size() + 2, ' ') << method
         << std::string(method_width - method.size() + 2, ' ') << (p.cached ? "cached" : seconds_text(p.seconds))
         << "\n";
-    details(out, p, in);
+    details(out, p, in, r.support_mode);
     total += p.seconds;
   }
   if (r.standard && !r.unsupported.empty()) {

@@ -336,7 +336,11 @@ class Writer {
     if (p.verdict == PropertyVerdict::Proved) {
       std::string support;
       for (const auto& s : p.support) support += (support.empty() ? "" : "\n") + support_text(m_, s);
-      rows.push_back({p.support_minimal ? "Rests on (minimal support)" : "Rests on (support)",
+      // Which mode found it (cemv check --support, docs/checker.md "Support").
+      const bool core = in_.check.support_mode == checker::SupportMode::Core;
+      rows.push_back({core ? "Rests on (support: the proof's unsat core, re-checked)"
+                      : p.support_minimal ? "Rests on (minimal support)"
+                                          : "Rests on (support)",
                       support.empty() ? "not computed for this proof (docs/checker.md, \"Support\")" : support});
     }
     Table t = pairs(rows);

@@ -77,6 +77,7 @@ std::string evidence_json(const model::Matrix& m, const EvidenceInputs& in) {
   j["format"] = "cemv-evidence/1";
   j["tool"] = {{"name", "cemv"}, {"version", in.check.tool_version}};
   j["date"] = in.date;
+  j["support_mode"] = checker::to_string(in.check.support_mode);
   j["matrix"] = {{"name", m.name},
                  {"title", m.title},
                  {"file", in.matrix_file},

@@ -9,8 +9,6 @@
 
 #include "checker/check.hpp"
 #include "checker/engines/portfolio.hpp"
-#include "formats/diagnostics.hpp"
-#include "properties/parser.hpp"
 
 namespace cemv::response {
 
@@ -49,25 +47,9 @@ Probe time_limit() {
   return none;
 }
 
-// A property file's text decided by the checker with `options`.
-checker::CheckResult check_text(const model::Matrix& m, const std::string& name, const std::string& text,
-                                const checker::CheckOptions& options) {
-  properties::PropertyFile file;
-  try {
-    file = properties::parse_properties(text, m, "cemv-response:" + name);
-  } catch (const formats::LoadError& e) {
-    // cemv wrote this text: a parse error is cemv's fault, not the input's.
-    std::string what;
-    for (const auto& i : e.issues()) what += "\n" + i.str();
-    throw std::logic_error("cemv response wrote a property the parser refuses:" + what + "\n" + text);
-  }
-  return checker::check_properties(m, {file}, options);
-}
-
-// The answer for the text's one property.
-Probe check_one(const model::Matrix& m, const std::string& name, const std::string& text,
-                const checker::CheckOptions& options) {
-  checker::CheckResult r = check_text(m, name, text, options);
+// The answer for the file's one property.
+Probe check_one(const model::Matrix& m, const properties::PropertyFile& file, const checker::CheckOptions& options) {
+  checker::CheckResult r = checker::check_properties(m, {file}, options);
   Probe out;
   const checker::PropertyResult& pr = r.properties.at(0);
   out.verdict = pr.verdict;
@@ -110,7 +92,7 @@ Probe decide(const model::Matrix& m, const Path& p, Mode mode, long long cycles,
   // steps: readable as it is, and the core-guided search over 33 to 64
   // cycles was most of the CPU of such a probe (compressor: 2 s of 2.2 s).
   if (engines.narrow == std::vector<Method>{Method::AcceleratedBmc}) options.shrink_max_cycles = 0;
-  return check_one(m, name, response_property_text(m, p, mode, cycles, name), options);
+  return check_one(m, response_property(m, p, mode, cycles, name), options);
 }
 
 // The deepest induction over an XooN bound's member lemmas: an effect's
@@ -144,8 +126,8 @@ std::optional<Probe> decide_from_member_lemmas(const model::Matrix& m, const Pat
   // A vacuous lemma (its assumptions unsatisfiable) constrains no run the
   // bound judges: the bound states those assumptions too.
   options.vacuity = false;
-  checker::CheckResult proved = check_text(m, name + ".members", lemmas->property_text, options);
-  std::vector<std::string> assumed;
+  checker::CheckResult proved = checker::check_properties(m, {lemmas->file}, options);
+  std::vector<properties::Expr> assumed;
   std::set<std::string> methods;
   long long slowest = 0;  // the longest on-delay among the members proved
   for (std::size_t i = 0; i < lemmas->names.size(); ++i) {
@@ -167,7 +149,7 @@ std::optional<Probe> decide_from_member_lemmas(const model::Matrix& m, const Pat
   // but they witness that its demand can be held (the vacuity question).
   checker::CheckOptions bound_options = probe_options(o, {plain, plain}, runs, o.work / 2, *left);
   bound_options.max_k = static_cast<int>(std::min<long long>(kMaxMemberLemmaK, cycles - slowest + 2));
-  Probe bound = check_one(m, name, response_property_text(m, p, mode, cycles, name, assumed), bound_options);
+  Probe bound = check_one(m, response_property(m, p, mode, cycles, name, assumed), bound_options);
   if (bound.verdict == checker::PropertyVerdict::Proved) {
     std::string how;
     for (const auto& x : methods) how += (how.empty() ? "" : ", ") + x;
@@ -220,7 +202,7 @@ Probe decide_probe_within(const model::Matrix& m, const Path& p, Mode mode, long
       checker::CheckOptions only = probe_options(o, engines, runs, o.work, *left);
       only.directed_runs_only = true;
       const std::string name = property_name(p, mode);
-      Probe r = check_one(m, name, response_property_text(m, p, mode, cycles, name), only);
+      Probe r = check_one(m, response_property(m, p, mode, cycles, name), only);
       if (r.verdict == checker::PropertyVerdict::Falsified) return r;
     }
     if (auto r = decide_from_member_lemmas(m, p, mode, cycles, o, clock, runs)) return *r;

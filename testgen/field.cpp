@@ -11,16 +11,14 @@
 #include <map>
 #include <set>
 
-#include <nlohmann/json.hpp>
 
-#include "checker/counterexample.hpp"
+#include "formats/scenario_writer.hpp"
 #include "checker/prover.hpp"
 #include "checker/replay.hpp"
 #include "formats/matrix_json.hpp"
 #include "formats/scenario.hpp"
 #include "model/text.hpp"
 #include "properties/evaluator.hpp"
-#include "properties/parser.hpp"
 #include "testgen/field_words.hpp"
 
 namespace cemv::testgen {
@@ -475,44 +473,22 @@ FieldTest build_loop(const model::Matrix& m, const FieldOptions& o, const LoopPl
   else
     for (const auto& l : left) t.steps.back().expected.push_back("Not as in step 1: " + l);
 
-  // The scenario: every technician observable at every checkpoint.
-  using nlohmann::ordered_json;
-  ordered_json doc;
-  doc["format"] = formats::kScenarioFormat;
-  if (!o.matrix_ref.empty()) doc["matrix"] = o.matrix_ref;
-  ordered_json steps = ordered_json::array();
+  // The scenario: every technician observable at every checkpoint, every
+  // input stated in the first step, each field step a step of its own.
+  formats::ScenarioRun run;
+  run.matrix = o.matrix_ref;
+  run.first_step_states_every_input = true;
+  run.durations = formats::Durations::Milliseconds;
   const auto& in = b.inputs();
+  run.cycles = in;
   std::map<std::size_t, int> field_step;  // first cycle -> step number
   for (std::size_t s = 0; s < t.steps.size(); ++s) {
     t.steps[s].number = static_cast<int>(s + 1);
     field_step[t.steps[s].first_cycle] = t.steps[s].number;
   }
-  model::CycleInput prev = model::default_cycle_input(m);
   for (std::size_t k = 0; k < in.size();) {
-    ordered_json st;
-    auto fs = field_step.find(k);
-    if (fs != field_step.end()) st["description"] = "step " + std::to_string(fs->second);
-    ordered_json changed = ordered_json::object();
-    for (std::size_t i = 0; i < b.table().size(); ++i)
-      if (in[k].tags[i].value != prev.tags[i].value || in[k].tags[i].bad_quality != prev.tags[i].bad_quality ||
-          k == 0) {  // the first step states every input
-        const auto& tag = b.table().tags()[i];
-        ordered_json v = tag.kind == model::TagKind::Bool ? ordered_json(in[k].tags[i].value != 0.0f)
-                                                          : ordered_json::parse(model::float_text(in[k].tags[i].value));
-        if (in[k].tags[i].bad_quality || prev.tags[i].bad_quality) {
-          ordered_json q;
-          q["value"] = v;
-          q["quality"] = in[k].tags[i].bad_quality ? "bad" : "good";
-          v = q;
-        }
-        changed[tag.name] = v;
-      }
-    if (!changed.empty()) st["inputs"] = changed;
-    if (!in[k].commands.empty()) {
-      ordered_json cmds = ordered_json::array();
-      for (const auto& c : in[k].commands) cmds.push_back(ordered_json::parse(checker::command_text(m, c)));
-      st["commands"] = cmds;
-    }
+    formats::WrittenStep st;
+    if (auto fs = field_step.find(k); fs != field_step.end()) st.description = "step " + std::to_string(fs->second);
     std::size_t n = 1;
     while (k + n < in.size() && !b.checkpoints().count(k + n - 1) && !field_step.count(k + n) &&
            in[k + n].commands.empty()) {
@@ -522,21 +498,19 @@ FieldTest build_loop(const model::Matrix& m, const FieldOptions& o, const LoopPl
       if (!same) break;
       ++n;
     }
-    st["ms"] = static_cast<std::uint64_t>(n) * m.cycle_ms;
+    st.cycles = n;
     const std::size_t last = k + n - 1;
     if (b.checkpoints().count(last)) {
-      ordered_json e = ordered_json::object();
-      for (std::size_t i : b.shown()) e[b.all()[i].key] = b.run()[last][i] != 0;
-      st["expect"] = e;
+      std::vector<formats::ExpectedValue> e;
+      for (std::size_t i : b.shown()) e.push_back({b.all()[i].key, model::FieldType::Bool, b.run()[last][i] != 0});
+      st.expect = std::move(e);
     }
-    steps.push_back(st);
-    prev = in[k];
+    run.steps.push_back(std::move(st));
     k += n;
   }
-  doc["steps"] = steps;
+  t.scenario_json = formats::scenario_text(m, run);
   t.inputs = in;
   t.cycles = in.size();
-  t.scenario_json = doc.dump(1) + "\n";
   for (auto& s : t.steps) {
     t.field_s += 30 * s.actions.size() * (s.phase == "Initial conditions" ? 0 : 1) + s.hold_ms / 1000 +
                  10 * s.expected.size();
@@ -623,7 +597,7 @@ FieldSuite generate_field_suite(const model::Matrix& m, const FieldOptions& o) {
 
   // Which objectives each step witnesses (the concrete evaluator on the run).
   std::vector<Objective> all = derive_objectives(m);
-  const properties::PropertyFile file = properties::parse_properties(objectives_file_text(all), m, "objectives");
+  const properties::PropertyFile file = objectives_file(all);
   properties::Evaluator ev(m);
   for (auto& ob : all) s.objectives.push_back({std::move(ob), -1, 0, ""});
   std::vector<bool> elsewhere(s.objectives.size(), false);

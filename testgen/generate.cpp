@@ -20,7 +20,6 @@
 #include "formats/scenario.hpp"
 #include "properties/evaluator.hpp"
 #include "properties/monitor.hpp"
-#include "properties/parser.hpp"
 #include "testgen/explore.hpp"
 #include "testgen/scenario_writer.hpp"
 #include "testgen/search.hpp"
@@ -62,7 +61,25 @@ class GroupRun {
            std::vector<ObjectiveResult>& results, const std::vector<std::size_t>& members, std::mutex& report)
       : m_(m), options_(o), file_(file), results_(results), members_(members), report_(report), search_(m, o) {}
 
+  // The group's tests; when the run's cancel token or wall clock ends it,
+  // the tests made so far (each already replayed green), every objective
+  // not yet decided left undecided ("time limit").
   std::vector<Draft> run() {
+    try {
+      decide_all();
+    } catch (const checker::Interrupted&) {
+      if (open_ && drafts_.back().witnesses.empty()) drafts_.pop_back();
+      for (std::size_t i : members_) {
+        ObjectiveResult& res = results_[i];
+        if (res.status != ObjectiveStatus::Undecided || !res.reason.empty()) continue;
+        res.reason = checker::to_string(checker::UnknownReason::TimeLimit);
+      }
+    }
+    return std::move(drafts_);
+  }
+
+ private:
+  void decide_all() {
     for (std::size_t i : members_) {
       if (results_[i].status == ObjectiveStatus::Covered) continue;
       const properties::Property& p = file_.properties[i];
@@ -105,7 +122,6 @@ class GroupRun {
       }
       announce(res);
     }
-    return std::move(drafts_);
   }
 
   bool proved(std::size_t i, const Goal& g) {
@@ -119,7 +135,6 @@ class GroupRun {
     return true;
   }
 
- private:
   // The open test may be extended while it is shorter than the step limit
   // (docs/testgen.md, "Synthesis and minimisation"): steps are what a field
   // engineer performs, so a hold of 8 hours counts as one step, not as 288,000
@@ -324,7 +339,7 @@ TestSuite generate_tests(const model::Matrix& m, const TestgenOptions& options) 
   for (auto& o : all)
     if ((!options.sif || o.sif == *options.sif) && (!options.elements || options.elements->count(o.element)))
       chosen.push_back(std::move(o));
-  const properties::PropertyFile file = properties::parse_properties(objectives_file_text(chosen), m, "objectives");
+  const properties::PropertyFile file = objectives_file(chosen);
   for (auto& o : chosen) {
     ObjectiveResult r;
     r.objective = std::move(o);
@@ -342,11 +357,15 @@ TestSuite generate_tests(const model::Matrix& m, const TestgenOptions& options) 
   TestgenOptions mine = options;
   if (!mine.cancel) mine.cancel = &own;
   checker::WorkQueue queue(options.jobs, *mine.cancel);
-  const std::size_t ran = queue.run(order.size(), [&](std::size_t g) {
+  queue.run(order.size(), [&](std::size_t g) {
     drafts[g] = GroupRun(m, mine, file, suite.objectives, *order[g], report).run();
   });
-  // A caller's cancel (a bound of its own): the suite is not complete.
-  if (ran < order.size()) throw checker::Interrupted{};
+  // The cancel token (--total-timeout) ended the run first: the groups it
+  // did not reach are undecided, the suite holds the tests made before.
+  if (mine.cancel->cancelled())
+    for (auto& r : suite.objectives)
+      if (r.status == ObjectiveStatus::Undecided && r.reason.empty())
+        r.reason = checker::to_string(checker::UnknownReason::TimeLimit);
 
   // The given tests first (C001, ...), each checked at its last cycle.
   for (const GivenTest& g : options.given) {

@@ -2,6 +2,7 @@
 // a `reachable` property with a stable id and a sentence, derived from the
 // matrix alone, in a fixed order (causes by id, then per effect by id its
 // intersections and its own behaviour, then matrix-level functions).
+#include "properties/build.hpp"
 #include "testgen/objective_builder.hpp"
 
 namespace cemv::testgen {
@@ -31,9 +32,18 @@ std::vector<Objective> derive_objectives(const model::Matrix& m) {
 
 // Each objective carries its own assumptions (no tag simulation, except the
 // `reference` objectives: ObjectiveBuilder::add).
-std::string objectives_file_text(const std::vector<Objective>& objectives) {
+properties::PropertyFile objectives_file(const std::vector<Objective>& objectives) {
+  properties::PropertyFile f;
+  f.file_name = "objectives";
+  f.properties.reserve(objectives.size());
+  for (const auto& o : objectives) f.properties.push_back(o.property);
+  return f;
+}
+
+std::string objectives_file_text(const model::Matrix& m, const std::vector<Objective>& objectives) {
+  const model::InputTable inputs(m);
   std::string s = "# Coverage objectives (cemv testgen, docs/testgen.md)\n\n";
-  for (const auto& o : objectives) s += "# " + o.text + "\n" + o.property + "\n";
+  for (const auto& o : objectives) s += "# " + o.text + "\n" + properties::build::block_text(o.property, inputs) + "\n";
   return s;
 }
 

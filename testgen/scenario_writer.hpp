@@ -1,9 +1,10 @@
-// Internal to testgen/: a test as a cemv-scenario/1 file (docs/scenario.md).
-// Unlike a checker counterexample (one expectation block at the end), a test
-// checks at every checkpoint: each cycle where it witnesses an objective ends
-// a step whose `expect` lists what an engineer can observe there (output
-// tags, cause and effect active, trip requests, latches, alarms) and the
-// signals of the objectives witnessed. Durations are written in ms.
+// Internal to testgen/: a test as a cemv-scenario/1 file (docs/scenario.md),
+// written by the format's one writer (formats/scenario_writer.hpp). Unlike a
+// checker counterexample (one expectation block at the end), a test checks at
+// every checkpoint: each cycle where it witnesses an objective ends a step
+// whose `expect` lists what an engineer can observe there (output tags, cause
+// and effect active, trip requests, latches, alarms) and the signals of the
+// objectives witnessed. Durations are written in ms.
 #pragma once
 
 #include <string>
@@ -25,14 +26,11 @@ struct Checkpoint {
 // objectives' own: what can be seen in the field.
 std::vector<model::Observable> field_observables(const model::Matrix& m);
 
-// Whether a new step starts at cycle k: the first cycle, a cycle after a
-// checkpoint, a cycle with operator commands, or one whose inputs differ from
-// the cycle before. Any other cycle holds the inputs of the step before, so a
-// hold of hours is one step ("Wait 8 h"), however many cycles it spans.
-bool starts_step(const std::vector<model::CycleInput>& inputs, std::size_t k, bool after_checkpoint);
-
 // The number of steps test_scenario_json writes for these inputs and
-// checkpoint cycles (0-based): what bounds the length of a test.
+// checkpoint cycles (0-based): what bounds the length of a test. A step
+// starts at the first cycle, after a checkpoint, at a cycle with operator
+// commands, or where the inputs change (formats::step_lengths), so a hold of
+// hours is one step ("Wait 8 h"), however many cycles it spans.
 std::size_t count_steps(const std::vector<model::CycleInput>& inputs, const std::vector<std::size_t>& checkpoints);
 
 // `observables`: the runtime's snapshot (model::observables order) per cycle.

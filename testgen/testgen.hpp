@@ -21,6 +21,7 @@
 #include "model/matrix.hpp"
 #include "model/node.hpp"
 #include "model/vocabulary.hpp"
+#include "properties/ast.hpp"
 
 namespace cemv::testgen {
 
@@ -33,7 +34,7 @@ struct Objective {
   std::string text;      // the sentence an engineer reads
   model::Node element;   // the cause or effect it is about (matrix level: the first element it names)
   int sif = 0;           // the SIF group the test of this objective is filed under (0 = none)
-  std::string property;  // the objective as a property: "property ID { reachable EXPR }"
+  properties::Property property;  // the objective: `reachable EXPR` with its assumptions, named obj_ID
   int horizon = 0;       // cycles a witness needs at least (timers): a search hint
   std::vector<std::string> observe;  // observable keys its checkpoint shows first (checklist)
   // The witness may force tags (simulate_tag / stop_simulation, O.8, E.10):
@@ -43,9 +44,12 @@ struct Objective {
 };
 // Every objective of the matrix, in a fixed order (element, then kind).
 std::vector<Objective> derive_objectives(const model::Matrix& m);
-// The objectives as one property file (the text derive_objectives' properties
-// form, with the file's assumptions): what `cemv check` could decide too.
-std::string objectives_file_text(const std::vector<Objective>& objectives);
+// The objectives as one property file ("objectives"), each property with its
+// own assumptions.
+properties::PropertyFile objectives_file(const std::vector<Objective>& objectives);
+// The same as text for people, each property after its sentence as a
+// comment: what `cemv check` could decide too.
+std::string objectives_file_text(const model::Matrix& m, const std::vector<Objective>& objectives);
 
 struct ObjectiveResult {
   Objective objective;
@@ -122,8 +126,9 @@ struct TestgenOptions {
 };
 
 // Throws checker::InternalError when a test does not replay green on the
-// runtime (never a silent pass), checker::Interrupted when the options'
-// cancel token ends the run first.
+// runtime (never a silent pass). When the options' cancel token ends the run
+// first, the suite holds the tests made until then and every objective not
+// decided is undecided ("time limit").
 TestSuite generate_tests(const model::Matrix& m, const TestgenOptions& options = {});
 
 // ---- replay -----------------------------------------------------------------

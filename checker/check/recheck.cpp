@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <set>
 
 #include "checker/context_pool.hpp"
 #include "checker/engines/solving.hpp"
@@ -104,6 +105,44 @@ void recheck_proof(const SafetyProblem& problem, const ProverResult& result, con
                           "\ninvariant:\n" + result.invariant.text());
     s.pop();
   }
+}
+
+std::optional<std::vector<z3::expr>> proof_core(const SafetyProblem& problem, const ProverResult& result,
+                                                const std::vector<z3::expr>& literals,
+                                                const std::vector<z3::expr>& fixed, Work work, const Limits& limits) {
+  std::vector<Obligation> obs;
+  try {
+    obs = obligations(problem, result);
+  } catch (const z3::exception&) {
+    return std::nullopt;  // an invariant over variables this problem does not have
+  }
+  z3::context& ctx = problem.ts->ctx();
+  z3::solver s(ctx);
+  for (const auto& f : fixed) s.add(f);
+  z3::expr_vector assumptions(ctx);
+  for (const auto& l : literals) assumptions.push_back(l);
+  std::vector<z3::expr> core;
+  std::set<unsigned> in_core;
+  Watchdog watchdog(ctx, limits);
+  WorkMeter meter(ctx, work);
+  for (const auto& o : obs) {
+    s.push();
+    s.add(o.formula);
+    z3::check_result cr = z3::unknown;
+    try {
+      cr = check_within(s, meter, assumptions);
+    } catch (const z3::exception&) {
+      stop_if_interrupted(limits);
+      return std::nullopt;
+    }
+    stop_if_interrupted(limits);
+    if (cr != z3::unsat) return std::nullopt;
+    const z3::expr_vector used = s.unsat_core();
+    for (unsigned i = 0; i < used.size(); ++i)
+      if (in_core.insert(used[i].id()).second) core.push_back(used[i]);
+    s.pop();
+  }
+  return core;
 }
 
 void recheck_proof(const ProblemFactory& make, const ProverResult& result, const Limits* limits) {

@@ -8,6 +8,7 @@
 // learned clauses, a wrong rewrite) takes part in the check.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,18 @@ void recheck_proof(const ProblemFactory& make, const ProverResult& result, const
 // that `assumption` holds in every cycle and `good` is false in the last one.
 void replay_counterexample(const SafetyProblem& problem, const Trace& cex, const Limits* limits = nullptr);
 void replay_counterexample(const ProblemFactory& make, const Trace& cex, const Limits* limits = nullptr);
+
+// The activation literals a proof needs (docs/checker.md, "Support"): the
+// proof obligations of `result` (as recheck_proof states them) on a problem
+// whose cells are guarded by `literals` (encoder::EncodeOptions::guard_cells;
+// `fixed`: guards held TRUE, not asked about), each checked with every
+// literal assumed TRUE, the union of their unsat cores. nullopt when an
+// obligation is not unsat under them within `work` (the proof does not carry
+// over to this problem, or the budget ran out) or the invariant does not
+// parse here; Interrupted when `limits` end it.
+std::optional<std::vector<z3::expr>> proof_core(const SafetyProblem& problem, const ProverResult& result,
+                                                const std::vector<z3::expr>& literals,
+                                                const std::vector<z3::expr>& fixed, Work work, const Limits& limits);
 
 // Either of the two above, by verdict; Unknown needs no check.
 void recheck(const ProblemFactory& make, const ProverResult& result, const Limits* limits = nullptr);

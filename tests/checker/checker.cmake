@@ -50,3 +50,12 @@ if(TARGET cemv_checker)
   add_executable(cemv_checker_probe ${CMAKE_CURRENT_LIST_DIR}/probe.cpp)
   target_link_libraries(cemv_checker_probe PRIVATE cemv_checker cemv_testsupport)
 endif()
+
+# The support of proofs: core, full and off, each reported support re-proved
+# on the matrix without the other cells (issue 38, section 1).
+if(TARGET cemv_checker)
+  add_executable(test_checker_support ${CMAKE_CURRENT_LIST_DIR}/test_support.cpp)
+  target_link_libraries(test_checker_support PRIVATE cemv_checker GTest::gtest_main)
+  target_compile_definitions(test_checker_support PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  gtest_discover_tests(test_checker_support DISCOVERY_TIMEOUT 60)
+endif()

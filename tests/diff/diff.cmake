@@ -53,7 +53,8 @@ if(TARGET cemv_diff)
   set(LSST_OLD ${CEMV_LSST_DIR}/lsst-tma-interlock-table-2023-10-05.csv)
   set(LSST_NEW ${CEMV_LSST_DIR}/lsst-tma-interlock-table.csv)
   add_test(NAME diff_lsst_pair
-    COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/lsst_pair.sh $<TARGET_FILE:cemv> ${LSST_OLD} ${LSST_NEW} ${DIFF_TMP}/lsst)
+    COMMAND ${CEMV_WITH_LSST} bash ${CMAKE_CURRENT_LIST_DIR}/lsst_pair.sh $<TARGET_FILE:cemv> ${LSST_OLD} ${LSST_NEW} ${DIFF_TMP}/lsst)
+  cemv_external_test(diff_lsst_pair)
 endif()
 
 # `cemv testgen NEW --changed-from OLD`: the tests the change needs.

@@ -1,27 +1,29 @@
 # Spreadsheet import/export (6.6, docs/csv.md).
 add_executable(test_formats_csv ${CMAKE_CURRENT_LIST_DIR}/test_csv.cpp ${CMAKE_CURRENT_LIST_DIR}/test_csv_grid.cpp
   ${CMAKE_CURRENT_LIST_DIR}/test_csv_layouts.cpp ${CMAKE_CURRENT_LIST_DIR}/test_sheet_layout.cpp
-  ${CMAKE_CURRENT_LIST_DIR}/test_csv_vendor.cpp)
+  ${CMAKE_CURRENT_LIST_DIR}/test_csv_vendor.cpp ${CMAKE_CURRENT_LIST_DIR}/test_csv_stacked_header.cpp)
 target_link_libraries(test_formats_csv PRIVATE cemv_formats GTest::gtest_main)
 target_compile_definitions(test_formats_csv PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}" CEMV_LSST_DIR="${CEMV_LSST_DIR}")
-gtest_discover_tests(test_formats_csv DISCOVERY_MODE PRE_TEST)
+# The tests that read the published LSST tables exit 77 where they are absent
+# (tests/support/external_tables.hpp): CTest reports them skipped.
+gtest_discover_tests(test_formats_csv DISCOVERY_MODE PRE_TEST PROPERTIES SKIP_RETURN_CODE 77)
 
 # The command line: exit statuses and messages (cwd = repo root).
 set(CSV_CASES tests/formats/csv_cases)
 set(LSST ${CEMV_LSST_DIR}/lsst-tma-interlock-table.csv)
 set(CSV_TMP ${CMAKE_CURRENT_BINARY_DIR}/csv_cli)
 file(MAKE_DIRECTORY ${CSV_TMP})
-cemv_cli_test(NAME cli_import_csv_lsst EXIT 0
+cemv_cli_test(NAME cli_import_csv_lsst EXTERNAL EXIT 0
   MATCH ":35:2: warning: cause id 'TMA-D-40' repeats line 25.*kept as separate causes"
   COMMAND $<TARGET_FILE:cemv> import-csv ${LSST} -o ${CSV_TMP}/lsst.json)
-cemv_cli_test(NAME cli_import_csv_lsst_stdout EXIT 0
+cemv_cli_test(NAME cli_import_csv_lsst_stdout EXTERNAL EXIT 0
   MATCH "\"name\": \"TMA_D_40_2\""
   COMMAND $<TARGET_FILE:cemv> import-csv ${LSST})
 # What the grid does not state, validate reports: the override time of each effect with R.
-cemv_cli_test(NAME cli_import_csv_lsst_validate EXIT 1
+cemv_cli_test(NAME cli_import_csv_lsst_validate EXTERNAL EXIT 1
   MATCH "TMA_A_1 .*override.*TMA_A_2 .*override.*TMA_A_4 .*override.*TMA_A_5 .*override"
   COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/csv_cases/cli_import_then_validate.sh $<TARGET_FILE:cemv> ${LSST} ${CSV_TMP}/validate)
-cemv_cli_test(NAME cli_import_csv_forced_grid EXIT 0 MATCH "effect id 'TMA-A-17' out of order"
+cemv_cli_test(NAME cli_import_csv_forced_grid EXTERNAL EXIT 0 MATCH "effect id 'TMA-A-17' out of order"
   COMMAND $<TARGET_FILE:cemv> import-csv --layout grid ${LSST} -o ${CSV_TMP}/lsst3.json)
 cemv_cli_test(NAME cli_import_csv_separator_option EXIT 0 MATCH "\"name\": \"E_2\""
   COMMAND $<TARGET_FILE:cemv> import-csv --separator tab --orientation causes-as-rows ${CSV_CASES}/tab_grid.tsv)
@@ -40,7 +42,7 @@ cemv_cli_test(NAME cli_import_csv_bad_values EXIT 2
 cemv_cli_test(NAME cli_import_csv_not_a_grid EXIT 2 MATCH "not a C&E grid"
   COMMAND $<TARGET_FILE:cemv> import-csv ${CSV_CASES}/not_a_grid.csv)
 cemv_cli_test(NAME cli_import_csv_bad_layout EXIT 2 MATCH "layout"
-  COMMAND $<TARGET_FILE:cemv> import-csv --layout sideways ${LSST})
+  COMMAND $<TARGET_FILE:cemv> import-csv --layout sideways ${CSV_CASES}/tab_grid.tsv)
 cemv_cli_test(NAME cli_export_csv_missing_file EXIT 2 MATCH "error:"
   COMMAND $<TARGET_FILE:cemv> export-csv ${CSV_CASES}/no_such_matrix.json)
 # Export, import, export again: byte-identical CSV, and the same canonical matrix.
@@ -51,16 +53,16 @@ foreach(example tank-overfill burner-management pipeline-hipps compressor)
 endforeach()
 
 # Grid layouts (docs/csv.md "The grid layout"): the summary, --orientation, --strict and grid export.
-cemv_cli_test(NAME cli_import_csv_lsst_summary EXIT 0
+cemv_cli_test(NAME cli_import_csv_lsst_summary EXTERNAL EXIT 0
   MATCH "note: .*read 36 causes \\(rows 3-38, ids in column 2\\), 17 effects \\(columns 3-19, ids in row 2\\), 102 intersections; orientation causes-as-rows from the corner labels"
   COMMAND $<TARGET_FILE:cemv> import-csv ${LSST} -o ${CSV_TMP}/lsst_summary.json)
-cemv_cli_test(NAME cli_import_csv_transposed_auto EXIT 0
+cemv_cli_test(NAME cli_import_csv_transposed_auto EXTERNAL EXIT 0
   MATCH "transposed table: 102 intersections as published; note: .*read 36 causes \\(columns 3-38, ids in row 2\\), 17 effects \\(rows 3-19, ids in column 2\\), 102 intersections; orientation effects-as-rows from the corner labels"
   COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/csv_cases/cli_transposed_lsst.sh $<TARGET_FILE:cemv> ${LSST} ${CSV_TMP}/transposed_auto)
-cemv_cli_test(NAME cli_import_csv_transposed_orientation EXIT 0
+cemv_cli_test(NAME cli_import_csv_transposed_orientation EXTERNAL EXIT 0
   MATCH "transposed table: 102 intersections as published; note: .*orientation effects-as-rows as given by --orientation"
   COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/csv_cases/cli_transposed_lsst.sh $<TARGET_FILE:cemv> ${LSST} ${CSV_TMP}/transposed_option --orientation effects-as-rows)
-cemv_cli_test(NAME cli_import_csv_strict_refuses_lsst EXIT 2
+cemv_cli_test(NAME cli_import_csv_strict_refuses_lsst EXTERNAL EXIT 2
   MATCH "lsst-tma-interlock-table.csv: error: 11 import warnings are an error under --strict"
   COMMAND $<TARGET_FILE:cemv> import-csv --strict ${LSST} -o ${CSV_TMP}/lsst_strict.json)
 cemv_cli_test(NAME cli_import_csv_strict_clean_grid EXIT 0
@@ -85,16 +87,16 @@ endforeach()
 file(WRITE ${CSV_TMP}/bad_layout.json "{\"format\": \"cemv-sheet-layout/1\",\n \"marks\": {\"NP\": {\"type\": \"nothing\"}}}\n")
 cemv_cli_test(NAME cli_import_csv_sheet_layout_malformed EXIT 2
   MATCH "bad_layout.json:2:19: error: marks.NP.type: must be N, S, V, R, X, \\* or none, not \"nothing\""
-  COMMAND $<TARGET_FILE:cemv> import-csv ${LSST} --sheet-layout ${CSV_TMP}/bad_layout.json -o ${CSV_TMP}/bad_layout_out.json)
-cemv_cli_test(NAME cli_import_csv_sheet_layout_saved_and_given_again EXIT 0
+  COMMAND $<TARGET_FILE:cemv> import-csv ${CSV_CASES}/tab_grid.tsv --sheet-layout ${CSV_TMP}/bad_layout.json -o ${CSV_TMP}/bad_layout_out.json)
+cemv_cli_test(NAME cli_import_csv_sheet_layout_saved_and_given_again EXTERNAL EXIT 0
   MATCH "^same matrix with the layout saved: [0-9a-f]+$"
   COMMAND bash -c "$0 import-csv ${LSST} -o ${CSV_TMP}/first.json --save-layout ${CSV_TMP}/lsst_layout.json 2>/dev/null && $0 import-csv ${LSST} --sheet-layout ${CSV_TMP}/lsst_layout.json -o ${CSV_TMP}/again.json 2>/dev/null && python3 $1 ${CSV_TMP}/first.json ${CSV_TMP}/first_bare.json && python3 $1 ${CSV_TMP}/again.json ${CSV_TMP}/again_bare.json && cmp ${CSV_TMP}/first_bare.json ${CSV_TMP}/again_bare.json && echo \"same matrix with the layout saved: $($0 signature ${CSV_TMP}/again_bare.json)\"" $<TARGET_FILE:cemv> ${CMAKE_CURRENT_LIST_DIR}/without_import_records.py)
-cemv_cli_test(NAME cli_import_csv_layout_used_note EXIT 0
+cemv_cli_test(NAME cli_import_csv_layout_used_note EXTERNAL EXIT 0
   MATCH "note: layout used \\(found in the sheet. --save-layout keeps it\\): \\{\"format\":\"cemv-sheet-layout/1\",\"orientation\":\"causes-as-rows\",\"causes\":\\{\"id\":\"B\",\"description\":\"A\"\\},\"effects\":\\{\"id\":2,\"description\":1\\}"
   COMMAND $<TARGET_FILE:cemv> import-csv ${LSST} -o ${CSV_TMP}/lsst_note.json)
 cemv_cli_test(NAME cli_import_csv_sheet_layout_with_records_refused EXIT 2
   MATCH "--separator, --name and --orientation apply to grids, not to --layout records \\(so do --sheet-layout and --save-layout\\)"
-  COMMAND $<TARGET_FILE:cemv> import-csv ${LSST} --layout records --sheet-layout ${CSV_TMP}/bad_layout.json)
+  COMMAND $<TARGET_FILE:cemv> import-csv ${CSV_CASES}/tab_grid.tsv --layout records --sheet-layout ${CSV_TMP}/bad_layout.json)
 cemv_cli_test(NAME cli_import_workbook_sheet_for_six_tables_refused EXIT 2
   MATCH "holds the six tables of 6.6.2 \\(sheet 'Causes configuration'\\), which say where everything is"
   COMMAND bash -c "$0 export-workbook examples/tank-overfill/matrix.json -o ${CSV_TMP}/tables.ods && $0 import-workbook ${CSV_TMP}/tables.ods --sheet 2" $<TARGET_FILE:cemv>)

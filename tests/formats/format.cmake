@@ -62,3 +62,8 @@ cemv_cli_test(NAME cli_signature_example EXIT 0 MATCH "^[0-9a-f]{64}$"
 # fmt -o, then fmt of the output: byte-identical, same signature.
 cemv_cli_test(NAME cli_fmt_output_is_a_fixed_point EXIT 0 MATCH "^fixed point$"
               COMMAND bash ${_malformed_dir}/generated.sh fixpoint $<TARGET_FILE:cemv>)
+
+# cemv-scenario/1 written (formats/scenario_writer.cpp) and read back.
+add_executable(test_formats_scenario_writer ${CMAKE_CURRENT_LIST_DIR}/test_scenario_writer.cpp)
+target_link_libraries(test_formats_scenario_writer PRIVATE cemv_formats cemv_testsupport GTest::gtest_main)
+gtest_discover_tests(test_formats_scenario_writer DISCOVERY_MODE PRE_TEST)

@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "formats/csv.hpp"
+#include "tests/support/external_tables.hpp"
 #include "formats/matrix_json.hpp"
 #include "model/validate.hpp"
 
@@ -40,7 +41,7 @@ std::string warnings_text(const CsvImportResult& r) {
 class LsstGrid : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    result_ = new CsvImportResult(import_file(kExternal / "lsst-tma-interlock-table.csv"));
+    result_ = new CsvImportResult(import_file(cemv::test::lsst_table(kExternal, "lsst-tma-interlock-table.csv")));
   }
   static void TearDownTestSuite() { delete result_; }
   static CsvImportResult* result_;
@@ -152,13 +153,13 @@ TEST_F(LsstGrid, LoadsAndValidateReportsEveryMissingOverrideTime) {
 }
 
 TEST_F(LsstGrid, ImportIsDeterministic) {
-  auto again = import_file(kExternal / "lsst-tma-interlock-table.csv");
+  auto again = import_file(cemv::test::lsst_table(kExternal, "lsst-tma-interlock-table.csv"));
   EXPECT_EQ(to_canonical_json(again.matrix), to_canonical_json(result_->matrix));
   EXPECT_EQ(warnings_text(again), warnings_text(*result_));
 }
 
 TEST_F(LsstGrid, OlderVersionDiffersByExactlyOneIntersection) {
-  auto old = import_file(kExternal / "lsst-tma-interlock-table-2023-10-05.csv");
+  auto old = import_file(cemv::test::lsst_table(kExternal, "lsst-tma-interlock-table-2023-10-05.csv"));
   const Matrix& a = result_->matrix;
   const Matrix& b = old.matrix;
   ASSERT_EQ(a.causes.size(), b.causes.size());
@@ -321,7 +322,7 @@ TEST(GridImport, UnreadableGridsAreErrors) {
 // Never a crash: seeded byte mutations of both layouts either import or throw
 // LoadError (run under the sanitizer build as well).
 TEST(CsvImportRobustness, MutatedInputsImportOrFailCleanly) {
-  const std::string grid = read_text_file(kExternal / "lsst-tma-interlock-table.csv");
+  const std::string grid = read_text_file(cemv::test::lsst_table(kExternal, "lsst-tma-interlock-table.csv"));
   const std::string records = export_csv(import_csv(grid, "lsst.csv").matrix);
   const std::string alphabet = ";,\"\n\r (1)NSVRX*#-_a9\t\x01\xff";
   std::mt19937 rng(20241121);

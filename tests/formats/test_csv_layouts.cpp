@@ -12,6 +12,7 @@
 #include <tuple>
 
 #include "formats/csv.hpp"
+#include "tests/support/external_tables.hpp"
 #include "model/matrix.hpp"
 #include "test_csv_support.hpp"
 
@@ -48,7 +49,9 @@ Table split_table(const std::string& text) {
   return t;
 }
 
-Table read_table(const std::string& file) { return split_table(read_text_file(kLsst / file)); }
+Table read_table(const std::string& file) {
+  return split_table(read_text_file(cemv::test::lsst_table(kLsst, file)));
+}
 Table read_shared_table(const std::string& file) { return split_table(read_text_file(kShared / file)); }
 
 std::string join(const Table& t) {
@@ -361,7 +364,7 @@ TEST(GridStrict, PassesACleanGridAndRefusesTheLsstTable) {
   EXPECT_TRUE(r.warnings.empty());
   EXPECT_EQ(r.matrix.intersections.size(), 4u);
   try {
-    import_csv(read_text_file(kLsst / "lsst-tma-interlock-table.csv"), "lsst.csv", strict);
+    import_csv(read_text_file(cemv::test::lsst_table(kLsst, "lsst-tma-interlock-table.csv")), "lsst.csv", strict);
     FAIL() << "the LSST table has warnings";
   } catch (const LoadError& e) {
     const auto& issues = e.issues();

@@ -257,6 +257,51 @@ TEST_P(VendorWorkbook, NoSheetOrLayoutForTheSixTables) {
   } catch (const LoadError& e) {
     EXPECT_NE(e.issues()[0].what.find("holds the six tables of 6.6.2"), std::string::npos);
   }
+  WorkbookImportOptions oriented;
+  oriented.orientation = CsvOrientation::EffectsAsRows;
+  try {
+    import_workbook(tables, file(), oriented);
+    FAIL();
+  } catch (const LoadError& e) {
+    EXPECT_NE(e.issues()[0].what.find("a sheet, an orientation or a layout description is for a C&E grid"),
+              std::string::npos);
+  }
+}
+
+// import-workbook --orientation (docs/csv.md "Orientation"): a contractor
+// sheet with `EFFECTS` over its attribute columns, its stacked effect header
+// unlabelled (SIL, tag, action, description), read as given; the layout's
+// orientation must agree; the six tables take none.
+TEST_P(VendorWorkbook, TheOrientationIsGivenAsForACsv) {
+  TestSheet s{"SIS rev C", {}, {}, false};
+  const std::vector<std::vector<std::string>> rows{
+      {"EFFECTS"},
+      {"", "", "", "", "", "", "", "SIL 2", "SIL 1"},
+      {"", "", "", "", "", "", "", "XV-301", "P-302"},
+      {"", "", "", "", "", "", "", "CLOSE", "STOP"},
+      {"", "", "", "", "", "", "", "Close inlet valve", "Stop feed pump"},
+      {"Item", "Description", "Instrument Tag", "Trip setting", "EU", "Vote", "SIL"},
+      {"1", "Feed drum pressure high-high", "PT-101", "45", "barg", "1oo1", "2", "S", "N"},
+      {"2", "Feed drum level low-low", "LT-102", "20", "%", "1oo1", "2", "N", ""},
+      {"3", "Manual shutdown", "HS-103", "-", "-", "1oo1", "1", "S", "S"}};
+  for (std::size_t r = 0; r < rows.size(); ++r)
+    for (std::size_t c = 0; c < rows[r].size(); ++c)
+      if (!rows[r][c].empty()) s.cells.push_back({static_cast<int>(r + 1), static_cast<int>(c + 1), rows[r][c]});
+  EXPECT_NE(refusal({s}).find("the evidence conflicts"), std::string::npos) << refusal({s});
+  WorkbookImportOptions opt;
+  opt.orientation = CsvOrientation::CausesAsRows;
+  const auto r = read({s}, opt);
+  ASSERT_EQ(r.matrix.effects.size(), 2u) << r.summary;
+  EXPECT_EQ(r.matrix.effects[0].tags.at(0).name, "XV-301");
+  EXPECT_EQ(r.matrix.effects[0].sil, 2);
+  EXPECT_EQ(r.matrix.effects[1].description, "Stop feed pump");
+  EXPECT_NE(r.summary.find("orientation causes-as-rows as given by --orientation"), std::string::npos) << r.summary;
+  SheetLayout layout;
+  layout.orientation = CsvOrientation::EffectsAsRows;
+  opt.sheet_layout = layout;
+  EXPECT_NE(refusal({s}, opt).find("--orientation causes-as-rows and the layout's effects-as-rows disagree; give one"),
+            std::string::npos)
+      << refusal({s}, opt);
 }
 
 INSTANTIATE_TEST_SUITE_P(OdsAndXlsx, VendorWorkbook, ::testing::Values(true, false),

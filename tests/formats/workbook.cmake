@@ -64,11 +64,12 @@ if(SOFFICE)
   set_tests_properties(cli_workbook_libreoffice_examples PROPERTIES TIMEOUT 600
     PASS_REGULAR_EXPRESSION "all ${wb_examples} matrices: same signature after LibreOffice re-saved them")
   add_test(NAME cli_workbook_libreoffice_lsst
-    COMMAND bash ${WB_CASES}/libreoffice_lsst.sh $<TARGET_FILE:cemv> ${SOFFICE}
+    COMMAND ${CEMV_WITH_LSST} bash ${WB_CASES}/libreoffice_lsst.sh $<TARGET_FILE:cemv> ${SOFFICE}
             ${CEMV_LSST_DIR}/lsst-tma-interlock-table.csv ${WB_TMP}/libreoffice_lsst
     WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
   set_tests_properties(cli_workbook_libreoffice_lsst PROPERTIES TIMEOUT 600
     PASS_REGULAR_EXPRESSION "LSST saved as XLSX by LibreOffice imports as its CSV: 36 causes, 17 effects, 102 intersections")
+  cemv_external_test(cli_workbook_libreoffice_lsst)
   # A contractor's SIS workbook (docs/workbook.md "Vendor C&E workbooks"), built
   # by LibreOffice from the committed flat ODS as XLSX, ODS and the CSV of its
   # matrix sheet: every variant read right or refused with the cell named.
@@ -93,3 +94,14 @@ cemv_cli_test(NAME cli_export_workbook_unwritable EXIT 2 MATCH "^error: /no/such
   COMMAND $<TARGET_FILE:cemv> export-workbook ${_wb_tank} -o /no/such/dir/x.ods)
 cemv_cli_test(NAME cli_import_workbook_stdin EXIT 0 MATCH "<stdin>: note: read 4 causes, 3 effects and 8 intersections from the six tables"
   COMMAND bash -c "$0 export-workbook ${_wb_tank} -o ${WB_TMP}/stdin.xlsx && $0 import-workbook - -o ${WB_TMP}/stdin.json < ${WB_TMP}/stdin.xlsx" $<TARGET_FILE:cemv>)
+
+# The stacked effect headers of docs/csv.md "Stacked effect header", saved by
+# LibreOffice as XLSX and ODS: read as their CSV, the output tags as the tags.
+if(SOFFICE)
+  add_test(NAME cli_workbook_libreoffice_stacked_headers
+    COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/stacked_cases/stacked_workbooks.sh $<TARGET_FILE:cemv> ${SOFFICE}
+            ${CMAKE_CURRENT_LIST_DIR}/stacked_cases ${WB_TMP}/libreoffice_stacked
+    WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
+  set_tests_properties(cli_workbook_libreoffice_stacked_headers PROPERTIES TIMEOUT 600
+    PASS_REGULAR_EXPRESSION "stacked effect headers: all 5 variants read alike from CSV, XLSX and ODS")
+endif()

@@ -54,7 +54,7 @@ endforeach()
 # The imported LSST grid (docs/csv.md) loads, and validation lists the
 # missing maximum override times of its effects with R intersections.
 set(LSST_GRID ${CEMV_LSST_DIR}/lsst-tma-interlock-table.csv)
-cemv_cli_test(NAME cli_validate_lsst_override_missing EXIT 1
+cemv_cli_test(NAME cli_validate_lsst_override_missing EXTERNAL EXIT 1
     MATCH "error   E-OVERRIDE-TIME-MISSING  effect\\[1\\] TMA_A_1  \\[6\\.5\\.2\\]"
     COMMAND bash -c "\"$1\" import-csv \"$2\" -o \"$3\" 2>/dev/null && \"$1\" validate \"$3\""
             lsst $<TARGET_FILE:cemv> ${LSST_GRID} ${CMAKE_CURRENT_BINARY_DIR}/lsst-import.json)

@@ -8,6 +8,7 @@ if(TARGET cemv_plc)
     ${CMAKE_CURRENT_LIST_DIR}/test_plcopen.cpp
     ${CMAKE_CURRENT_LIST_DIR}/test_plcopen_variants.cpp
     ${CMAKE_CURRENT_LIST_DIR}/test_round_trip.cpp
+    ${CMAKE_CURRENT_LIST_DIR}/test_st_variants.cpp
     ${CMAKE_CURRENT_LIST_DIR}/test_interpreter.cpp
     ${CMAKE_CURRENT_LIST_DIR}/test_blocks.cpp)
   target_link_libraries(test_plc PRIVATE cemv_plc GTest::gtest_main)

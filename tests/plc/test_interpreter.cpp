@@ -133,5 +133,49 @@ END_PROGRAM
   EXPECT_THROW(Interpreter(p, "Vote2oo3"), std::invalid_argument);
 }
 
+TEST(PlcInterpreter, NestedInstancesAndInOutOfTheProgram) {
+  const Program p = parse_st(R"(
+FUNCTION_BLOCK Inner
+VAR_INPUT x : BOOL; END_VAR
+VAR_OUTPUT q : BOOL; END_VAR
+VAR edge : R_TRIG; hits : INT; END_VAR
+edge(CLK := x);
+IF edge.Q THEN hits := hits + 1; END_IF;
+q := hits >= 2;
+END_FUNCTION_BLOCK
+FUNCTION_BLOCK Outer
+VAR_INPUT x : BOOL; END_VAR
+VAR_OUTPUT q : BOOL; END_VAR
+VAR inner : Inner; END_VAR
+inner(x := x, q => q);
+END_FUNCTION_BLOCK
+PROGRAM Other
+VAR_OUTPUT z : BOOL; END_VAR
+z := TRUE;
+END_PROGRAM
+PROGRAM Main
+VAR_INPUT x : BOOL; END_VAR
+VAR_IN_OUT total : DINT; END_VAR
+VAR_OUTPUT q : BOOL; END_VAR
+VAR o : Outer; END_VAR
+o(x := x, q => q);
+total := total + 1;
+END_PROGRAM
+)",
+                             "nested.st");
+  EXPECT_THROW(Interpreter{p}, std::invalid_argument);  // two PROGRAMs: one must be named
+  Interpreter run(p, "MAIN");
+  const Value t{Type::Bool, 1, 0}, f{Type::Bool, 0, 0};
+  for (const Value& x : {t, f, t, f}) run.step({{"x", x}}, 20);
+  EXPECT_EQ(run.value("o.inner.hits").integer, 2);
+  EXPECT_EQ(run.value("o.inner.edge.Q").integer, 0);
+  EXPECT_TRUE(run.value("q").integer);
+  EXPECT_EQ(run.value("total").integer, 4);
+  run.step({{"total", Value{Type::Dint, 100, 0}}}, 20);  // an in-out is also an input
+  EXPECT_EQ(run.value("total").integer, 101);
+  EXPECT_THROW(run.value("o.nope"), std::invalid_argument);
+  EXPECT_THROW(run.value("o"), std::invalid_argument);
+}
+
 }  // namespace
 }  // namespace cemv::plc

@@ -52,6 +52,7 @@ TEST(PlcRefused, Pragmas) {
 TEST(PlcRefused, Functions) {
   EXPECT_REFUSED(program("r : REAL;", "r := SQRT(r);"), 3, 6, "function 'SQRT' is not in the subset");
   EXPECT_REFUSED(program("r : REAL; i : INT;", "r := INT_TO_REAL(i);"), 3, 6, "function 'INT_TO_REAL'");
+  EXPECT_REFUSED(program("i : INT; b : BOOL;", "i := BOOL_TO_INT(b);"), 3, 6, "function 'BOOL_TO_INT'");
   EXPECT_REFUSED(program("i : INT;", "i := Scale(i);"), 3, 6, "unknown function 'Scale'");
   EXPECT_REFUSED(program("i : INT;", "i := LIMIT(MN := 0, IN := i, MX := 9);"), 3, 12, "named arguments of a function");
   EXPECT_REFUSED(program("i : INT;", "i := i ** 2;"), 3, 8, "operator '**'");

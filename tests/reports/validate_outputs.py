@@ -136,6 +136,7 @@ def check_json(path, n_props):
                      ("interrupted", bool), ("summary", dict), ("properties", list), ("unsupported", list)):
         need(isinstance(j.get(key), typ), f"field {key}")
     need("shard" in j, "field shard")
+    need(j.get("support_mode") in ("off", "core", "full"), "field support_mode")
     need(is_str(j["matrix"].get("name")) and len(j["matrix"].get("signature", "")) == 64, "matrix name/signature")
     need(len(j["properties"]) == n_props, f"{len(j['properties'])} properties, expected {n_props}")
     need(j["summary"]["properties"] == n_props, "summary.properties")

@@ -19,13 +19,16 @@
 #include "model/vocabulary.hpp"
 #include "response/paths.hpp"
 #include "formats/matrix_json.hpp"
+#include "properties/build.hpp"
 #include "properties/evaluator.hpp"
 #include "properties/parser.hpp"
+#include "properties/print.hpp"
 #include "response/analysis.hpp"
 #include "response/demand.hpp"
 #include "response/property.hpp"
 #include "response/report.hpp"
 #include "tests/support/random_matrix.hpp"
+#include "tests/support/same_tree.hpp"
 
 namespace {
 
@@ -375,8 +378,7 @@ TEST(Response, DemandAtStartUpIsFreshWhereTheCauseTripsAtRest) {
   EXPECT_EQ(plain.observables[0][observable_index(m, "cause[1].trip_requested")], 1);  // tripped at rest
   // The demand at start-up violates "within 7 cycles" by itself, where the
   // plain demand judges nothing (its trigger never rises freshly).
-  const auto file = properties::parse_properties(
-      response::response_property_text(m, p.path, response::Mode::Normal, 7, "start"), m, "start");
+  const auto file = response::response_property(m, p.path, response::Mode::Normal, 7, "start");
   auto judge = [&](const checker::ConcreteTrace& run) {
     properties::Trace trace;
     for (std::size_t i = 0; i < run.inputs.size(); ++i) trace.push_back({run.inputs[i], run.observables[i]});
@@ -526,8 +528,7 @@ TEST(Response, XooNCausesTakingTurnsAreNoDemand) {
     }
   const auto run = checker::run_on_runtime(m, turns);
   for (const auto& o : run.observables) ASSERT_EQ(o[observable_index(m, "effect[1].active")], 0);
-  const auto file = properties::parse_properties(
-      response::response_property_text(m, p.path, response::Mode::Normal, 10, "turns"), m, "turns");
+  const auto file = response::response_property(m, p.path, response::Mode::Normal, 10, "turns");
   properties::Trace trace;
   for (std::size_t i = 0; i < run.inputs.size(); ++i) trace.push_back({run.inputs[i], run.observables[i]});
   const auto e = properties::Evaluator(m).evaluate(file, trace).at(0);
@@ -601,8 +602,9 @@ TEST(Response, XooNBoundIsProvedFromItsMemberLemmas) {
   ASSERT_TRUE(lemmas);
   EXPECT_EQ(lemmas->names, (std::vector<std::string>{"l.c1", "l.c2", "l.c3"}));
   EXPECT_EQ(lemmas->delays, (std::vector<long long>{10, 5, 0}));
-  EXPECT_NE(lemmas->terms[0].find("not held(cause[1].active, 3 cycles)"), std::string::npos) << lemmas->terms[0];
-  EXPECT_EQ(properties::parse_properties(lemmas->property_text, m, "l").properties.size(), 3u);
+  const std::string term = properties::to_text(lemmas->terms[0], model::InputTable(m));
+  EXPECT_NE(term.find("not held(cause[1].active, 3 cycles)"), std::string::npos) << term;
+  EXPECT_EQ(lemmas->file.properties.size(), 3u);
 }
 
 // Cause 1 activates effect 2 once its 0.5 s on-delay has run, and effect 2
@@ -627,7 +629,9 @@ TEST(Response, DemandThatTheLogicEndsIsUnbounded) {
   EXPECT_EQ(p.verdict, Verdict::Unbounded);
   expect_replays(m, dir, p.logic.counterexample);
   expect_not_yet_active(dir, p.logic.counterexample, 1);
-  const std::string text = response::response_property_text(m, p.path, response::Mode::Normal, 5, "t");
+  const std::string text =
+      properties::build::file_text(response::response_property(m, p.path, response::Mode::Normal, 5, "t"),
+                                   model::InputTable(m));
   EXPECT_NE(text.find("assume not effect[2].override_active"), std::string::npos) << text;
 }
 
@@ -720,8 +724,7 @@ TEST(Response, InvariantEngineProvesTheBoundInOneStep) {
                   effect(1, "Y1", R"("output_delay_ms": 2000)"), link(1, 1));
   const auto path = response::response_paths(m, {}).at(0);
   for (long long t : {30LL, 29LL}) {
-    auto file = properties::parse_properties(
-        response::response_property_text(m, path, response::Mode::Normal, t, "probe"), m, "probe");
+    auto file = response::response_property(m, path, response::Mode::Normal, t, "probe");
     z3::context ctx;
     auto problem = checker::reduce(checker::property_problem(m, file, file.properties.at(0))(ctx));
     auto r = checker::make_prover(checker::Method::InvariantsInduction)
@@ -830,3 +833,34 @@ TEST(Response, RandomMatricesAreDecidedAndTheirCounterexamplesReplay) {
   EXPECT_GT(xoon, 0);
 }
 }  // namespace
+
+// The bounds, member lemmas and trip requirements are built as trees; their
+// text for people reads back as the same trees, on random matrices with every
+// option and on the examples.
+TEST(ResponseProperty, PrintsAsItsTree) {
+  std::vector<model::Matrix> ms;
+  for (std::uint64_t seed = 1; seed <= 16; ++seed) ms.push_back(testsupport::random_matrix(seed));
+  for (const char* n : {"burner-management", "compressor", "pipeline-hipps", "tank-overfill"})
+    ms.push_back(formats::load_valid_matrix(std::string(CEMV_SOURCE_DIR) + "/examples/" + n + "/matrix.json", "t"));
+  int paths = 0;
+  for (const auto& m : ms) {
+    const model::InputTable inputs(m);
+    auto roundtrip = [&](const properties::PropertyFile& f) {
+      const auto back = properties::parse_properties(properties::build::file_text(f, inputs), m, f.file_name);
+      EXPECT_EQ(testsupport::tree_difference(back, f), "") << properties::build::file_text(f, inputs);
+    };
+    for (const auto& p : response::response_paths(m, {})) {
+      ++paths;
+      for (auto mode : {response::Mode::Normal, response::Mode::Degraded}) {
+        if (mode == response::Mode::Degraded && p.voted.empty()) continue;
+        roundtrip(response::response_property(m, p, mode, 9, "bound"));
+        if (auto lemmas = response::member_lemmas(m, p, mode, 9, "bound.members")) {
+          roundtrip(lemmas->file);
+          roundtrip(response::response_property(m, p, mode, 9, "bound", lemmas->terms));
+        }
+      }
+      roundtrip(response::requirement_property(m, p, 9, "requirement", {}));
+    }
+  }
+  EXPECT_GT(paths, 40);
+}

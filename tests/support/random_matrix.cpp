@@ -493,6 +493,30 @@ Matrix big_matrix(std::uint64_t seed) {
   return m;
 }
 
+Matrix square_matrix(int n, std::uint64_t seed) {
+  if (n == kMaxCauses) return big_matrix(seed);
+  MatrixOptions o;
+  o.min_causes = o.max_causes = n;
+  o.min_effects = o.max_effects = n;
+  o.cycle_ms = 100;
+  Matrix best;
+  std::size_t best_used = 0;
+  for (std::uint64_t attempt = 0; attempt < 64; ++attempt) {
+    Matrix m = random_matrix(mix(seed, attempt), o);
+    auto counts = feature_counts(m);
+    const auto used = static_cast<std::size_t>(std::count_if(
+        feature_names().begin(), feature_names().end(), [&](const std::string& f) { return counts[f] > 0; }));
+    if (attempt == 0 || used > best_used) {
+      best = std::move(m);
+      best_used = used;
+    }
+    if (best_used == feature_names().size()) break;
+  }
+  best.name = "SQUARE_" + std::to_string(n);
+  best.title = std::to_string(n) + " x " + std::to_string(n) + " matrix, every option it can hold";
+  return best;
+}
+
 // ---- Feature coverage -------------------------------------------------------
 
 const std::vector<std::string>& feature_names() {

@@ -84,6 +84,13 @@ model::Matrix random_matrix(std::uint64_t seed, const MatrixOptions& opt = {});
 // entry of feature_names() occurs), for the benchmarks (bench/README.md).
 model::Matrix big_matrix(std::uint64_t seed = 1);
 
+// An n x n matrix (about 40 % of the grid, at most 1024 intersections,
+// cycle 100 ms) that uses as many options as a matrix of its size can: the
+// seed's first derived matrix that uses every entry of feature_names(), else
+// the one of 64 that uses the most. For the benchmarks and the time-limit
+// sweeps; n = 128 gives big_matrix(seed).
+model::Matrix square_matrix(int n, std::uint64_t seed = 1);
+
 // The options a matrix uses, by name, with how often: the test checks that
 // across many seeds every name of feature_names() occurs.
 std::map<std::string, int> feature_counts(const model::Matrix& m);

@@ -9,6 +9,7 @@
 
 #include "checker/replay.hpp"
 #include "formats/matrix_json.hpp"
+#include "properties/build.hpp"
 #include "properties/evaluator.hpp"
 #include "properties/monitor.hpp"
 #include "properties/parser.hpp"
@@ -17,6 +18,7 @@
 #include "testgen/checklist.hpp"
 #include "testgen/testgen.hpp"
 #include "tests/support/random_matrix.hpp"
+#include "tests/support/same_tree.hpp"
 
 namespace {
 
@@ -35,23 +37,33 @@ TEST(Objectives, EveryExampleParsesWithUniqueIds) {
     ASSERT_GT(objs.size(), 50u) << name;
     std::set<std::string> ids;
     for (const auto& o : objs) EXPECT_TRUE(ids.insert(o.id).second) << name << ": " << o.id;
-    auto file = properties::parse_properties(testgen::objectives_file_text(objs), m, "objectives");
-    EXPECT_EQ(file.properties.size(), objs.size()) << name;
+    // Printed for people, each objective reads back as the tree it is.
+    auto file = properties::parse_properties(testgen::objectives_file_text(m, objs), m, "objectives");
+    ASSERT_EQ(file.properties.size(), objs.size()) << name;
+    for (std::size_t i = 0; i < objs.size(); ++i)
+      EXPECT_EQ(testsupport::tree_difference(file.properties[i], objs[i].property), "") << name << " " << objs[i].id;
   }
 }
 
 // Generated matrices with every option (internal references among the tags
 // of a cause included, which have no quality of their own) give objectives
-// that parse: the catalogue of the 128 x 128 benchmark matrix too.
-TEST(Objectives, RandomMatricesParse) {
-  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
-    const model::Matrix m = testsupport::random_matrix(seed);
+// whose text for people reads back as the same trees: the catalogue of the
+// 128 x 128 benchmark matrix too.
+TEST(Objectives, RandomMatricesPrintAsTheirTrees) {
+  auto check = [](const model::Matrix& m, const std::string& what) {
     const auto objs = testgen::derive_objectives(m);
-    EXPECT_NO_THROW(properties::parse_properties(testgen::objectives_file_text(objs), m, "objectives")) << seed;
-  }
-  const model::Matrix big = testsupport::big_matrix(1);
-  EXPECT_NO_THROW(properties::parse_properties(testgen::objectives_file_text(testgen::derive_objectives(big)), big,
-                                               "objectives"));
+    const auto file = properties::parse_properties(testgen::objectives_file_text(m, objs), m, "objectives");
+    ASSERT_EQ(file.properties.size(), objs.size()) << what;
+    for (std::size_t i = 0; i < objs.size(); ++i)
+      ASSERT_EQ(testsupport::tree_difference(file.properties[i], objs[i].property), "") << what << " " << objs[i].id;
+  };
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) check(testsupport::random_matrix(seed), std::to_string(seed));
+  check(testsupport::big_matrix(1), "big_matrix");
+}
+
+// An objective as text for people.
+std::string text_of(const model::Matrix& m, const testgen::Objective& o) {
+  return properties::build::block_text(o.property, model::InputTable(m));
 }
 
 // intersection.cI.none leaves out the effects that what the cause reads
@@ -60,8 +72,9 @@ TEST(Objectives, RandomMatricesParse) {
 // neither objective can hold with those effects inactive.
 TEST(Objectives, NoneLeavesOutEffectsTheReferencesDrive) {
   std::map<std::string, std::string> none;
-  for (const auto& o : testgen::derive_objectives(example("compressor")))
-    if (o.id.size() > 5 && o.id.substr(o.id.size() - 5) == ".none") none[o.id] = o.property;
+  const model::Matrix m = example("compressor");
+  for (const auto& o : testgen::derive_objectives(m))
+    if (o.id.size() > 5 && o.id.substr(o.id.size() - 5) == ".none") none[o.id] = text_of(m, o);
   ASSERT_TRUE(none.count("intersection.c5.none"));
   EXPECT_EQ(none["intersection.c5.none"].find("effect[1]"), std::string::npos);
   EXPECT_NE(none["intersection.c5.none"].find("not effect[5].active"), std::string::npos);
@@ -75,21 +88,53 @@ TEST(Objectives, NoneLeavesOutEffectsTheReferencesDrive) {
 // objective that may force outputs; every other objective excludes forcing.
 TEST(Objectives, ReferenceObjectivesForEffectsReachedThroughReferences) {
   std::map<std::string, testgen::Objective> ref;
-  for (const auto& o : testgen::derive_objectives(example("compressor"))) {
+  const model::Matrix m = example("compressor");
+  for (const auto& o : testgen::derive_objectives(m)) {
     if (o.kind == "reference") ref[o.id] = o;
-    else EXPECT_NE(o.property.find("assume not issued(simulate_tag)"), std::string::npos) << o.id;
+    else EXPECT_NE(text_of(m, o).find("assume not issued(simulate_tag)"), std::string::npos) << o.id;
   }
   for (const char* id : {"reference.c1.e2.apart", "reference.c3.e2.apart", "reference.c8.e2.apart",
                          "reference.c6.e3.apart", "reference.c6.e4.apart", "reference.c5.e2.apart"}) {
     ASSERT_TRUE(ref.count(id)) << id;
     EXPECT_TRUE(ref[id].simulates);
-    EXPECT_EQ(ref[id].property.find("assume"), std::string::npos) << id;
+    EXPECT_TRUE(ref[id].property.assumptions.empty()) << id;
   }
   // Linked pairs and effects the cause cannot reach have none.
   EXPECT_FALSE(ref.count("reference.c1.e1.apart"));
   EXPECT_FALSE(ref.count("reference.c2.e5.apart"));
   for (const char* name : {"burner-management", "pipeline-hipps", "tank-overfill"})
     for (const auto& o : testgen::derive_objectives(example(name))) EXPECT_NE(o.kind, "reference") << name;
+}
+
+// burner-management: an S cell of cause 1 on effect 1, whose override a
+// reset-tag edge toggles. The edge must be the runtime's (T.4): in the first
+// cycle there is none, so a run that starts with the reset tag TRUE and
+// cause 1 tripping toggles nothing and witnesses nothing; the same tag
+// raised a cycle later does.
+TEST(Objectives, NotOverriddenNeedsAnEdgeTheRuntimeSees) {
+  const model::Matrix m = example("burner-management");
+  testgen::Objective o;
+  for (const auto& x : testgen::derive_objectives(m))
+    if (x.id == "intersection.c1.e1.not_overridden") o = x;
+  ASSERT_EQ(o.id, "intersection.c1.e1.not_overridden");
+  const model::InputTable table(m);
+  model::CycleInput tripped = model::default_cycle_input(m);
+  auto set = [&](model::CycleInput& in, const char* tag, float v, bool bad) {
+    in.tags[*table.find(tag)] = {v, bad};
+  };
+  set(tripped, "BSL_201B", 1.0f, true);  // bad quality counts as tripped: cause 1 trips (2oo3 with C)
+  set(tripped, "BSL_201C", 0.0f, false);
+  model::CycleInput reset = tripped;
+  set(reset, "HS_221_RST", 1.0f, false);
+  auto witness = [&](const std::vector<model::CycleInput>& inputs) {
+    const auto run = checker::run_on_runtime(m, inputs);
+    properties::Trace trace;
+    for (std::size_t k = 0; k < run.inputs.size(); ++k) trace.push_back({run.inputs[k], run.observables[k]});
+    const auto e = properties::Evaluator(m).evaluate(o.property, {}, trace);
+    return e.holds ? e.cycle : std::nullopt;
+  };
+  EXPECT_EQ(witness({reset, reset}), std::nullopt);  // held TRUE from start-up: no edge
+  EXPECT_EQ(witness({tripped, reset}), std::optional<std::size_t>(1));
 }
 
 TEST(Objectives, CatalogueNamesTheIssueKinds) {
@@ -158,7 +203,7 @@ TEST(Explore, FindsLongDelayWitnesses) {
     for (auto& o : testgen::derive_objectives(m))
       if (o.id == id) objs.push_back(o);
     ASSERT_EQ(objs.size(), 1u) << id;
-    const auto file = properties::parse_properties(testgen::objectives_file_text(objs), m, "objectives");
+    const auto file = testgen::objectives_file(objs);
     const auto& p = file.properties[0];
     testgen::detail::Goal g{&file, &p, properties::property_roots(p, file.assumptions, m), objs[0].horizon};
     const auto r = testgen::detail::explore(m, g, {}, 42);

@@ -54,16 +54,6 @@ if(TARGET cemv_testgen)
   endforeach()
 endif()
 
-# The committed suites of tank-overfill and burner-management (automated and
-# field, checklists included) are what cemv testgen writes now, byte for byte.
-if(TARGET cemv_testgen)
-  foreach(ex tank-overfill burner-management)
-    add_test(NAME testgen_regenerate_${ex} WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
-      COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/regenerate.sh ${PROJECT_BINARY_DIR}/cemv ${ex})
-    set_tests_properties(testgen_regenerate_${ex} PROPERTIES TIMEOUT 900)
-  endforeach()
-endif()
-
 # --mutation-report measures the field suite beside the automated one and puts
 # the comparison into the field checklists (two causes of the tank, one effect).
 if(TARGET cemv_testgen)

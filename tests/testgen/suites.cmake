@@ -1,0 +1,20 @@
+# The committed suites of the four examples (examples/*/acceptance, automated
+# and field, checklists included) are what cemv testgen writes now, byte for
+# byte (tests/testgen/regenerate.sh), and every committed automated suite
+# detects every non-equivalent mutant of its matrix (docs/mutation.md:
+# `cemv mutate --equivalence --suite` exits 1 when one survives, 3 when an
+# equivalence stays undecided). The compressor's suite takes minutes of CPU
+# and about 4 GB (docs/testgen.md, "Figures on the examples").
+if(TARGET cemv_testgen)
+  foreach(ex burner-management compressor pipeline-hipps tank-overfill)
+    add_test(NAME testgen_regenerate_${ex} WORKING_DIRECTORY ${PROJECT_SOURCE_DIR}
+      COMMAND bash ${CMAKE_CURRENT_LIST_DIR}/regenerate.sh ${PROJECT_BINARY_DIR}/cemv ${ex})
+    set_tests_properties(testgen_regenerate_${ex} PROPERTIES TIMEOUT 1800)
+    cemv_cli_test(NAME testgen_suite_detects_every_mutant_${ex} EXIT 0
+      MATCH "survived 0, undecided 0"
+      COMMAND ${PROJECT_BINARY_DIR}/cemv mutate examples/${ex}/matrix.json --equivalence
+              --suite examples/${ex}/acceptance --out ${CMAKE_CURRENT_BINARY_DIR}/suite_mutants_${ex})
+    set_tests_properties(testgen_suite_detects_every_mutant_${ex} PROPERTIES TIMEOUT 1800
+      ENVIRONMENT CEMV_EXPECT_TIMEOUT=1700)  # expect.sh stops a command after 120 s by default
+  endforeach()
+endif()
