@@ -54,7 +54,9 @@ class Binder {
       return extra("cmd.plc." + in.variable, ctx_.bool_sort(), {});
     }
     for (const auto& b : map_.map.program_inputs)
-      if (same(b.variable, in.variable)) return constant(ctx_, in.type, b.value);
+      if (same(b.variable, in.variable))
+        return in.type == plc::Type::Real ? p_.matrix->ts.float_const(static_cast<float>(b.value))
+                                          : constant(ctx_, in.type, b.value);
     throw std::logic_error("program input " + in.variable + " is not in the completed map");
   }
 
@@ -68,7 +70,7 @@ class Binder {
         const auto& tag_in = enc.inputs.tags()[*idx];
         const z3::expr v = tag(*idx, false);
         assumption_ = assumption_ && (tag_in.kind == model::TagKind::Analog
-                                          ? v == ctx_.fpa_val(static_cast<float>(*b.value))
+                                          ? v == p_.matrix->ts.float_const(static_cast<float>(*b.value))
                                           : v == ctx_.bool_val(*b.value != 0.0));
       }
       if (b.bad_quality.empty() && enc.tag_bad[*idx]) assumption_ = assumption_ && !*enc.tag_bad[*idx];
@@ -120,6 +122,7 @@ std::shared_ptr<ProductProblem> build_product(z3::context& ctx, const model::Mat
   p->matrix = encoder::encode(ctx, m, {model::Node{model::Node::Kind::Effect, q.effect}});
   auto& ts = p->matrix->ts;
   const plc_encoder::ProgramSystem sys = plc_encoder::encode(ctx, program, pou, map.scan_ms, kProgramPrefix);
+  for (float v : sys.real_literals) ts.float_const(v);
   Binder binder(ctx, m, map, *p);
   z3::expr_vector from(ctx), to(ctx);
   for (const auto& in : sys.inputs) {

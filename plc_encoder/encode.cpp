@@ -30,6 +30,7 @@ class Builder {
       if (v.type.kind == plc::VarType::Kind::Elementary &&
           (v.section == plc::Section::Output || v.section == plc::Section::InOut))
         out_.outputs.push_back({v.name, v.type.type, env.at(upper(v.name))});
+    out_.real_literals.assign(scan_.real_literals().begin(), scan_.real_literals().end());
     return std::move(out_);
   }
 

@@ -49,6 +49,10 @@ struct ProgramSystem {
   std::vector<StateVar> states;
   std::vector<InputVar> inputs;
   std::vector<OutputTerm> outputs;
+  // Every REAL constant in the terms above, so that a consumer that reads
+  // floats back from terms by their constants (the checker's evaluator) can
+  // register them.
+  std::vector<float> real_literals;
 };
 
 // The Z3 sort of a value of `t`: Bool; INT, DINT and TIME Int, every result

@@ -44,7 +44,9 @@ z3::expr Scan::literal(const plc::Literal& l) {
     case plc::Type::Int:
     case plc::Type::Dint:
     case plc::Type::Time: return ctx_.int_val(static_cast<std::int64_t>(l.integer));
-    case plc::Type::Real: return ctx_.fpa_val(l.real);
+    case plc::Type::Real:
+      real_literals_.insert(l.real);
+      return ctx_.fpa_val(l.real);
   }
   return ctx_.bool_val(false);
 }

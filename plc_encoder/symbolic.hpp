@@ -6,6 +6,7 @@
 #pragma once
 
 #include <map>
+#include <set>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -34,6 +35,7 @@ class Scan {
 
   z3::context& ctx() { return ctx_; }
   z3::expr literal(const plc::Literal& l);
+  const std::set<float>& real_literals() const { return real_literals_; }
   z3::expr zero(plc::Type t);
   // An integer result reduced to the range of `t` (two's complement wrapping).
   z3::expr wrap(plc::Type t, const z3::expr& x);
@@ -64,6 +66,7 @@ class Scan {
   std::uint32_t scan_ms_;
   int conditional_ = 0;               // depth of IF/CASE/FOR around the statement executed
   std::map<std::string, int> timer_calls_;  // calls of each timer instance in this scan
+  std::set<float> real_literals_;           // every REAL constant the encoding made
 };
 
 // Merges the environments of the branches of a choice: the value of each key
