@@ -16,6 +16,7 @@
 #include "formats/diagnostics.hpp"
 #include "formats/matrix_json.hpp"
 #include "formats/plc_map.hpp"
+#include "formats/scenario_writer.hpp"
 #include "plc/parser.hpp"
 #include "plc_check/check.hpp"
 #include "plc_check/report.hpp"
@@ -92,14 +93,16 @@ void write_difference(const PlcArgs& a, const model::Matrix& m, plc_check::PlcCh
   const auto& d = *o.difference;
   const std::string base = (std::filesystem::path(a.out_dir) / ("plc." + stem(o.question.tag))).string();
   const std::string key = "effect[" + std::to_string(o.question.effect) + "].tag[" + std::to_string(o.question.position) + "]";
-  std::vector<checker::ScenarioExpectation> expect{{key, model::FieldType::Bool, d.program_values.back()}};
+  std::vector<formats::ExpectedValue> expect{{key, model::FieldType::Bool, d.program_values.back()}};
   r.scenario_files[i] = base + ".scenario.json";
   write_output(r.scenario_files[i],
-               checker::scenario_json(m, d.matrix_inputs,
-                                      "Where program " + r.pou + " (" + r.program_file + ") differs from matrix " +
-                                          m.name + ": " + o.question.tag + " in scan " + std::to_string(d.scan + 1) +
-                                          "; the expectation is the program's value, so the matrix fails it",
-                                      expect));
+               formats::scenario_text(
+                   m, formats::checked_at_end(d.matrix_inputs,
+                                              "Where program " + r.pou + " (" + r.program_file + ") differs from matrix " +
+                                                  m.name + ": " + o.question.tag + " in scan " +
+                                                  std::to_string(d.scan + 1) +
+                                                  "; the expectation is the program's value, so the matrix fails it",
+                                              expect)));
   reports::TimingDiagram diagram;
   diagram.title = r.pou + " against " + m.name + ": " + o.question.tag;
   diagram.shown.push_back(key);
