@@ -18,6 +18,7 @@
 #include <string_view>
 #include <vector>
 
+#include "formats/csv_rfc4180.hpp"
 #include "formats/diagnostics.hpp"
 #include "formats/sheet_layout.hpp"
 #include "model/matrix.hpp"
@@ -25,34 +26,6 @@
 namespace cemv::formats {
 
 inline constexpr const char* kCsvLayout = "cemv-csv/1";
-
-
-// ---- RFC 4180 reading -------------------------------------------------------
-
-struct CsvField {
-  std::string text;
-  int line = 0;     // 1-based physical line where the field starts
-  int column = 0;   // 1-based field number within its record
-  bool quoted = false;
-};
-
-struct CsvRecord {
-  int line = 0;     // 1-based physical line where the record starts
-  std::vector<CsvField> fields;
-};
-
-// Splits text into records (RFC 4180: `"` quoting with `""` escapes, records
-// ending in CRLF or LF, line breaks allowed inside quoted fields, a UTF-8 BOM
-// skipped). Strict mode rejects a quote inside an unquoted field and text after a
-// closing quote; lenient mode (for hand-made grids) keeps them literally. An
-// unterminated quote is always an error. Errors are LoadIssues at `line L,
-// column C`; reading continues so every error is reported; throws LoadError.
-std::vector<CsvRecord> parse_csv(std::string_view text, char separator, bool strict,
-                                 const std::string& source_name = "");
-
-// One field as RFC 4180 writes it: quoted when it holds the separator, a quote,
-// CR/LF, or leading/trailing blanks; quotes doubled.
-std::string csv_quote(std::string_view field, char separator = ',');
 
 // ---- The record layout --------------------------------------------------------
 

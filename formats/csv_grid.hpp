@@ -3,13 +3,15 @@
 // of cemv_formats (that is formats/csv.hpp).
 //
 // Reading a grid takes these steps, each in its own file:
-//  - csv_grid_shape.cpp: the sheet (padding and legend rows set apart), where
-//    its header rows and label columns end, and whether the description row
-//    lines up with the id row;
+//  - csv_grid_sheet.cpp: the sheet, its records with the padding and legend
+//    rows set apart;
+//  - csv_grid_shape.cpp: where its header rows and label columns end, and
+//    whether the description row lines up with the id row;
 //  - csv_grid_attributes.cpp: what each label column and header row holds
-//    (id, description, tag, setpoint, ...), from the layout or the headers,
-//    with csv_grid_headers.cpp reading them from their values (a stacked
-//    effect header: description, action, tag, SIL in any order);
+//    (id, description, tag, setpoint, ...), from the layout or the headers
+//    (their words in csv_grid_header_words.cpp), with csv_grid_headers.cpp
+//    reading them from their values (a stacked effect header: description,
+//    action, tag, SIL in any order);
 //  - csv_grid_orientation.cpp: which axis holds the causes, from evidence;
 //  - csv_grid_elements.cpp: the elements of each axis, voting groups and
 //    deleted rows, with csv_grid_values.cpp for the values of their
@@ -75,6 +77,9 @@ std::optional<int> trailing_number(std::string_view id);
 // A field as the grid reads it: trimmed, control characters as blanks; "" past
 // the end of the record.
 std::string cell_text(const CsvRecord& row, std::size_t index);
+
+// A record with nothing but blanks in its fields.
+bool blank_record(const CsvRecord& r);
 
 // A cell that only names an axis, such as "Causes/Detection", "Effects" or
 // "Final elements": words for causes or effects and nothing else.

@@ -139,3 +139,21 @@ void number_elements(std::vector<SheetElement>& elements, const char* kind, cons
 }
 
 }  // namespace cemv::formats::grid
+
+namespace cemv::formats {
+
+// The identifier rule of the grid's ids and names (formats/csv.hpp).
+std::string sanitize_identifier(std::string_view text, std::size_t max_length) {
+  std::string out;
+  for (char c : text) {
+    bool keep = (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9');
+    char ch = keep ? c : '_';
+    if (ch == '_' && (out.empty() || out.back() == '_')) continue;
+    out += ch;
+  }
+  if (out.size() > max_length) out.resize(max_length);
+  while (!out.empty() && out.back() == '_') out.pop_back();
+  return out;
+}
+
+}  // namespace cemv::formats

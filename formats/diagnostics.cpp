@@ -48,24 +48,6 @@ std::string line_column(std::string_view text, std::size_t index) {
   return "line " + std::to_string(line) + ", column " + std::to_string(column);
 }
 
-LineIndex::LineIndex(std::string_view text) : size_(text.size()) {
-  for (std::size_t k = text.find('\n'); k != std::string_view::npos; k = text.find('\n', k + 1))
-    breaks_.push_back(k);
-}
-
-std::pair<std::size_t, std::size_t> LineIndex::line_and_column(std::size_t index) const {
-  index = std::min(index, size_);
-  auto before = std::lower_bound(breaks_.begin(), breaks_.end(), index);  // the breaks before index
-  std::size_t line = 1 + static_cast<std::size_t>(before - breaks_.begin());
-  std::size_t column = before == breaks_.begin() ? index + 1 : index - *std::prev(before);
-  return {line, column};
-}
-
-std::string LineIndex::line_column(std::size_t index) const {
-  auto [line, column] = line_and_column(index);
-  return "line " + std::to_string(line) + ", column " + std::to_string(column);
-}
-
 namespace {
 
 // Digits at text[i...]: the number and the index after it; nullopt when none.
@@ -195,19 +177,6 @@ std::string read_text_file(const std::filesystem::path& file) {
   }
   if (in.bad()) throw LoadError({{where, std::string("cannot read: ") + std::strerror(errno), where}});
   return text;
-}
-
-std::string member_path(const std::string& parent, std::string_view key) {
-  bool identifier = !key.empty() && key.size() <= 48 &&
-                    (std::isalpha(static_cast<unsigned char>(key[0])) || key[0] == '_');
-  for (unsigned char c : key) identifier = identifier && (std::isalnum(c) || c == '_');
-  std::string segment = identifier ? std::string(key) : "[" + in_quotes(key) + "]";
-  if (parent.empty()) return segment;
-  return identifier ? parent + "." + segment : parent + segment;
-}
-
-std::string element_path(const std::string& parent, std::size_t index) {
-  return parent + "[" + std::to_string(index) + "]";
 }
 
 namespace {

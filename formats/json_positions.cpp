@@ -5,8 +5,45 @@
 #include <cctype>
 
 #include "formats/diagnostics.hpp"
+#include "model/text.hpp"
 
 namespace cemv::formats {
+
+using model::in_quotes;
+
+// Lines and JSON paths (declared in diagnostics.hpp) live here, beside the walk
+// that uses them, so that diagnostics.cpp calls this file and not the reverse.
+
+LineIndex::LineIndex(std::string_view text) : size_(text.size()) {
+  for (std::size_t k = text.find('\n'); k != std::string_view::npos; k = text.find('\n', k + 1))
+    breaks_.push_back(k);
+}
+
+std::pair<std::size_t, std::size_t> LineIndex::line_and_column(std::size_t index) const {
+  index = std::min(index, size_);
+  auto before = std::lower_bound(breaks_.begin(), breaks_.end(), index);  // the breaks before index
+  std::size_t line = 1 + static_cast<std::size_t>(before - breaks_.begin());
+  std::size_t column = before == breaks_.begin() ? index + 1 : index - *std::prev(before);
+  return {line, column};
+}
+
+std::string LineIndex::line_column(std::size_t index) const {
+  auto [line, column] = line_and_column(index);
+  return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
+std::string member_path(const std::string& parent, std::string_view key) {
+  bool identifier = !key.empty() && key.size() <= 48 &&
+                    (std::isalpha(static_cast<unsigned char>(key[0])) || key[0] == '_');
+  for (unsigned char c : key) identifier = identifier && (std::isalnum(c) || c == '_');
+  std::string segment = identifier ? std::string(key) : "[" + in_quotes(key) + "]";
+  if (parent.empty()) return segment;
+  return identifier ? parent + "." + segment : parent + segment;
+}
+
+std::string element_path(const std::string& parent, std::size_t index) {
+  return parent + "[" + std::to_string(index) + "]";
+}
 
 namespace {
 
