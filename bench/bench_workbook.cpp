@@ -15,9 +15,9 @@
 #include <string>
 #include <vector>
 
-#include "formats/workbook.hpp"
-#include "formats/workbook_sheet.hpp"
-#include "formats/workbook_zip.hpp"
+#include "sheets/workbook.hpp"
+#include "sheets/workbook_sheet.hpp"
+#include "sheets/workbook_zip.hpp"
 
 namespace {
 

@@ -10,7 +10,7 @@
 #include "cli/matrix_input.hpp"
 #include "cli/output.hpp"
 #include "cli/sheet_layout_options.hpp"
-#include "formats/csv.hpp"
+#include "sheets/csv.hpp"
 #include "formats/matrix_json.hpp"
 #include "formats/text_encoding.hpp"
 #include "model/names.hpp"

@@ -15,7 +15,7 @@
 #include "cli/sheet_layout_options.hpp"
 #include "diff/structural.hpp"
 #include "formats/matrix_json.hpp"
-#include "formats/workbook.hpp"
+#include "sheets/workbook.hpp"
 
 namespace cemv::cli {
 

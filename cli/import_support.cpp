@@ -3,7 +3,7 @@
 #include <ostream>
 
 #include "cli/matrix_input.hpp"
-#include "formats/import_record.hpp"
+#include "sheets/import_record.hpp"
 #include "formats/params.hpp"
 
 namespace cemv::cli {

@@ -11,7 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "formats/sheet_layout.hpp"
+#include "sheets/sheet_layout.hpp"
 
 namespace cemv::cli {
 

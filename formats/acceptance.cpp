@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "formats/csv.hpp"
+#include "formats/csv_rfc4180.hpp"
 #include "formats/diagnostics.hpp"
 
 namespace cemv::formats {

@@ -1,4 +1,4 @@
-// Spreadsheet import and export (6.6), docs/csv.md.
+// The record layout cemv-csv/1 (6.6), docs/csv.md.
 #include "formats/csv.hpp"
 
 #include <algorithm>
@@ -12,7 +12,6 @@
 #include <set>
 #include <utility>
 
-#include "formats/csv_grid.hpp"
 #include "formats/csv_text.hpp"
 #include "formats/matrix_extras.hpp"
 #include "formats/matrix_json.hpp"
@@ -792,46 +791,18 @@ std::string export_csv(const Matrix& m) {
 
 // ---- import -------------------------------------------------------------------------
 
-namespace {
-
-// --strict (for CI): every warning of the import is an error.
-LoadError strict_refusal(const std::vector<LoadIssue>& warnings) {
-  std::vector<LoadIssue> errors = warnings;
-  errors.push_back({"", std::to_string(warnings.size()) +
-                            (warnings.size() == 1 ? " import warning is" : " import warnings are") +
-                            " an error under --strict"});
-  return LoadError(errors);
+bool starts_as_csv_records(std::string_view text) {
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);
+  std::string_view first = text.substr(0, text.find_first_of(",\r\n"));
+  if (!first.empty() && first.front() == '#') first.remove_prefix(1);
+  return find_schema(first) != nullptr;
 }
 
-}  // namespace
-
-CsvImportResult import_csv(std::string_view text, const std::string& source_name,
-                           const CsvImportOptions& options) {
-  CsvLayoutKind layout = options.layout;
-  if (layout == CsvLayoutKind::Auto) {
-    std::string_view probe = text;
-    if (probe.substr(0, 3) == "\xEF\xBB\xBF") probe.remove_prefix(3);
-    // The record layout starts with a record type or its header in column 1
-    // (`#property,` as export writes it); a grid starts with a label or nothing.
-    std::string_view first = probe.substr(0, probe.find_first_of(",\r\n"));
-    if (!first.empty() && first.front() == '#') first.remove_prefix(1);
-    layout = find_schema(first) ? CsvLayoutKind::Records : CsvLayoutKind::Grid;
-  }
-  if (layout == CsvLayoutKind::Records) {
-    if (options.sheet_layout)
-      throw LoadError({{source_name, "a layout description (cemv-sheet-layout/1) is for a C&E grid; the file is "
-                                     "the record layout cemv-csv/1, which says where everything is"}});
-    auto records = parse_csv(text, ',', true, source_name);
-    RecordImporter importer(records, source_name);
-    Matrix m = importer.run();
-    CsvImportResult result;
-    result.layout = CsvLayoutKind::Records;
-    result.matrix = check_with_loader(m, source_name, &importer);
-    return result;
-  }
-  CsvImportResult result = grid::import_grid(text, source_name, options);
-  if (options.strict && !result.warnings.empty()) throw strict_refusal(result.warnings);
-  return result;
+Matrix import_csv_records(std::string_view text, const std::string& source_name) {
+  auto records = parse_csv(text, ',', true, source_name);
+  RecordImporter importer(records, source_name);
+  Matrix m = importer.run();
+  return check_with_loader(m, source_name, &importer);
 }
 
 }  // namespace cemv::formats

@@ -1,5 +1,5 @@
-// Small text helpers shared by the CSV readers and writers (formats/csv*.cpp);
-// not part of the public interface of cemv_formats.
+// Small text helpers shared by the CSV readers and writers (formats/csv*.cpp
+// and the grid's, sheets/csv_grid*.cpp); not part of the public interface.
 #pragma once
 
 #include <string>

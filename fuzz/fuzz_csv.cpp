@@ -1,4 +1,4 @@
-// Fuzz target: the spreadsheet importers (formats/csv.hpp, docs/csv.md), the
+// Fuzz target: the spreadsheet importers (sheets/csv.hpp, docs/csv.md), the
 // bytes `cemv import-csv` reads: the record layout and the C&E grid, with the
 // layout detected and with the grid forced in either orientation (strict in
 // one, so the warnings-as-errors path runs too), and with a vendor sheet's
@@ -9,7 +9,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "formats/csv.hpp"
+#include "sheets/csv.hpp"
 #include "formats/matrix_json.hpp"
 #include "fuzz/fuzz_support.hpp"
 

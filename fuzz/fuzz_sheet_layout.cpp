@@ -1,4 +1,4 @@
-// Fuzz target: the layout description of a C&E sheet (formats/sheet_layout.hpp,
+// Fuzz target: the layout description of a C&E sheet (sheets/sheet_layout.hpp,
 // docs/csv.md "The layout description"), the bytes of `--sheet-layout FILE`.
 // Expected answers: a layout, or a LoadError. Invariant of an accepted layout:
 // written back (the form --save-layout writes) it reads as the same layout,
@@ -7,7 +7,7 @@
 #include <cstdint>
 
 #include "formats/diagnostics.hpp"
-#include "formats/sheet_layout.hpp"
+#include "sheets/sheet_layout.hpp"
 #include "fuzz/fuzz_support.hpp"
 
 using namespace cemv;

@@ -1,4 +1,4 @@
-// Fuzz target: the workbook importer (formats/workbook.hpp, docs/workbook.md),
+// Fuzz target: the workbook importer (sheets/workbook.hpp, docs/workbook.md),
 // the bytes `cemv import-workbook` reads: an ODS or XLSX file, the six tables
 // or a C&E grid. Expected answers: a matrix, or a LoadError. Invariants of an
 // accepted matrix: it passes the matrix loader (the importer promises the JSON
@@ -26,8 +26,8 @@
 #include <string_view>
 
 #include "formats/matrix_json.hpp"
-#include "formats/workbook.hpp"
-#include "formats/workbook_zip.hpp"
+#include "sheets/workbook.hpp"
+#include "sheets/workbook_zip.hpp"
 #include "fuzz/fuzz_support.hpp"
 
 using namespace cemv;

@@ -64,12 +64,12 @@ PY
 # of the tests, and (the target's second way in, fuzz/fuzz_workbook.cpp) the
 # same archives unpacked into "@@ NAME" listings, plus a C&E grid on one sheet.
 i=0
-for f in examples/*/matrix.json tests/formats/workbook_cases/*/matrix.json; do
+for f in examples/*/matrix.json tests/sheets/workbook_cases/*/matrix.json; do
   i=$((i + 1)); name=$(printf %03d $i)-$(basename "$(dirname "$f")")
   "$cemv" export-workbook "$f" -o "$out/workbook/$name.ods" -q
   "$cemv" export-workbook "$f" -o "$out/workbook/$name.xlsx" -q
 done
-for f in tests/formats/workbook_malformed/*.ods tests/formats/workbook_malformed/*.xlsx; do
+for f in tests/sheets/workbook_malformed/*.ods tests/sheets/workbook_malformed/*.xlsx; do
   i=$((i + 1)); cp "$f" "$out/workbook/$(printf %03d $i)-$(basename "$f")"
 done
 python3 - "$out/workbook" <<'PY'
@@ -109,7 +109,7 @@ PY
 
 # The layout descriptions of the vendor workbook's tests.
 i=0
-for f in tests/formats/vendor_cases/layout-*.json; do
+for f in tests/sheets/vendor_cases/layout-*.json; do
   i=$((i + 1)); cp "$f" "$out/sheet_layout/$(printf %03d $i)-$(basename "$f")"
 done
 

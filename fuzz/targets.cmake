@@ -5,9 +5,9 @@
 # tests/fuzz/fuzz.cmake (each corpus replayed in ctest) and by fuzz/run.sh.
 # Adding a target: its source, its corpus folder, and one line here.
 cemv_fuzz_target(matrix_json cemv_formats)
-cemv_fuzz_target(csv cemv_formats)
+cemv_fuzz_target(csv cemv_sheets)
 cemv_fuzz_target(scenario cemv_formats)
 cemv_fuzz_target(properties cemv_properties)
-cemv_fuzz_target(workbook cemv_formats)
-cemv_fuzz_target(sheet_layout cemv_formats)
+cemv_fuzz_target(workbook cemv_sheets)
+cemv_fuzz_target(sheet_layout cemv_sheets)
 cemv_fuzz_target(plc cemv_plc)

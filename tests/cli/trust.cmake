@@ -26,7 +26,7 @@ set(_writers
   "graph ${_tank} --order"
   "export-csv ${_tank}"
   "export-csv ${_tank} --layout grid"
-  "import-csv tests/formats/csv_cases/tab_grid.tsv --orientation causes-as-rows"
+  "import-csv tests/sheets/csv_cases/tab_grid.tsv --orientation causes-as-rows"
   "export-smt ${_hipps} --roots effect:1 --depth 2"
   "simulate ${_ch13} ${_on_delay}"
   "simulate ${_ch13} ${_on_delay} --format json")
@@ -56,7 +56,7 @@ cemv_cli_test(NAME cli_closed_pipe_is_quiet EXIT 0 MATCH "^quiet$"
 cemv_cli_test(NAME cli_simulate_unwritable_trace_fails_first EXIT 0 MATCH "^fails first$"
   COMMAND bash ${_t}/quiet.sh ${_c} unwritable ${_ch13} ${_on_delay} --trace /no/such/dir/t.json)
 foreach(_args "report ${_tank}" "fmt ${_tank}" "graph ${_tank}" "export-csv ${_tank}" "validate ${_tank}"
-              "export-smt ${_hipps}" "simulate ${_ch13} ${_on_delay}" "import-csv tests/formats/csv_cases/tab_grid.tsv --orientation causes-as-rows")
+              "export-smt ${_hipps}" "simulate ${_ch13} ${_on_delay}" "import-csv tests/sheets/csv_cases/tab_grid.tsv --orientation causes-as-rows")
   string(REGEX MATCH "^[a-z-]+" _cmd "${_args}")
   cemv_cli_test(NAME cli_unwritable_output_${_cmd} EXIT 2 MATCH "^error: /no/such/dir/out: cannot write"
     COMMAND bash -c "$0 ${_args} -o /no/such/dir/out" ${_c})
@@ -89,8 +89,8 @@ foreach(_case
     "scenario_utf8|simulate ${_ch13} ${_t}/scenario_bad_utf8.json|^.*scenario_bad_utf8.json:1:[0-9]+: error: invalid UTF-8: byte 0xFF does not belong here"
     "scenario_tag|simulate ${_ch13} tests/scenarios/rejects/typo_tag.json|^tests/scenarios/rejects/typo_tag.json:[0-9]+:[0-9]+: error: steps\\[0\\]\\.inputs: unknown tag 'INHI13'"
     "scenario_missing|simulate ${_ch13} no/such/scenario.json|^no/such/scenario.json: error: cannot open"
-    "csv_syntax|import-csv tests/formats/csv_cases/bad_unterminated_quote.csv|^tests/formats/csv_cases/bad_unterminated_quote.csv:[0-9]+(:[0-9]+)?: error: "
-    "csv_not_grid|import-csv tests/formats/csv_cases/not_a_grid.csv|^tests/formats/csv_cases/not_a_grid.csv(:[0-9]+)*: error: ")
+    "csv_syntax|import-csv tests/sheets/csv_cases/bad_unterminated_quote.csv|^tests/sheets/csv_cases/bad_unterminated_quote.csv:[0-9]+(:[0-9]+)?: error: "
+    "csv_not_grid|import-csv tests/sheets/csv_cases/not_a_grid.csv|^tests/sheets/csv_cases/not_a_grid.csv(:[0-9]+)*: error: ")
   string(REPLACE "|" ";" _parts "${_case}")
   list(GET _parts 0 _name)
   list(GET _parts 1 _args)
@@ -127,14 +127,14 @@ cemv_cli_test(NAME cli_export_csv_orientation_needs_grid EXIT 2 MATCH "--orienta
   COMMAND ${_c} export-csv ${_tank} --orientation effects-as-rows)
 cemv_cli_test(NAME cli_import_csv_grid_options_with_records_refused EXIT 2
   MATCH "--separator, --name and --orientation apply to grids"
-  COMMAND ${_c} import-csv tests/formats/csv_cases/tab_grid.tsv --layout records --name X)
+  COMMAND ${_c} import-csv tests/sheets/csv_cases/tab_grid.tsv --layout records --name X)
 cemv_cli_test(NAME cli_fmt_several_files_without_check EXIT 2 MATCH "give one FILE to format"
   COMMAND ${_c} fmt ${_tank} ${_hipps})
 cemv_cli_test(NAME cli_import_csv_name_too_long EXIT 2
   MATCH "--name 'ABCDEFGHIJKLMNOPQ': 17 characters. a matrix name has at most 16 \\(6\\.1\\.2\\)"
-  COMMAND ${_c} import-csv tests/formats/csv_cases/tab_grid.tsv --orientation causes-as-rows --name ABCDEFGHIJKLMNOPQ)
+  COMMAND ${_c} import-csv tests/sheets/csv_cases/tab_grid.tsv --orientation causes-as-rows --name ABCDEFGHIJKLMNOPQ)
 cemv_cli_test(NAME cli_import_csv_name_16_accepted EXIT 0 MATCH "\"name\": \"ABCDEFGHIJKLMNOP\""
-  COMMAND ${_c} import-csv tests/formats/csv_cases/tab_grid.tsv --orientation causes-as-rows --name ABCDEFGHIJKLMNOP -q)
+  COMMAND ${_c} import-csv tests/sheets/csv_cases/tab_grid.tsv --orientation causes-as-rows --name ABCDEFGHIJKLMNOP -q)
 cemv_cli_test(NAME cli_unknown_command_did_you_mean EXIT 2
   MATCH "^error: unknown command 'grpah'. did you mean 'graph'\\?"
   COMMAND ${_c} grpah ${_tank})

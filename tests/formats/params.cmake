@@ -2,7 +2,7 @@
 # encodings (docs/format.md "Provenance", docs/csv.md): the library, then the
 # command line.
 add_executable(test_formats_params ${CMAKE_CURRENT_LIST_DIR}/test_params.cpp)
-target_link_libraries(test_formats_params PRIVATE cemv_formats GTest::gtest_main nlohmann_json::nlohmann_json)
+target_link_libraries(test_formats_params PRIVATE cemv_formats cemv_sheets GTest::gtest_main nlohmann_json::nlohmann_json)
 gtest_discover_tests(test_formats_params DISCOVERY_MODE PRE_TEST)
 
 set(PARAMS_CASES tests/formats/params_cases)

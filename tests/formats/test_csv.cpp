@@ -7,7 +7,7 @@
 #include <regex>
 #include <sstream>
 
-#include "formats/csv.hpp"
+#include "sheets/csv.hpp"
 #include "model/names.hpp"
 #include "formats/matrix_json.hpp"
 #include "test_csv_support.hpp"

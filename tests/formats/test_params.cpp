@@ -5,12 +5,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "formats/csv.hpp"
-#include "formats/import_record.hpp"
+#include "sheets/csv.hpp"
+#include "sheets/import_record.hpp"
 #include "formats/matrix_json.hpp"
 #include "formats/params.hpp"
 #include "formats/text_encoding.hpp"
-#include "formats/workbook.hpp"
+#include "sheets/workbook.hpp"
 
 namespace cemv::formats {
 namespace {

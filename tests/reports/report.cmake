@@ -18,4 +18,4 @@ cemv_cli_test(NAME cli_report_deterministic EXIT 0 MATCH "deterministic, signatu
 cemv_cli_test(NAME cli_report_bad_format EXIT 2 MATCH "format"
   COMMAND $<TARGET_FILE:cemv> report examples/tank-overfill/matrix.json --format pdf)
 cemv_cli_test(NAME cli_report_missing_file EXIT 2 MATCH "error:"
-  COMMAND $<TARGET_FILE:cemv> report tests/formats/csv_cases/no_such_matrix.json)
+  COMMAND $<TARGET_FILE:cemv> report tests/sheets/csv_cases/no_such_matrix.json)

@@ -22,5 +22,5 @@ for f in "$cases"/scenario_*.json tests/scenarios/rejects/typo_tag.json tests/sc
 done
 check tests/scenarios/matrices/matrix_with_x.json simulate tests/scenarios/matrices/matrix_with_x.json tests/scenarios/rejects/trivial.json
 check "$cases/duplicate_id.json" graph "$cases/duplicate_id.json"
-for f in tests/formats/csv_cases/bad_*.csv tests/formats/csv_cases/not_a_grid.csv; do check "$f" import-csv "$f"; done
+for f in tests/sheets/csv_cases/bad_*.csv tests/sheets/csv_cases/not_a_grid.csv; do check "$f" import-csv "$f"; done
 [ $fail = 0 ] && echo "every line names its file"
