@@ -7,6 +7,8 @@
 #include <thread>
 #include <vector>
 
+#include <z3++.h>
+
 namespace cemv::checker {
 
 std::size_t WorkQueue::run(std::size_t n, const std::function<void(std::size_t)>& task) {
@@ -27,6 +29,14 @@ std::size_t WorkQueue::run(std::size_t n, const std::function<void(std::size_t)>
         // --total-timeout): it did not finish, and that is no failure.
         // What it left in its slot is the caller's to report as undecided.
         continue;
+      } catch (const z3::exception&) {
+        // After the token has interrupted a context, any call on it may
+        // throw "canceled"; only without a cancellation is it a failure.
+        if (cancel_.cancelled()) continue;
+        std::lock_guard<std::mutex> lock(mutex);
+        if (!failure) failure = std::current_exception();
+        cancel_.cancel();
+        return;
       } catch (...) {
         std::lock_guard<std::mutex> lock(mutex);
         if (!failure) failure = std::current_exception();

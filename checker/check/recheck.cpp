@@ -89,10 +89,12 @@ void recheck_proof(const SafetyProblem& problem, const ProverResult& result, con
   std::optional<Watchdog> watchdog;
   if (limits) watchdog.emplace(problem.ts->ctx(), *limits);
   for (const auto& o : obs) {
-    s.push();
-    s.add(o.formula);
     z3::check_result cr = z3::unknown;
+    // Once the watchdog has interrupted the context, every call on it throws
+    // "canceled" (push and add too), which is the user's time limit, not a bug.
     try {
+      s.push();
+      s.add(o.formula);
       cr = s.check();
     } catch (const z3::exception&) {
       if (limits) stop_if_interrupted(*limits);
@@ -103,7 +105,12 @@ void recheck_proof(const SafetyProblem& problem, const ProverResult& result, con
       throw InternalError(result.method_text() + " proof (k=" + std::to_string(result.k) + ") fails its re-check: " +
                           o.name + " is " + (cr == z3::sat ? "sat" : "unknown (" + s.reason_unknown() + ")") +
                           "\ninvariant:\n" + result.invariant.text());
-    s.pop();
+    try {
+      s.pop();
+    } catch (const z3::exception&) {
+      if (limits) stop_if_interrupted(*limits);
+      throw;
+    }
   }
 }
 
@@ -126,10 +133,10 @@ std::optional<std::vector<z3::expr>> proof_core(const SafetyProblem& problem, co
   Watchdog watchdog(ctx, limits);
   WorkMeter meter(ctx, work);
   for (const auto& o : obs) {
-    s.push();
-    s.add(o.formula);
     z3::check_result cr = z3::unknown;
     try {
+      s.push();
+      s.add(o.formula);
       cr = check_within(s, meter, assumptions);
     } catch (const z3::exception&) {
       stop_if_interrupted(limits);
@@ -137,10 +144,15 @@ std::optional<std::vector<z3::expr>> proof_core(const SafetyProblem& problem, co
     }
     stop_if_interrupted(limits);
     if (cr != z3::unsat) return std::nullopt;
-    const z3::expr_vector used = s.unsat_core();
-    for (unsigned i = 0; i < used.size(); ++i)
-      if (in_core.insert(used[i].id()).second) core.push_back(used[i]);
-    s.pop();
+    try {
+      const z3::expr_vector used = s.unsat_core();
+      for (unsigned i = 0; i < used.size(); ++i)
+        if (in_core.insert(used[i].id()).second) core.push_back(used[i]);
+      s.pop();
+    } catch (const z3::exception&) {
+      stop_if_interrupted(limits);
+      return std::nullopt;
+    }
   }
   return core;
 }

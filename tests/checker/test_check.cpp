@@ -32,6 +32,23 @@ TEST(Recheck, AcceptsTheHippsOverrideProof) {
   EXPECT_NO_THROW(check::recheck_proof(p.make, r));
 }
 
+// The user's time limit interrupts a re-check through its context: every
+// later call on that context (push and add, not only check) may throw
+// "canceled", and that is an interruption, never an internal error.
+TEST(Recheck, AnInterruptedContextIsAnInterruptionNotAFailure) {
+  auto p = fixtures::override_instance_monitor(18000, Verdict::Proved);
+  ProverResult r = solve(*make_invariant_prover(), p);
+  ASSERT_EQ(r.verdict, Verdict::Proved) << r.reason_text();
+  z3::context ctx;
+  OwnedProblem o = p.make(ctx);
+  CancelToken token;
+  token.cancel();
+  Limits limits;
+  limits.cancel = &token;
+  ctx.interrupt();
+  EXPECT_THROW(check::recheck_proof(o.problem, r, &limits), Interrupted);
+}
+
 TEST(Recheck, RejectsAProofWhoseInvariantIsWeakened) {
   auto p = fixtures::override_instance_monitor(18000, Verdict::Proved);
   ProverResult r = solve(*make_invariant_prover(), p);
