@@ -16,7 +16,7 @@ if(TARGET cemv_plc_check AND TARGET cemv_plc)
   add_executable(test_plc_check ${CMAKE_CURRENT_LIST_DIR}/test_plc_check.cpp)
   target_link_libraries(test_plc_check PRIVATE cemv_plc_check GTest::gtest_main)
   target_compile_definitions(test_plc_check PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
-  gtest_discover_tests(test_plc_check DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 900)
+  gtest_discover_tests(test_plc_check DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 300)
 endif()
 # The command line: a refutation (exit 1) with its scenario, an incomplete map (exit 2).
 if(TARGET cemv_plc_check AND TARGET cemv_plc)

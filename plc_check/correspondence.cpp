@@ -1,0 +1,303 @@
+// Correspondence invariants of a product of matrix and program, and the
+// proof of an output's relation from them (correspondence.hpp).
+#include "plc_check/correspondence.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <random>
+#include <map>
+#include <optional>
+#include <set>
+#include <stdexcept>
+#include <unordered_set>
+
+#include "checker/engines/invariants.hpp"
+#include "checker/engines/solving.hpp"
+#include "encoder/encode.hpp"
+#include "encoder/evaluate.hpp"
+#include "encoder/unroller.hpp"
+#include "plc_check/product.hpp"
+
+namespace cemv::plc_check {
+
+namespace {
+
+using Sample = std::vector<encoder::Evaluator::Value>;
+using checker::ProverResult;
+using checker::UnknownReason;
+using checker::Verdict;
+
+void int_numerals(const z3::expr& e, std::set<std::int64_t>& out, std::unordered_set<unsigned>& seen) {
+  if (!seen.insert(e.id()).second || !e.is_app()) return;
+  std::int64_t v = 0;
+  if (e.num_args() == 0 && e.is_int() && e.is_numeral() && e.is_numeral_i64(v)) out.insert(v);
+  for (unsigned i = 0; i < e.num_args(); ++i) int_numerals(e.arg(i), out, seen);
+}
+
+// Seeded runs of the product from its initial state: inputs drawn from the
+// numerals of its formulas (the limits, as ordered integers once reduced) and
+// one either side, each input changed or kept at the start of a stretch, the
+// stretch held for a number of cycles that is one of the system's numerals or
+// one either side (a timer runs out, or stops one scan short). A run ends at
+// the first cycle that breaks the constraints or the map's assumption.
+std::vector<Sample> simulate(const checker::SafetyProblem& p, const CorrespondenceOptions& o) {
+  const auto& ts = *p.ts;
+  encoder::Encoding enc(ts.ctx());
+  enc.ts = ts;
+  const std::string allowed = std::string(kProgramPrefix) + "sample.allowed";
+  enc.ts.name_term(allowed, ts.constraint_formula() && p.assumption);
+  encoder::Evaluator ev(enc);
+  std::set<std::int64_t> k{0, 1};
+  std::unordered_set<unsigned> seen;
+  for (const auto& s : ts.statevars()) int_numerals(s.next, k, seen);
+  int_numerals(p.good, k, seen);
+  int_numerals(p.assumption, k, seen);
+  std::vector<std::int64_t> values;
+  for (std::int64_t c : k)
+    for (std::int64_t d : {c - 1, c, c + 1}) values.push_back(d);
+  std::vector<int> holds{1, 2, 3};
+  for (std::int64_t c : k)
+    if (c >= 2 && c <= 2000) holds.insert(holds.end(), {static_cast<int>(c), static_cast<int>(c) + 1, static_cast<int>(c) + 2});
+  std::mt19937 rng(o.seed);
+  auto pick = [&](std::size_t n) { return std::uniform_int_distribution<std::size_t>(0, n - 1)(rng); };
+  const auto& ins = ts.inputvars();
+  std::vector<Sample> samples{ev.state()};
+  for (int run = 0; run < o.runs; ++run) {
+    ev.reset();
+    std::vector<encoder::Evaluator::Value> in(ins.size());
+    bool ok = true;
+    for (int cycle = 0; ok && cycle < o.cycles_per_run;) {
+      for (std::size_t i = 0; i < in.size(); ++i) {
+        if (cycle > 0 && pick(2) == 0) continue;
+        if (ins[i].var.is_bool()) in[i].i = static_cast<std::int64_t>(pick(2));
+        else if (ins[i].var.is_int()) in[i].i = values[pick(values.size())];
+        else in[i].f = static_cast<float>(values[pick(values.size())]);
+      }
+      const int hold = pick(3) == 0 ? holds[pick(holds.size())] : 1 + static_cast<int>(pick(4));
+      for (int h = 0; ok && h < hold && cycle < o.cycles_per_run; ++h, ++cycle) {
+        ev.step_raw(in);
+        ok = ev.value(allowed) != 0;
+        if (ok) samples.push_back(ev.state());
+      }
+    }
+  }
+  std::set<std::vector<std::int64_t>> distinct;
+  std::vector<Sample> out;
+  for (auto& s : samples) {
+    std::vector<std::int64_t> key;
+    for (const auto& v : s) key.insert(key.end(), {v.i, static_cast<std::int64_t>(std::bit_cast<std::uint32_t>(v.f))});
+    if (distinct.insert(std::move(key)).second) out.push_back(std::move(s));
+  }
+  return out;
+}
+
+// The templates of the header comment, tested on the samples.
+class Templates {
+ public:
+  Templates(const encoder::TransitionSystem& ts, std::vector<Sample> samples) : ts_(ts), samples_(std::move(samples)) {
+    for (std::size_t i = 0; i < ts.statevars().size(); ++i) {
+      const auto& v = ts.statevars()[i];
+      const bool program = v.name.rfind(kProgramPrefix, 0) == 0;
+      if (v.var.is_int()) (program ? program_ints_ : matrix_ints_).push_back(i);
+      else if (v.var.is_bool()) bools_.push_back(i);
+    }
+    guards_.push_back({SIZE_MAX, 1});
+    for (std::size_t b : bools_)
+      for (int pol = 1; pol >= 0; --pol)
+        if (std::any_of(samples_.begin(), samples_.end(), [&](const Sample& s) { return s[b].i == pol; }))
+          guards_.push_back({b, pol});
+  }
+
+  std::vector<z3::expr> make() {
+    for (const auto& g : guards_) {
+      linear(g);
+      constants(g);
+    }
+    block_clauses();
+    return std::move(out_);
+  }
+
+ private:
+  struct Guard {
+    std::size_t var;  // SIZE_MAX: none
+    int pol;
+  };
+  bool holds(const Guard& g, const Sample& s) const { return g.var == SIZE_MAX || s[g.var].i == g.pol; }
+  z3::expr var(std::size_t v) const { return ts_.statevars()[v].var; }
+  z3::expr num(std::int64_t c) const { return ts_.ctx().int_val(c); }
+  void add(const Guard& g, const z3::expr& e) {
+    if (g.var == SIZE_MAX) out_.push_back(e);
+    else out_.push_back(z3::implies(g.pol ? var(g.var) : !var(g.var), e));
+  }
+
+  // x = a * y + b, x the program's, y the matrix's: a timer's elapsed time
+  // and the matrix's delay counter (a = the scan time), a count and a count.
+  void linear(const Guard& g) {
+    for (std::size_t x : program_ints_)
+      for (std::size_t y : matrix_ints_) {
+        const Sample* first = nullptr;
+        std::optional<std::int64_t> a, b;
+        bool fits = true;
+        for (const auto& s : samples_) {
+          if (!holds(g, s)) continue;
+          if (!first) {
+            first = &s;
+          } else if (!a && s[y].i != (*first)[y].i) {
+            const std::int64_t dx = s[x].i - (*first)[x].i, dy = s[y].i - (*first)[y].i;
+            if (dx == 0 || dx % dy != 0) fits = false;
+            a = dx / (dy == 0 ? 1 : dy);
+            b = (*first)[x].i - *a * (*first)[y].i;
+          }
+          if (!fits) break;
+        }
+        if (!fits || !a) continue;
+        for (const auto& s : samples_)
+          if (holds(g, s) && s[x].i != *a * s[y].i + *b) fits = false;
+        if (fits) add(g, var(x) == num(*a) * var(y) + num(*b));
+      }
+  }
+
+  // v = c wherever the guard holds (and not everywhere: the checker's
+  // miner states those).
+  void constants(const Guard& g) {
+    if (g.var == SIZE_MAX) return;
+    for (const auto* side : {&program_ints_, &matrix_ints_})
+      for (std::size_t v : *side) {
+        std::optional<std::int64_t> c;
+        bool constant = true, global = true;
+        for (const auto& s : samples_) {
+          if (s[v].i != samples_.front()[v].i) global = false;
+          if (!holds(g, s)) continue;
+          if (c && *c != s[v].i) constant = false;
+          c = s[v].i;
+        }
+        if (constant && c && !global) add(g, var(v) == num(*c));
+      }
+  }
+
+  // Clauses of three literals over the flags of one block instance of the
+  // program ("plc.DLY.#RUN", "plc.DLY.#DONE", "plc.DLY.#PREV", "plc.DLY.Q"):
+  // a timer's reachable states are a few of the eight its flags allow.
+  void block_clauses() {
+    std::map<std::string, std::vector<std::size_t>> blocks;
+    for (std::size_t b : bools_) {
+      const std::string& n = ts_.statevars()[b].name;
+      const auto dot = n.rfind('.');
+      if (n.rfind(kProgramPrefix, 0) == 0 && dot != std::string::npos && dot > std::string(kProgramPrefix).size())
+        blocks[n.substr(0, dot)].push_back(b);
+    }
+    for (const auto& [name, flags] : blocks) {
+      if (flags.size() < 3 || flags.size() > 8) continue;
+      for (std::size_t i = 0; i < flags.size(); ++i)
+        for (std::size_t j = i + 1; j < flags.size(); ++j)
+          for (std::size_t l = j + 1; l < flags.size(); ++l)
+            for (int pols = 0; pols < 8; ++pols) {
+              const std::size_t v[3] = {flags[i], flags[j], flags[l]};
+              const int pol[3] = {pols & 1, (pols >> 1) & 1, (pols >> 2) & 1};
+              const bool always = std::all_of(samples_.begin(), samples_.end(), [&](const Sample& s) {
+                return s[v[0]].i == pol[0] || s[v[1]].i == pol[1] || s[v[2]].i == pol[2];
+              });
+              if (!always) continue;
+              z3::expr_vector lits(ts_.ctx());
+              for (int t = 0; t < 3; ++t) lits.push_back(pol[t] ? var(v[t]) : !var(v[t]));
+              out_.push_back(z3::mk_or(lits));
+            }
+    }
+  }
+
+  const encoder::TransitionSystem& ts_;
+  std::vector<Sample> samples_;
+  std::vector<std::size_t> program_ints_, matrix_ints_, bools_;
+  std::vector<Guard> guards_;
+  std::vector<z3::expr> out_;
+};
+
+ProverResult unknown(ProverResult r, UnknownReason why) {
+  r.verdict = Verdict::Unknown;
+  r.reason = why;
+  r.invariant = {};
+  return r;
+}
+
+// `good` from the invariant S: in the same scan (k = 0), or in the first scan
+// and after any scan that kept it (k = 1). nullopt when neither.
+std::optional<int> good_from(const checker::SafetyProblem& p, const z3::expr& S, const checker::Limits& limits,
+                             checker::WorkMeter& meter) {
+  const auto& ts = *p.ts;
+  encoder::Unroller u(ts);
+  const z3::expr facts = ts.constraint_formula() && p.assumption;
+  auto unsat = [&](const z3::expr& f) {
+    z3::solver s(ts.ctx());
+    s.add(f);
+    const z3::check_result r = checker::check_within(s, meter);
+    if (r == z3::unknown) throw checker::Stopped{checker::unknown_reason(s.reason_unknown(), limits, meter)};
+    return r == z3::unsat;
+  };
+  if (unsat(u.at(S && facts && !p.good, 0))) return 0;
+  if (!unsat(u.at(ts.init_formula() && facts && !p.good, 0))) return std::nullopt;
+  if (unsat(u.at(S && facts && p.good && ts.trans_formula(), 0) && u.at(S && facts && !p.good, 1))) return 1;
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::vector<z3::expr> correspondence_candidates(const checker::SafetyProblem& p, const CorrespondenceOptions& o) {
+  std::vector<Sample> samples;
+  try {
+    samples = simulate(p, o);
+  } catch (const std::logic_error&) {
+    return {};  // an operator the evaluator does not take: no samples, no candidates
+  }
+  return Templates(*p.ts, std::move(samples)).make();
+}
+
+Correspondence prove_by_correspondence(const checker::SafetyProblem& p, const checker::Limits& limits,
+                                       const CorrespondenceOptions& o) {
+  const auto start = checker::Clock::now();
+  Correspondence out;
+  ProverResult& r = out.result;
+  r.method = checker::Method::InvariantsInduction;
+  z3::context& ctx = p.ts->ctx();
+  checker::WorkMeter meter(ctx, limits.work);
+  try {
+    std::vector<z3::expr> cands;
+    std::unordered_set<unsigned> ids;
+    auto add = [&](const z3::expr& e) {
+      if (ids.insert(e.id()).second) cands.push_back(e);
+    };
+    for (const auto& l : p.ts->lemmas()) add(l.term);
+    checker::MiningOptions mo;
+    mo.runs = o.runs;
+    mo.cycles_per_run = o.cycles_per_run;
+    mo.seed = o.seed;
+    mo.limits = &limits;
+    for (const auto& c : checker::mine_candidates(p, mo)) add(c);
+    for (const auto& c : correspondence_candidates(p, o)) add(c);
+    std::vector<z3::expr> kept = checker::houdini(p, std::move(cands), limits, meter);
+    checker::Watchdog watchdog(ctx, limits);
+    z3::expr_vector all(ctx);
+    for (const auto& c : kept) all.push_back(c);
+    const std::optional<int> k = good_from(p, z3::mk_and(all), limits, meter);
+    out.invariant = std::move(kept);
+    r.work = meter.spent();
+    r.seconds = checker::seconds_since(start);
+    if (!k) {
+      r = unknown(r, UnknownReason::BoundReached);
+      return out;
+    }
+    r.verdict = Verdict::Proved;
+    r.k = *k;
+    for (const auto& c : out.invariant) r.invariant.clauses.push_back(checker::to_smtlib(c));
+  } catch (const checker::Stopped& e) {
+    r.work = meter.spent();
+    r.seconds = checker::seconds_since(start);
+    r = unknown(r, e.reason);
+  } catch (const z3::exception& e) {
+    r.work = meter.spent();
+    r.seconds = checker::seconds_since(start);
+    r = unknown(r, checker::unknown_reason(e.msg(), limits, meter, &r.detail));
+  }
+  return out;
+}
+
+}  // namespace cemv::plc_check
