@@ -2,6 +2,8 @@
 // "Relations", "Counterexamples").
 #include "plc_check/check.hpp"
 
+#include <map>
+#include <memory>
 #include <stdexcept>
 
 #include "checker/check/recheck.hpp"
@@ -152,6 +154,28 @@ std::vector<OutputQuestion> questions(const model::Matrix& m, const ResolvedMap&
 
 namespace {
 
+// The plant at rest for the product's inputs: each tag (named "input.TAG" on
+// both sides) at its scenario default, good quality, no command.
+SamplingOptions at_rest(const model::Matrix& m) {
+  auto rest = std::make_shared<std::map<std::string, checker::Value>>();
+  const model::InputTable table(m);
+  const model::CycleInput defaults = model::default_cycle_input(m);
+  for (std::size_t i = 0; i < table.tags().size(); ++i) {
+    checker::Value v;
+    v.is_float = table.tags()[i].kind == model::TagKind::Analog;
+    v.f = defaults.tags.at(i).value;
+    v.i = v.is_float ? 0 : defaults.tags.at(i).value != 0.0f;
+    (*rest)["input." + table.tags()[i].name] = v;
+  }
+  SamplingOptions o;
+  o.rest = [rest](const std::string& name) -> std::optional<checker::Value> {
+    const auto it = rest->find(name);
+    if (it == rest->end()) return std::nullopt;
+    return it->second;
+  };
+  return o;
+}
+
 // A shortest run to `depth` on the reduced product, whose every scan also
 // keeps `invariant` (true in every reachable state, so no run is lost).
 std::optional<checker::Trace> shortest_run(const checker::OwnedProblem& original, const checker::OwnedProblem& reduced,
@@ -186,9 +210,18 @@ OutputResult check_output(const model::Matrix& m, const plc::Program& program, c
     const checker::OwnedProblem reduced = checker::reduce(original);
     // A short search first: most hand-coding errors show in the first scans.
     if (auto t = shortest_run(original, reduced, {}, options.first_depth, options)) return differs(original, *t, "bmc");
+    // Seeded runs: a difference that needs a delay to run out, found without
+    // a solver; otherwise the states that filter the candidates.
+    const SamplingOptions so = at_rest(m);
+    const Samples s = sample(reduced.problem, so);
+    if (s.violation) {
+      checker::Trace t = checker::lift_trace(original.problem, *s.violation);
+      checker::check::replay_counterexample(original.problem, t, &options.limits);
+      return differs(original, t, "simulation");
+    }
     // The proof from the correspondence of the two states (correspondence.hpp),
     // re-checked in a fresh context on the problem built again.
-    const Correspondence c = prove_by_correspondence(reduced.problem, options.limits.with_work(options.work));
+    const Correspondence c = prove_by_correspondence(reduced.problem, s, options.limits.with_work(options.work), so);
     if (c.result.verdict == Verdict::Proved) {
       checker::check::recheck_proof(checker::reducing(make), c.result, &options.limits);
       out.verdict = OutputVerdict::Related;

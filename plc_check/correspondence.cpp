@@ -3,18 +3,13 @@
 #include "plc_check/correspondence.hpp"
 
 #include <algorithm>
-#include <bit>
-#include <random>
 #include <map>
 #include <optional>
 #include <set>
-#include <stdexcept>
 #include <unordered_set>
 
 #include "checker/engines/invariants.hpp"
 #include "checker/engines/solving.hpp"
-#include "encoder/encode.hpp"
-#include "encoder/evaluate.hpp"
 #include "encoder/unroller.hpp"
 #include "plc_check/product.hpp"
 
@@ -27,74 +22,10 @@ using checker::ProverResult;
 using checker::UnknownReason;
 using checker::Verdict;
 
-void int_numerals(const z3::expr& e, std::set<std::int64_t>& out, std::unordered_set<unsigned>& seen) {
-  if (!seen.insert(e.id()).second || !e.is_app()) return;
-  std::int64_t v = 0;
-  if (e.num_args() == 0 && e.is_int() && e.is_numeral() && e.is_numeral_i64(v)) out.insert(v);
-  for (unsigned i = 0; i < e.num_args(); ++i) int_numerals(e.arg(i), out, seen);
-}
-
-// Seeded runs of the product from its initial state: inputs drawn from the
-// numerals of its formulas (the limits, as ordered integers once reduced) and
-// one either side, each input changed or kept at the start of a stretch, the
-// stretch held for a number of cycles that is one of the system's numerals or
-// one either side (a timer runs out, or stops one scan short). A run ends at
-// the first cycle that breaks the constraints or the map's assumption.
-std::vector<Sample> simulate(const checker::SafetyProblem& p, const CorrespondenceOptions& o) {
-  const auto& ts = *p.ts;
-  encoder::Encoding enc(ts.ctx());
-  enc.ts = ts;
-  const std::string allowed = std::string(kProgramPrefix) + "sample.allowed";
-  enc.ts.name_term(allowed, ts.constraint_formula() && p.assumption);
-  encoder::Evaluator ev(enc);
-  std::set<std::int64_t> k{0, 1};
-  std::unordered_set<unsigned> seen;
-  for (const auto& s : ts.statevars()) int_numerals(s.next, k, seen);
-  int_numerals(p.good, k, seen);
-  int_numerals(p.assumption, k, seen);
-  std::vector<std::int64_t> values;
-  for (std::int64_t c : k)
-    for (std::int64_t d : {c - 1, c, c + 1}) values.push_back(d);
-  std::vector<int> holds{1, 2, 3};
-  for (std::int64_t c : k)
-    if (c >= 2 && c <= 2000) holds.insert(holds.end(), {static_cast<int>(c), static_cast<int>(c) + 1, static_cast<int>(c) + 2});
-  std::mt19937 rng(o.seed);
-  auto pick = [&](std::size_t n) { return std::uniform_int_distribution<std::size_t>(0, n - 1)(rng); };
-  const auto& ins = ts.inputvars();
-  std::vector<Sample> samples{ev.state()};
-  for (int run = 0; run < o.runs; ++run) {
-    ev.reset();
-    std::vector<encoder::Evaluator::Value> in(ins.size());
-    bool ok = true;
-    for (int cycle = 0; ok && cycle < o.cycles_per_run;) {
-      for (std::size_t i = 0; i < in.size(); ++i) {
-        if (cycle > 0 && pick(2) == 0) continue;
-        if (ins[i].var.is_bool()) in[i].i = static_cast<std::int64_t>(pick(2));
-        else if (ins[i].var.is_int()) in[i].i = values[pick(values.size())];
-        else in[i].f = static_cast<float>(values[pick(values.size())]);
-      }
-      const int hold = pick(3) == 0 ? holds[pick(holds.size())] : 1 + static_cast<int>(pick(4));
-      for (int h = 0; ok && h < hold && cycle < o.cycles_per_run; ++h, ++cycle) {
-        ev.step_raw(in);
-        ok = ev.value(allowed) != 0;
-        if (ok) samples.push_back(ev.state());
-      }
-    }
-  }
-  std::set<std::vector<std::int64_t>> distinct;
-  std::vector<Sample> out;
-  for (auto& s : samples) {
-    std::vector<std::int64_t> key;
-    for (const auto& v : s) key.insert(key.end(), {v.i, static_cast<std::int64_t>(std::bit_cast<std::uint32_t>(v.f))});
-    if (distinct.insert(std::move(key)).second) out.push_back(std::move(s));
-  }
-  return out;
-}
-
 // The templates of the header comment, tested on the samples.
 class Templates {
  public:
-  Templates(const encoder::TransitionSystem& ts, std::vector<Sample> samples) : ts_(ts), samples_(std::move(samples)) {
+  Templates(const encoder::TransitionSystem& ts, const std::vector<Sample>& samples) : ts_(ts), samples_(samples) {
     for (std::size_t i = 0; i < ts.statevars().size(); ++i) {
       const auto& v = ts.statevars()[i];
       const bool program = v.name.rfind(kProgramPrefix, 0) == 0;
@@ -206,7 +137,7 @@ class Templates {
   }
 
   const encoder::TransitionSystem& ts_;
-  std::vector<Sample> samples_;
+  const std::vector<Sample>& samples_;
   std::vector<std::size_t> program_ints_, matrix_ints_, bools_;
   std::vector<Guard> guards_;
   std::vector<z3::expr> out_;
@@ -241,18 +172,13 @@ std::optional<int> good_from(const checker::SafetyProblem& p, const z3::expr& S,
 
 }  // namespace
 
-std::vector<z3::expr> correspondence_candidates(const checker::SafetyProblem& p, const CorrespondenceOptions& o) {
-  std::vector<Sample> samples;
-  try {
-    samples = simulate(p, o);
-  } catch (const std::logic_error&) {
-    return {};  // an operator the evaluator does not take: no samples, no candidates
-  }
-  return Templates(*p.ts, std::move(samples)).make();
+std::vector<z3::expr> correspondence_candidates(const checker::SafetyProblem& p, const Samples& samples) {
+  if (samples.states.empty()) return {};
+  return Templates(*p.ts, samples.states).make();
 }
 
-Correspondence prove_by_correspondence(const checker::SafetyProblem& p, const checker::Limits& limits,
-                                       const CorrespondenceOptions& o) {
+Correspondence prove_by_correspondence(const checker::SafetyProblem& p, const Samples& samples,
+                                       const checker::Limits& limits, const SamplingOptions& o) {
   const auto start = checker::Clock::now();
   Correspondence out;
   ProverResult& r = out.result;
@@ -272,7 +198,7 @@ Correspondence prove_by_correspondence(const checker::SafetyProblem& p, const ch
     mo.seed = o.seed;
     mo.limits = &limits;
     for (const auto& c : checker::mine_candidates(p, mo)) add(c);
-    for (const auto& c : correspondence_candidates(p, o)) add(c);
+    for (const auto& c : correspondence_candidates(p, samples)) add(c);
     std::vector<z3::expr> kept = checker::houdini(p, std::move(cands), limits, meter);
     checker::Watchdog watchdog(ctx, limits);
     z3::expr_vector all(ctx);

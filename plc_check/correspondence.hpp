@@ -20,20 +20,13 @@
 #include <z3++.h>
 
 #include "checker/prover.hpp"
+#include "plc_check/sampling.hpp"
 
 namespace cemv::plc_check {
 
-struct CorrespondenceOptions {
-  // Seeded runs of the product that filter the candidates: a fixed number,
-  // never a time, so the same problem gives the same candidates everywhere.
-  int runs = 24;
-  int cycles_per_run = 400;
-  unsigned seed = 1;
-};
-
 // Candidates over the state variables of `p` (a product of plc_check's, best
-// reduced: checker/reduce.hpp), each true in every sampled reachable state.
-std::vector<z3::expr> correspondence_candidates(const checker::SafetyProblem& p, const CorrespondenceOptions& o = {});
+// reduced: checker/reduce.hpp), each true in every sampled state.
+std::vector<z3::expr> correspondence_candidates(const checker::SafetyProblem& p, const Samples& samples);
 
 struct Correspondence {
   // Proved with the invariant and k (0 or 1), or Unknown: BoundReached when
@@ -47,8 +40,9 @@ struct Correspondence {
   std::vector<z3::expr> invariant;
 };
 
-// Houdini over the candidates, then `good` from what is kept.
-Correspondence prove_by_correspondence(const checker::SafetyProblem& p, const checker::Limits& limits,
-                                       const CorrespondenceOptions& o = {});
+// Houdini over the candidates (those above and the checker's mined ones, with
+// the runs `o` describes), then `good` from what is kept.
+Correspondence prove_by_correspondence(const checker::SafetyProblem& p, const Samples& samples,
+                                       const checker::Limits& limits, const SamplingOptions& o = {});
 
 }  // namespace cemv::plc_check
