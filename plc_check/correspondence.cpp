@@ -43,6 +43,7 @@ class Templates {
     for (const auto& g : guards_) {
       linear(g);
       constants(g);
+      equalities(g);
     }
     block_clauses();
     return std::move(out_);
@@ -53,6 +54,7 @@ class Templates {
     std::size_t var;  // SIZE_MAX: none
     int pol;
   };
+  bool program(std::size_t v) const { return ts_.statevars()[v].name.rfind(kProgramPrefix, 0) == 0; }
   bool holds(const Guard& g, const Sample& s) const { return g.var == SIZE_MAX || s[g.var].i == g.pol; }
   z3::expr var(std::size_t v) const { return ts_.statevars()[v].var; }
   z3::expr num(std::int64_t c) const { return ts_.ctx().int_val(c); }
@@ -86,6 +88,25 @@ class Templates {
           if (holds(g, s) && s[x].i != *a * s[y].i + *b) fits = false;
         if (fits) add(g, var(x) == num(*a) * var(y) + num(*b));
       }
+  }
+
+  // p = q or p = not q, p the program's flag, q the matrix's, under a
+  // guard: an edge memory that starts TRUE ("no edge in the first scan")
+  // is the matrix's previous value after the first scan.
+  void equalities(const Guard& g) {
+    if (g.var == SIZE_MAX) return;  // the checker's clauses over pairs state these
+    for (std::size_t p : bools_) {
+      if (!program(p) || p == g.var) continue;
+      for (std::size_t q : bools_) {
+        if (program(q) || q == g.var) continue;
+        for (int same = 1; same >= 0; --same) {
+          const bool always = std::all_of(samples_.begin(), samples_.end(), [&](const Sample& s) {
+            return !holds(g, s) || (s[p].i == s[q].i) == (same == 1);
+          });
+          if (always) add(g, same ? var(p) == var(q) : var(p) == !var(q));
+        }
+      }
+    }
   }
 
   // v = c wherever the guard holds (and not everywhere: the checker's
