@@ -156,7 +156,7 @@ Samples sample(const checker::SafetyProblem& p, const SamplingOptions& o) {
       int refused = 0;  // draws that broke the constraints or the assumption
       while (refused < 8 && static_cast<int>(run.size()) < o.cycles_per_run) {
         if (from_rest) {
-          for (std::size_t n = 1 + pick(2); n > 0 && !in.empty(); --n) {
+          for (std::size_t n = 1 + pick(3); n > 0 && !in.empty(); --n) {
             const std::size_t i = pick(in.size());
             if (pick(3) == 0) in[i] = rest[i];
             else draw(in, i);

@@ -21,7 +21,7 @@ struct SamplingOptions {
   int cycles_per_run = 400;
   unsigned seed = 1;
   // The plant at rest, by input name (the matrix's scenario defaults): every
-  // other run starts there and changes one or two inputs a stretch, as a
+  // other run starts there and changes one to three inputs a stretch, as a
   // test engineer does, which reaches the difference that needs everything
   // else quiet (one transmitter alone over its limit through a delay). An
   // input it does not name rests at 0; none given: every run is random.
@@ -40,7 +40,7 @@ struct Samples {
 
 // Inputs drawn from the numerals of the formulas (the limits, as ordered
 // integers once reduced) and one either side, changed at the start of a
-// stretch (each with probability 1/2, or one or two from rest), held for as
+// stretch (each with probability 1/2, or one to three from rest), held for as
 // many scans as a numeral or one or two more (a timer runs out, or stops one
 // scan short). A draw that breaks the constraints or the assumption is
 // drawn again.
