@@ -153,6 +153,21 @@ void intersection_objectives(ObjectiveBuilder& b, const Effect& e) {
         1, {ek(e, EF::Active)});
   b.add(id + ".at", "xoon", label(e) + ": " + xn + " with " + std::to_string(x_min) + " causes active trips", node, sif,
         (All{Builder::rose(act), Builder::equals(cnt, std::int64_t{x_min})} << others).expr(), 2, {ek(e, EF::Active)});
+  // Each cause counts (an MC/DC of the assignment): the effect trips with
+  // exactly X causes active, this one among them. `.at` alone lets the
+  // search pick any X causes, and a cell of a cause never among them can be
+  // removed unseen (the rest are X - 1 then, no trip).
+  if (x_min >= static_cast<int>(xoon.size())) return;  // X of X: `.at` has every cause active
+  for (const auto* x : xoon) {
+    const model::Cause& c = cause_of(m, x->cause);
+    b.add(id + ".c" + std::to_string(c.id) + ".counts", "xoon",
+          label(e) + ": " + xn + " trips with " + label(c) + " and " + std::to_string(x_min - 1) +
+              " other cause(s) active",
+          node, sif,
+          (All{Builder::rose(act), b.cause(c, CF::Active), Builder::equals(cnt, std::int64_t{x_min})} << others)
+              .expr(),
+          2, {ck(c, CF::Active), ek(e, EF::Active)});
+  }
 }
 
 void effect_objectives(ObjectiveBuilder& b, const Effect& e) {

@@ -137,6 +137,40 @@ TEST(Objectives, NotOverriddenNeedsAnEdgeTheRuntimeSees) {
   EXPECT_EQ(witness({tripped, reset}), std::optional<std::size_t>(1));
 }
 
+// pipeline-hipps: causes 2, 3, 4 trip effects 1 and 2 as a 2oo3 XooN
+// assignment. Each cause must count in a witness of its own: a run that
+// trips causes 3 and 4 shows `xoon.e1.at` but not that cause 2's cell is
+// there; the run that trips causes 2 and 3 does, and on the matrix without
+// cause 2's cell the effect stays inactive in that run.
+TEST(Objectives, EveryCauseOfAnXooNAssignmentCounts) {
+  const model::Matrix m = example("pipeline-hipps");
+  std::map<std::string, testgen::Objective> xoon;
+  for (const auto& o : testgen::derive_objectives(m))
+    if (o.kind == "xoon") xoon[o.id] = o;
+  for (const char* id : {"xoon.e1.at", "xoon.e1.c2.counts", "xoon.e1.c3.counts", "xoon.e1.c4.counts",
+                         "xoon.e2.c2.counts", "xoon.e2.c3.counts", "xoon.e2.c4.counts"})
+    ASSERT_TRUE(xoon.count(id)) << id;
+  const model::InputTable table(m);
+  auto tripped = [&](std::initializer_list<const char*> tags) {
+    model::CycleInput in = model::default_cycle_input(m);
+    for (const char* t : tags) in.tags[*table.find(t)] = {0.0f, false};  // the switches are DTT
+    return in;
+  };
+  auto witnessed = [&](const model::Matrix& mx, const testgen::Objective& o, const model::CycleInput& in) {
+    const auto run = checker::run_on_runtime(mx, {in, in});
+    properties::Trace trace;
+    for (std::size_t k = 0; k < run.inputs.size(); ++k) trace.push_back({run.inputs[k], run.observables[k]});
+    return properties::Evaluator(mx).evaluate(o.property, {}, trace).holds;
+  };
+  const auto c3c4 = tripped({"PSHH_302B", "PSHH_302C"}), c2c3 = tripped({"PSHH_302A", "PSHH_302B"});
+  EXPECT_TRUE(witnessed(m, xoon["xoon.e1.at"], c3c4));
+  EXPECT_FALSE(witnessed(m, xoon["xoon.e1.c2.counts"], c3c4));
+  EXPECT_TRUE(witnessed(m, xoon["xoon.e1.c2.counts"], c2c3));
+  model::Matrix removed = m;
+  std::erase_if(removed.intersections, [](const model::Intersection& x) { return x.cause == 2 && x.effect == 1; });
+  EXPECT_FALSE(witnessed(removed, xoon["xoon.e1.c2.counts"], c2c3));
+}
+
 TEST(Objectives, CatalogueNamesTheIssueKinds) {
   model::Matrix m = example("tank-overfill");
   std::set<std::string> kinds;
