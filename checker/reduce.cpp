@@ -156,6 +156,9 @@ void propagate_constants(Parts& w, const SafetyProblem& p) {
   substitute(w, from, to);
   std::vector<bool> constant(w.states.size());
   for (std::size_t i = 0; i < w.states.size(); ++i) constant[i] = variables_of(w.states[i].init).empty();
+  // Simplified once: each simplify() sets up Z3's rewriter anew.
+  std::vector<expr> inits;
+  for (std::size_t i = 0; i < w.states.size(); ++i) inits.push_back(constant[i] ? w.states[i].init.simplify() : w.states[i].init);
   for (bool changed = true; changed;) {
     changed = false;
     z3::expr_vector sf(c), st(c);
@@ -172,7 +175,7 @@ void propagate_constants(Parts& w, const SafetyProblem& p) {
     for (std::size_t k = 0; k < candidates.size(); ++k) {
       const std::size_t i = candidates[k];
       expr n = sf.empty() ? w.states[i].next : all.arg(static_cast<unsigned>(k));
-      if (!z3::eq(n, w.states[i].init.simplify())) {
+      if (!z3::eq(n, inits[i])) {
         constant[i] = false;
         changed = true;
       }
