@@ -113,41 +113,8 @@ int run_plc_check(const PlcArgs& a) {
   r.map = map;
   r.map_source = given ? input_name(a.map) : "found by name";
   r.tool_version = CEMV_VERSION;
-  // One output a task, decided in its own slot: the results do not depend
-  // on --jobs or on which worker ran what.
-  const auto start = checker::Clock::now();
-  auto seconds = [](double s) { return std::chrono::duration_cast<checker::Clock::duration>(std::chrono::duration<double>(s)); };
-  checker::CancelToken cancel(a.total_timeout_s > 0 ? start + seconds(a.total_timeout_s) : checker::Clock::time_point::max());
-  const auto qs = plc_check::questions(m, map);
-  std::vector<std::optional<plc_check::OutputResult>> slots(qs.size());
-  std::vector<std::optional<plc_encoder::Unsupported>> refused(qs.size());
-  checker::WorkQueue(a.jobs, cancel).run(qs.size(), [&](std::size_t i) {
-    plc_check::CheckOptions o;
-    o.relation = relation;
-    o.limits.cancel = &cancel;
-    if (a.timeout_s > 0) o.limits.deadline = checker::Clock::now() + seconds(a.timeout_s);
-    try {
-      slots[i] = plc_check::check_output(m, program, pou, map, qs[i], o);
-    } catch (const plc_encoder::Unsupported& e) {
-      refused[i] = e;
-    }
-  });
-  for (const auto& e : refused)
-    if (e) throw formats::LoadError({{"", e->what(), input_name(a.program), e->at.line, e->at.column}});
-  for (std::size_t i = 0; i < qs.size(); ++i) {
-    if (slots[i]) {
-      r.outputs.push_back(*slots[i]);
-    } else {
-      r.interrupted = true;
-      plc_check::OutputResult u;
-      u.question = qs[i];
-      u.reason = "total time limit";
-      r.outputs.push_back(u);
-    }
-    r.scenario_files.emplace_back();
-    r.diagram_files.emplace_back();
-    write_difference(a, m, r, i);
-  }
+  decide_outputs(m, program, pou, r, a.timeout_s, a.total_timeout_s, a.jobs);
+  for (std::size_t i = 0; i < r.outputs.size(); ++i) write_difference(a, m, r, i);
   std::string text;
   if (*format == reports::CheckFormat::Text) text = plc_check::to_text(r, m);
   else if (*format == reports::CheckFormat::Json) text = plc_check::to_json(r);

@@ -1,5 +1,11 @@
 #include "cli/plc_program.hpp"
 
+#include <chrono>
+
+#include "checker/work_queue.hpp"
+#include "plc_check/check.hpp"
+#include "plc_encoder/encode.hpp"
+
 #include "cli/matrix_input.hpp"
 #include "formats/diagnostics.hpp"
 #include "formats/matrix_json.hpp"
@@ -89,6 +95,44 @@ std::unique_ptr<PlcProgram> load_plc_program(const model::Matrix& m, const std::
                                   input_name(map));
   p->map_source = given ? input_name(map) : "found by name";
   return p;
+}
+
+void decide_outputs(const model::Matrix& m, const plc::Program& program, const plc::Pou& pou,
+                    plc_check::PlcCheckReport& r, double timeout_s, double total_timeout_s, int jobs) {
+  const auto start = checker::Clock::now();
+  auto seconds = [](double s) {
+    return std::chrono::duration_cast<checker::Clock::duration>(std::chrono::duration<double>(s));
+  };
+  checker::CancelToken cancel(total_timeout_s > 0 ? start + seconds(total_timeout_s) : checker::Clock::time_point::max());
+  const auto qs = plc_check::questions(m, r.map);
+  std::vector<std::optional<plc_check::OutputResult>> slots(qs.size());
+  std::vector<std::optional<plc_encoder::Unsupported>> refused(qs.size());
+  checker::WorkQueue(jobs, cancel).run(qs.size(), [&](std::size_t i) {
+    plc_check::CheckOptions o;
+    o.relation = r.relation;
+    o.limits.cancel = &cancel;
+    if (timeout_s > 0) o.limits.deadline = checker::Clock::now() + seconds(timeout_s);
+    try {
+      slots[i] = plc_check::check_output(m, program, pou, r.map, qs[i], o);
+    } catch (const plc_encoder::Unsupported& e) {
+      refused[i] = e;
+    }
+  });
+  for (const auto& e : refused)
+    if (e) throw formats::LoadError({{"", e->what(), r.program_file, e->at.line, e->at.column}});
+  for (std::size_t i = 0; i < qs.size(); ++i) {
+    if (slots[i]) {
+      r.outputs.push_back(*slots[i]);
+    } else {
+      r.interrupted = true;
+      plc_check::OutputResult u;
+      u.question = qs[i];
+      u.reason = "total time limit";
+      r.outputs.push_back(u);
+    }
+    r.scenario_files.emplace_back();
+    r.diagram_files.emplace_back();
+  }
 }
 
 PlcReplayTarget::PlcReplayTarget(const model::Matrix& m, const PlcProgram& p)

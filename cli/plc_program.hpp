@@ -11,6 +11,7 @@
 #include "plc/ast.hpp"
 #include "plc/interpreter.hpp"
 #include "plc_check/map.hpp"
+#include "plc_check/report.hpp"
 #include "testgen/testgen.hpp"
 
 namespace cemv::cli {
@@ -34,6 +35,14 @@ struct PlcProgram {
 // `pou` overrides the map's. Throws formats::LoadError (exit 2).
 std::unique_ptr<PlcProgram> load_plc_program(const model::Matrix& m, const std::string& program,
                                              const std::string& map, const std::string& pou = "");
+
+// Decides every output of `r.map` (questions in effect and tag order), one
+// output a task on --jobs workers, each result in its own slot so that none
+// depends on `jobs`; fills r.outputs (and empty file names). Throws
+// formats::LoadError for a program the encoding refuses (a timer not called
+// once per scan), checker::InternalError for a run that does not replay.
+void decide_outputs(const model::Matrix& m, const plc::Program& program, const plc::Pou& pou,
+                    plc_check::PlcCheckReport& r, double timeout_s, double total_timeout_s, int jobs);
 
 // The program's interpreter behind the map: matrix inputs and commands in,
 // output tags out. A cycle that issues a command the map declares unused (the
