@@ -2,12 +2,17 @@
 // "Relations", "Counterexamples").
 #include "plc_check/check.hpp"
 
+#include <map>
+#include <memory>
 #include <stdexcept>
 
+#include "checker/check/recheck.hpp"
 #include "checker/engines/bmc.hpp"
 #include "checker/engines/portfolio.hpp"
+#include "checker/reduce.hpp"
 #include "checker/replay.hpp"
 #include "model/vocabulary.hpp"
+#include "plc_check/correspondence.hpp"
 
 namespace cemv::plc_check {
 
@@ -147,25 +152,90 @@ std::vector<OutputQuestion> questions(const model::Matrix& m, const ResolvedMap&
   return out;
 }
 
+namespace {
+
+// The plant at rest for the product's inputs: each tag (named "input.TAG" on
+// both sides) at its scenario default, good quality, no command.
+SamplingOptions at_rest(const model::Matrix& m) {
+  auto rest = std::make_shared<std::map<std::string, checker::Value>>();
+  const model::InputTable table(m);
+  const model::CycleInput defaults = model::default_cycle_input(m);
+  for (std::size_t i = 0; i < table.tags().size(); ++i) {
+    checker::Value v;
+    v.is_float = table.tags()[i].kind == model::TagKind::Analog;
+    v.f = defaults.tags.at(i).value;
+    v.i = v.is_float ? 0 : defaults.tags.at(i).value != 0.0f;
+    (*rest)["input." + table.tags()[i].name] = v;
+  }
+  SamplingOptions o;
+  o.rest = [rest](const std::string& name) -> std::optional<checker::Value> {
+    const auto it = rest->find(name);
+    if (it == rest->end()) return std::nullopt;
+    return it->second;
+  };
+  return o;
+}
+
+// A shortest run to `depth` on the reduced product, whose every scan also
+// keeps `invariant` (true in every reachable state, so no run is lost).
+std::optional<checker::Trace> shortest_run(const checker::OwnedProblem& original, const checker::OwnedProblem& reduced,
+                                           const std::vector<z3::expr>& invariant, int depth, const CheckOptions& o) {
+  checker::SafetyProblem p = reduced.problem;
+  for (const auto& c : invariant) p.assumption = p.assumption && c;
+  const ProverResult r = checker::Bmc().prove(p, o.limits.with_work(o.work).with_depth(depth));
+  if (r.verdict != Verdict::Falsified) return std::nullopt;
+  checker::Trace t = checker::lift_trace(original.problem, r.cex);
+  checker::check::replay_counterexample(original.problem, t, &o.limits);
+  return t;
+}
+
+}  // namespace
+
 OutputResult check_output(const model::Matrix& m, const plc::Program& program, const plc::Pou& pou,
                           const ResolvedMap& map, const OutputQuestion& q, const CheckOptions& options) {
   OutputResult out;
   out.question = q;
   const checker::ProblemFactory make = product_factory(m, program, pou, map, q, options.relation);
   Replay replay(m, program, pou, map, q, options.relation);
-  // A shortest run first: a hand-coding error mostly shows within the
-  // longest delay of the matrix, which BMC reaches at once.
-  {
+  auto differs = [&](const checker::OwnedProblem& original, const checker::Trace& t, const std::string& method) {
+    out.verdict = OutputVerdict::Differs;
+    out.method = method;
+    out.k = static_cast<int>(t.length());
+    out.difference = replay.run(*std::static_pointer_cast<ProductProblem>(original.owner), t);
+    return out;
+  };
+  try {
     z3::context ctx;
-    const checker::OwnedProblem op = make(ctx);
-    const ProverResult r = checker::Bmc().prove(op.problem, options.limits.with_work(options.work).with_depth(options.bmc_depth));
-    if (r.verdict == Verdict::Falsified) {
-      out.verdict = OutputVerdict::Differs;
-      out.method = r.method_text();
-      out.k = static_cast<int>(r.cex.length());
-      out.difference = replay.run(*std::static_pointer_cast<ProductProblem>(op.owner), r.cex);
+    const checker::OwnedProblem original = make(ctx);
+    const checker::OwnedProblem reduced = checker::reduce(original);
+    // A short search first: most hand-coding errors show in the first scans.
+    if (auto t = shortest_run(original, reduced, {}, options.first_depth, options)) return differs(original, *t, "bmc");
+    // Seeded runs: a difference that needs a delay to run out, found without
+    // a solver; otherwise the states that filter the candidates.
+    const SamplingOptions so = at_rest(m);
+    const Samples s = sample(reduced.problem, so);
+    if (s.violation) {
+      checker::Trace t = checker::lift_trace(original.problem, *s.violation);
+      checker::check::replay_counterexample(original.problem, t, &options.limits);
+      return differs(original, t, "simulation");
+    }
+    // The proof from the correspondence of the two states (correspondence.hpp),
+    // re-checked in a fresh context on the problem built again.
+    const Correspondence c = prove_by_correspondence(reduced.problem, s, options.limits.with_work(options.work), so);
+    if (c.result.verdict == Verdict::Proved) {
+      checker::check::recheck_proof(checker::reducing(make), c.result, &options.limits);
+      out.verdict = OutputVerdict::Related;
+      out.method = "correspondence invariants";
+      out.k = c.result.k;
       return out;
     }
+    // The shortest run within the longest delays, each scan keeping what
+    // Houdini proved of the two states.
+    if (auto t = shortest_run(original, reduced, c.invariant, options.bmc_depth, options))
+      return differs(original, *t, "bmc");
+  } catch (const checker::Interrupted&) {
+    out.reason = "time limit";
+    return out;
   }
   checker::PortfolioOptions po;
   po.engine_work = options.work;
@@ -178,10 +248,7 @@ OutputResult check_output(const model::Matrix& m, const plc::Program& program, c
     out.reason = r.reason_text();
   } else {
     z3::context ctx;
-    const checker::OwnedProblem op = make(ctx);
-    out.verdict = OutputVerdict::Differs;
-    out.k = static_cast<int>(r.cex.length());
-    out.difference = replay.run(*std::static_pointer_cast<ProductProblem>(op.owner), r.cex);
+    return differs(make(ctx), r.cex, r.method_text());
   }
   return out;
 }

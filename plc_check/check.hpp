@@ -48,7 +48,8 @@ struct OutputResult {
 struct CheckOptions {
   Relation relation = Relation::Equal;
   checker::Work work = 20 * checker::kMega;  // per output and engine
-  int bmc_depth = 40;                        // the shortest-run search before the engines
+  int first_depth = 3;                       // the short search before the proof
+  int bmc_depth = 40;                        // the shortest-run search after it, before the engines
   checker::Limits limits;                    // the user's wall clock, the cancel token
 };
 

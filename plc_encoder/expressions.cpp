@@ -1,6 +1,9 @@
 // Expressions of one scan as Z3 terms (docs/plc.md "The program as a
 // transition system": types, operators, standard functions).
+#include <algorithm>
 #include <cctype>
+#include <optional>
+#include <utility>
 
 #include "plc_encoder/symbolic.hpp"
 
@@ -33,6 +36,33 @@ z3::expr equal(z3::context& c, const z3::expr& a, const z3::expr& b) {
   return is_real(a) ? fp(c, Z3_mk_fpa_eq(c, a, b)) : a == b;  // IEEE: NaN equals nothing
 }
 
+// Bounds of an integer term built from numerals by +, -, negation and ITE
+// (the counts of C&E code: `N := 0; IF a THEN N := N + 1; END_IF; ...`);
+// nullopt for anything else (a variable of the last scan, a product).
+std::optional<std::pair<std::int64_t, std::int64_t>> bounds(const z3::expr& e, int depth = 0) {
+  std::int64_t v = 0;
+  if (e.is_numeral() && e.is_numeral_i64(v)) return std::make_pair(v, v);
+  if (!e.is_app() || depth > 64) return std::nullopt;
+  const Z3_decl_kind k = e.decl().decl_kind();
+  if (k == Z3_OP_ITE) {
+    const auto a = bounds(e.arg(1), depth + 1), b = bounds(e.arg(2), depth + 1);
+    if (!a || !b) return std::nullopt;
+    return std::make_pair(std::min(a->first, b->first), std::max(a->second, b->second));
+  }
+  if (k == Z3_OP_UMINUS) {
+    const auto a = bounds(e.arg(0), depth + 1);
+    if (!a) return std::nullopt;
+    return std::make_pair(-a->second, -a->first);
+  }
+  if ((k == Z3_OP_ADD || k == Z3_OP_SUB) && e.num_args() == 2) {
+    const auto a = bounds(e.arg(0), depth + 1), b = bounds(e.arg(1), depth + 1);
+    if (!a || !b) return std::nullopt;
+    if (k == Z3_OP_ADD) return std::make_pair(a->first + b->first, a->second + b->second);
+    return std::make_pair(a->first - b->second, a->second - b->first);
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 Scan::Scan(z3::context& ctx, const plc::Program& program, std::uint32_t scan_ms)
@@ -61,6 +91,8 @@ z3::expr Scan::wrap(plc::Type t, const z3::expr& x) {
     }
   }
   const std::int64_t half = t == plc::Type::Int ? 32768 : 2147483648LL;
+  // In range whatever the run: no correction, so no case split for the solver.
+  if (const auto b = bounds(x); b && b->first >= -half && b->second < half) return x;
   const z3::expr h = ctx_.int_val(half), m = ctx_.int_val(2 * half);
   // A sum, difference, negation or quotient of values in range is at most one
   // range away: one correction, no `mod` (which the checker's concrete

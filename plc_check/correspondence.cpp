@@ -1,0 +1,250 @@
+// Correspondence invariants of a product of matrix and program, and the
+// proof of an output's relation from them (correspondence.hpp).
+#include "plc_check/correspondence.hpp"
+
+#include <algorithm>
+#include <map>
+#include <optional>
+#include <set>
+#include <unordered_set>
+
+#include "checker/engines/invariants.hpp"
+#include "checker/engines/solving.hpp"
+#include "encoder/unroller.hpp"
+#include "plc_check/product.hpp"
+
+namespace cemv::plc_check {
+
+namespace {
+
+using Sample = std::vector<encoder::Evaluator::Value>;
+using checker::ProverResult;
+using checker::UnknownReason;
+using checker::Verdict;
+
+// The templates of the header comment, tested on the samples.
+class Templates {
+ public:
+  Templates(const encoder::TransitionSystem& ts, const std::vector<Sample>& samples) : ts_(ts), samples_(samples) {
+    for (std::size_t i = 0; i < ts.statevars().size(); ++i) {
+      const auto& v = ts.statevars()[i];
+      const bool program = v.name.rfind(kProgramPrefix, 0) == 0;
+      if (v.var.is_int()) (program ? program_ints_ : matrix_ints_).push_back(i);
+      else if (v.var.is_bool()) bools_.push_back(i);
+    }
+    guards_.push_back({SIZE_MAX, 1});
+    for (std::size_t b : bools_)
+      for (int pol = 1; pol >= 0; --pol)
+        if (std::any_of(samples_.begin(), samples_.end(), [&](const Sample& s) { return s[b].i == pol; }))
+          guards_.push_back({b, pol});
+  }
+
+  std::vector<z3::expr> make() {
+    for (const auto& g : guards_) {
+      linear(g);
+      constants(g);
+      equalities(g);
+    }
+    block_clauses();
+    return std::move(out_);
+  }
+
+ private:
+  struct Guard {
+    std::size_t var;  // SIZE_MAX: none
+    int pol;
+  };
+  bool program(std::size_t v) const { return ts_.statevars()[v].name.rfind(kProgramPrefix, 0) == 0; }
+  bool holds(const Guard& g, const Sample& s) const { return g.var == SIZE_MAX || s[g.var].i == g.pol; }
+  z3::expr var(std::size_t v) const { return ts_.statevars()[v].var; }
+  z3::expr num(std::int64_t c) const { return ts_.ctx().int_val(c); }
+  void add(const Guard& g, const z3::expr& e) {
+    if (g.var == SIZE_MAX) out_.push_back(e);
+    else out_.push_back(z3::implies(g.pol ? var(g.var) : !var(g.var), e));
+  }
+
+  // x = a * y + b, x the program's, y the matrix's: a timer's elapsed time
+  // and the matrix's delay counter (a = the scan time), a count and a count.
+  void linear(const Guard& g) {
+    for (std::size_t x : program_ints_)
+      for (std::size_t y : matrix_ints_) {
+        const Sample* first = nullptr;
+        std::optional<std::int64_t> a, b;
+        bool fits = true;
+        for (const auto& s : samples_) {
+          if (!holds(g, s)) continue;
+          if (!first) {
+            first = &s;
+          } else if (!a && s[y].i != (*first)[y].i) {
+            const std::int64_t dx = s[x].i - (*first)[x].i, dy = s[y].i - (*first)[y].i;
+            if (dx == 0 || dx % dy != 0) fits = false;
+            a = dx / (dy == 0 ? 1 : dy);
+            b = (*first)[x].i - *a * (*first)[y].i;
+          }
+          if (!fits) break;
+        }
+        if (!fits || !a) continue;
+        for (const auto& s : samples_)
+          if (holds(g, s) && s[x].i != *a * s[y].i + *b) fits = false;
+        if (fits) add(g, var(x) == num(*a) * var(y) + num(*b));
+      }
+  }
+
+  // p = q or p = not q, p the program's flag, q the matrix's, under a
+  // guard: an edge memory that starts TRUE ("no edge in the first scan")
+  // is the matrix's previous value after the first scan.
+  void equalities(const Guard& g) {
+    if (g.var == SIZE_MAX) return;  // the checker's clauses over pairs state these
+    for (std::size_t p : bools_) {
+      if (!program(p) || p == g.var) continue;
+      for (std::size_t q : bools_) {
+        if (program(q) || q == g.var) continue;
+        for (int same = 1; same >= 0; --same) {
+          const bool always = std::all_of(samples_.begin(), samples_.end(), [&](const Sample& s) {
+            return !holds(g, s) || (s[p].i == s[q].i) == (same == 1);
+          });
+          if (always) add(g, same ? var(p) == var(q) : var(p) == !var(q));
+        }
+      }
+    }
+  }
+
+  // v = c wherever the guard holds (and not everywhere: the checker's
+  // miner states those).
+  void constants(const Guard& g) {
+    if (g.var == SIZE_MAX) return;
+    for (const auto* side : {&program_ints_, &matrix_ints_})
+      for (std::size_t v : *side) {
+        std::optional<std::int64_t> c;
+        bool constant = true, global = true;
+        for (const auto& s : samples_) {
+          if (s[v].i != samples_.front()[v].i) global = false;
+          if (!holds(g, s)) continue;
+          if (c && *c != s[v].i) constant = false;
+          c = s[v].i;
+        }
+        if (constant && c && !global) add(g, var(v) == num(*c));
+      }
+  }
+
+  // Clauses of three literals over the flags of one block instance of the
+  // program ("plc.DLY.#RUN", "plc.DLY.#DONE", "plc.DLY.#PREV", "plc.DLY.Q"):
+  // a timer's reachable states are a few of the eight its flags allow.
+  void block_clauses() {
+    std::map<std::string, std::vector<std::size_t>> blocks;
+    for (std::size_t b : bools_) {
+      const std::string& n = ts_.statevars()[b].name;
+      const auto dot = n.rfind('.');
+      if (n.rfind(kProgramPrefix, 0) == 0 && dot != std::string::npos && dot > std::string(kProgramPrefix).size())
+        blocks[n.substr(0, dot)].push_back(b);
+    }
+    for (const auto& [name, flags] : blocks) {
+      if (flags.size() < 3 || flags.size() > 8) continue;
+      for (std::size_t i = 0; i < flags.size(); ++i)
+        for (std::size_t j = i + 1; j < flags.size(); ++j)
+          for (std::size_t l = j + 1; l < flags.size(); ++l)
+            for (int pols = 0; pols < 8; ++pols) {
+              const std::size_t v[3] = {flags[i], flags[j], flags[l]};
+              const int pol[3] = {pols & 1, (pols >> 1) & 1, (pols >> 2) & 1};
+              const bool always = std::all_of(samples_.begin(), samples_.end(), [&](const Sample& s) {
+                return s[v[0]].i == pol[0] || s[v[1]].i == pol[1] || s[v[2]].i == pol[2];
+              });
+              if (!always) continue;
+              z3::expr_vector lits(ts_.ctx());
+              for (int t = 0; t < 3; ++t) lits.push_back(pol[t] ? var(v[t]) : !var(v[t]));
+              out_.push_back(z3::mk_or(lits));
+            }
+    }
+  }
+
+  const encoder::TransitionSystem& ts_;
+  const std::vector<Sample>& samples_;
+  std::vector<std::size_t> program_ints_, matrix_ints_, bools_;
+  std::vector<Guard> guards_;
+  std::vector<z3::expr> out_;
+};
+
+ProverResult unknown(ProverResult r, UnknownReason why) {
+  r.verdict = Verdict::Unknown;
+  r.reason = why;
+  r.invariant = {};
+  return r;
+}
+
+// `good` from the invariant S: in the same scan (k = 0), or in the first scan
+// and after any scan that kept it (k = 1). nullopt when neither.
+std::optional<int> good_from(const checker::SafetyProblem& p, const z3::expr& S, const checker::Limits& limits,
+                             checker::WorkMeter& meter) {
+  const auto& ts = *p.ts;
+  encoder::Unroller u(ts);
+  const z3::expr facts = ts.constraint_formula() && p.assumption;
+  auto unsat = [&](const z3::expr& f) {
+    z3::solver s(ts.ctx());
+    s.add(f);
+    const z3::check_result r = checker::check_within(s, meter);
+    if (r == z3::unknown) throw checker::Stopped{checker::unknown_reason(s.reason_unknown(), limits, meter)};
+    return r == z3::unsat;
+  };
+  if (unsat(u.at(S && facts && !p.good, 0))) return 0;
+  if (!unsat(u.at(ts.init_formula() && facts && !p.good, 0))) return std::nullopt;
+  if (unsat(u.at(S && facts && p.good && ts.trans_formula(), 0) && u.at(S && facts && !p.good, 1))) return 1;
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::vector<z3::expr> correspondence_candidates(const checker::SafetyProblem& p, const Samples& samples) {
+  if (samples.states.empty()) return {};
+  return Templates(*p.ts, samples.states).make();
+}
+
+Correspondence prove_by_correspondence(const checker::SafetyProblem& p, const Samples& samples,
+                                       const checker::Limits& limits, const SamplingOptions& o) {
+  const auto start = checker::Clock::now();
+  Correspondence out;
+  ProverResult& r = out.result;
+  r.method = checker::Method::InvariantsInduction;
+  z3::context& ctx = p.ts->ctx();
+  checker::WorkMeter meter(ctx, limits.work);
+  try {
+    std::vector<z3::expr> cands;
+    std::unordered_set<unsigned> ids;
+    auto add = [&](const z3::expr& e) {
+      if (ids.insert(e.id()).second) cands.push_back(e);
+    };
+    for (const auto& l : p.ts->lemmas()) add(l.term);
+    checker::MiningOptions mo;
+    mo.runs = o.runs;
+    mo.cycles_per_run = o.cycles_per_run;
+    mo.seed = o.seed;
+    mo.limits = &limits;
+    for (const auto& c : checker::mine_candidates(p, mo)) add(c);
+    for (const auto& c : correspondence_candidates(p, samples)) add(c);
+    std::vector<z3::expr> kept = checker::houdini(p, std::move(cands), limits, meter);
+    checker::Watchdog watchdog(ctx, limits);
+    z3::expr_vector all(ctx);
+    for (const auto& c : kept) all.push_back(c);
+    const std::optional<int> k = good_from(p, z3::mk_and(all), limits, meter);
+    out.invariant = std::move(kept);
+    r.work = meter.spent();
+    r.seconds = checker::seconds_since(start);
+    if (!k) {
+      r = unknown(r, UnknownReason::BoundReached);
+      return out;
+    }
+    r.verdict = Verdict::Proved;
+    r.k = *k;
+    for (const auto& c : out.invariant) r.invariant.clauses.push_back(checker::to_smtlib(c));
+  } catch (const checker::Stopped& e) {
+    r.work = meter.spent();
+    r.seconds = checker::seconds_since(start);
+    r = unknown(r, e.reason);
+  } catch (const z3::exception& e) {
+    r.work = meter.spent();
+    r.seconds = checker::seconds_since(start);
+    r = unknown(r, checker::unknown_reason(e.msg(), limits, meter, &r.detail));
+  }
+  return out;
+}
+
+}  // namespace cemv::plc_check

@@ -1,0 +1,48 @@
+// The correspondence between the program's state and the matrix's (docs/plc.md
+// "How an equality is proved"): in a product that computes the same outputs,
+// each state of the one is a function of the other's, and that relation is
+// what makes the output's equality inductive. A TON's elapsed time (ms) is the
+// matrix's delay counter (cycles) times the scan time while it runs, an SR's
+// Q1 is the effect's latch, an R_TRIG's memory the reset's previous value.
+//
+// Candidates are stated from templates over the product's state variables
+// (guarded linear relations between a program integer and a matrix integer,
+// guarded constants, clauses over one block instance's flags) together with
+// the checker's own mined candidates, kept only where seeded runs of the
+// product never break them, and proved jointly inductive by Houdini
+// (checker/engines/invariants.hpp); the output's relation must then follow
+// from them in one scan (k = 0) or after one (k = 1). The caller re-checks a
+// proof in a fresh context like any engine's.
+#pragma once
+
+#include <vector>
+
+#include <z3++.h>
+
+#include "checker/prover.hpp"
+#include "plc_check/sampling.hpp"
+
+namespace cemv::plc_check {
+
+// Candidates over the state variables of `p` (a product of plc_check's, best
+// reduced: checker/reduce.hpp), each true in every sampled state.
+std::vector<z3::expr> correspondence_candidates(const checker::SafetyProblem& p, const Samples& samples);
+
+struct Correspondence {
+  // Proved with the invariant and k (0 or 1), or Unknown: BoundReached when
+  // `good` does not follow from the invariant, the limits' reason otherwise.
+  // Method InvariantsInduction.
+  checker::ProverResult result;
+  // What Houdini kept, in p's context: true in every reachable state of the
+  // product, also when `good` does not follow from it (a bounded search may
+  // then assume it in every scan: it removes no run). Empty when the limits
+  // ended Houdini.
+  std::vector<z3::expr> invariant;
+};
+
+// Houdini over the candidates (those above and the checker's mined ones, with
+// the runs `o` describes), then `good` from what is kept.
+Correspondence prove_by_correspondence(const checker::SafetyProblem& p, const Samples& samples,
+                                       const checker::Limits& limits, const SamplingOptions& o = {});
+
+}  // namespace cemv::plc_check

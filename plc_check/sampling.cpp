@@ -1,0 +1,193 @@
+// Seeded runs of a product (sampling.hpp).
+#include "plc_check/sampling.hpp"
+
+#include <bit>
+#include <random>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <unordered_set>
+
+#include "checker/reduce.hpp"
+#include "encoder/encode.hpp"
+#include "plc_check/product.hpp"
+
+namespace cemv::plc_check {
+
+namespace {
+
+using Inputs = std::vector<encoder::Evaluator::Value>;
+
+void int_numerals(const z3::expr& e, std::set<std::int64_t>& out, std::unordered_set<unsigned>& seen) {
+  if (!seen.insert(e.id()).second || !e.is_app()) return;
+  std::int64_t v = 0;
+  if (e.num_args() == 0 && e.is_int() && e.is_numeral() && e.is_numeral_i64(v)) out.insert(v);
+  for (unsigned i = 0; i < e.num_args(); ++i) int_numerals(e.arg(i), out, seen);
+}
+
+const std::string kAllowed = std::string(kProgramPrefix) + "sample.allowed";
+const std::string kGood = std::string(kProgramPrefix) + "sample.good";
+
+class Runner {
+ public:
+  explicit Runner(const checker::SafetyProblem& p) : p_(p), enc_(p.ts->ctx()), ev_(init(p)) {}
+
+  encoder::Evaluator& ev() { return ev_; }
+  // One scan: false when it breaks the constraints or the assumption.
+  bool step(const Inputs& in) {
+    ev_.step_raw(in);
+    return ev_.value(kAllowed) != 0;
+  }
+  bool good() const { return ev_.value(kGood) != 0; }
+
+  // The scan (0-based) in which `run` first breaks `good`; nullopt when it
+  // does not, or breaks the assumption before.
+  std::optional<std::size_t> first_violation(const std::vector<Inputs>& run) {
+    ev_.reset();
+    for (std::size_t c = 0; c < run.size(); ++c) {
+      if (!step(run[c])) return std::nullopt;
+      if (!good()) return c;
+    }
+    return std::nullopt;
+  }
+
+  // Deletes stretches of scans, halves first, while the run still breaks
+  // `good`; cut after the scan that does.
+  std::vector<Inputs> shorten(std::vector<Inputs> run) {
+    run.resize(*first_violation(run) + 1);
+    for (std::size_t chunk = run.size() / 2; chunk >= 1; chunk /= 2)
+      for (std::size_t start = 0; start + chunk < run.size();) {
+        std::vector<Inputs> shorter(run.begin(), run.begin() + static_cast<std::ptrdiff_t>(start));
+        shorter.insert(shorter.end(), run.begin() + static_cast<std::ptrdiff_t>(start + chunk), run.end());
+        if (const auto v = first_violation(shorter)) {
+          shorter.resize(*v + 1);
+          run = std::move(shorter);
+        } else {
+          start += chunk;
+        }
+      }
+    return run;
+  }
+
+  checker::Trace trace(const std::vector<Inputs>& run) {
+    const auto& ts = *p_.ts;
+    checker::Trace t;
+    for (const auto& v : ts.inputvars()) t.input_names.push_back(v.name);
+    for (const auto& v : ts.statevars()) t.state_names.push_back(v.name);
+    auto value = [](const z3::expr& var, const encoder::Evaluator::Value& x) {
+      checker::Value v;
+      v.is_float = var.is_fpa();
+      v.i = x.i;
+      v.f = x.f;
+      return v;
+    };
+    ev_.reset();
+    for (const auto& in : run) {
+      checker::Trace::Cycle c;
+      for (std::size_t i = 0; i < in.size(); ++i) c.inputs.push_back(value(ts.inputvars()[i].var, in[i]));
+      for (std::size_t i = 0; i < ev_.state().size(); ++i) c.state.push_back(value(ts.statevars()[i].var, ev_.state()[i]));
+      t.cycles.push_back(std::move(c));
+      step(in);
+    }
+    return t;
+  }
+
+ private:
+  const encoder::Encoding& init(const checker::SafetyProblem& p) {
+    enc_.ts = *p.ts;
+    enc_.ts.name_term(kAllowed, p.ts->constraint_formula() && p.assumption);
+    enc_.ts.name_term(kGood, p.good);
+    return enc_;
+  }
+
+  const checker::SafetyProblem& p_;
+  encoder::Encoding enc_;
+  encoder::Evaluator ev_;
+};
+
+std::vector<std::vector<encoder::Evaluator::Value>> distinct(std::vector<std::vector<encoder::Evaluator::Value>> all) {
+  std::set<std::vector<std::int64_t>> seen;
+  std::vector<std::vector<encoder::Evaluator::Value>> out;
+  for (auto& s : all) {
+    std::vector<std::int64_t> key;
+    for (const auto& v : s) key.insert(key.end(), {v.i, static_cast<std::int64_t>(std::bit_cast<std::uint32_t>(v.f))});
+    if (seen.insert(std::move(key)).second) out.push_back(std::move(s));
+  }
+  return out;
+}
+
+}  // namespace
+
+Samples sample(const checker::SafetyProblem& p, const SamplingOptions& o) {
+  Samples out;
+  try {
+    const auto& ts = *p.ts;
+    Runner runner(p);
+    std::set<std::int64_t> k{0, 1};
+    std::unordered_set<unsigned> seen;
+    for (const auto& s : ts.statevars()) int_numerals(s.next, k, seen);
+    int_numerals(p.good, k, seen);
+    int_numerals(p.assumption, k, seen);
+    std::vector<std::int64_t> values;
+    for (std::int64_t c : k) values.insert(values.end(), {c - 1, c, c + 1});
+    std::vector<int> holds{1, 2, 3};
+    for (std::int64_t c : k)
+      if (c >= 2 && c <= 2000) holds.insert(holds.end(), {static_cast<int>(c), static_cast<int>(c) + 1, static_cast<int>(c) + 2});
+    std::mt19937 rng(o.seed);
+    auto pick = [&](std::size_t n) { return std::uniform_int_distribution<std::size_t>(0, n - 1)(rng); };
+    const auto& ins = ts.inputvars();
+    std::vector<std::vector<encoder::Evaluator::Value>> states{runner.ev().state()};
+    Inputs rest(ins.size());
+    for (std::size_t i = 0; i < ins.size() && o.rest; ++i)
+      if (const auto v = o.rest(ins[i].name)) {
+        if (ins[i].var.is_int() && v->is_float) rest[i].i = checker::float_key(v->f);  // reduced: ordered integers
+        else rest[i] = {v->i, v->f};
+      }
+    auto draw = [&](Inputs& in, std::size_t i) {
+      if (ins[i].var.is_bool()) in[i].i = static_cast<std::int64_t>(pick(2));
+      else if (ins[i].var.is_int()) in[i].i = values[pick(values.size())];
+      else in[i].f = static_cast<float>(values[pick(values.size())]);
+    };
+    for (int r = 0; r < o.runs; ++r) {
+      runner.ev().reset();
+      std::vector<Inputs> run;
+      const bool from_rest = o.rest && r % 2 == 1;
+      Inputs in = rest;
+      int refused = 0;  // draws that broke the constraints or the assumption
+      while (refused < 8 && static_cast<int>(run.size()) < o.cycles_per_run) {
+        if (from_rest) {
+          for (std::size_t n = 1 + pick(2); n > 0 && !in.empty(); --n) {
+            const std::size_t i = pick(in.size());
+            if (pick(3) == 0) in[i] = rest[i];
+            else draw(in, i);
+          }
+        } else {
+          for (std::size_t i = 0; i < in.size(); ++i)
+            if (run.empty() || pick(2) == 0) draw(in, i);
+        }
+        const int hold = pick(2) == 0 ? holds[pick(holds.size())] : 1 + static_cast<int>(pick(4));
+        for (int h = 0; h < hold && static_cast<int>(run.size()) < o.cycles_per_run; ++h) {
+          if (!runner.step(in)) {
+            // Back to the state before this scan, and another draw.
+            ++refused;
+            runner.ev().reset();
+            for (const auto& earlier : run) runner.step(earlier);
+            break;
+          }
+          run.push_back(in);
+          if (!runner.good()) {
+            out.violation = runner.trace(runner.shorten(std::move(run)));
+            return out;
+          }
+          states.push_back(runner.ev().state());
+        }
+      }
+    }
+    out.states = distinct(std::move(states));
+  } catch (const std::logic_error&) {
+    out = {};  // an operator the evaluator does not take: nothing sampled
+  }
+  return out;
+}
+
+}  // namespace cemv::plc_check

@@ -1,0 +1,49 @@
+// Seeded runs of a product of plc_check's (correspondence.hpp filters its
+// candidates with the states they reach), and the first run on which the
+// output's relation breaks, when one does: a difference found without a
+// solver, made as short as deleting scans keeps it. Concrete, on the
+// encoder's evaluator of the product's formulas; a fixed number of runs from a
+// fixed seed, so the same problem gives the same states and the same run.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "checker/prover.hpp"
+#include "encoder/evaluate.hpp"
+
+namespace cemv::plc_check {
+
+struct SamplingOptions {
+  int runs = 64;
+  int cycles_per_run = 400;
+  unsigned seed = 1;
+  // The plant at rest, by input name (the matrix's scenario defaults): every
+  // other run starts there and changes one or two inputs a stretch, as a
+  // test engineer does, which reaches the difference that needs everything
+  // else quiet (one transmitter alone over its limit through a delay). An
+  // input it does not name rests at 0; none given: every run is random.
+  std::function<std::optional<checker::Value>(const std::string&)> rest;
+};
+
+struct Samples {
+  // Distinct states reached (values by TransitionSystem::statevars index),
+  // the initial state first; empty when the evaluator does not take an
+  // operator of the formulas.
+  std::vector<std::vector<encoder::Evaluator::Value>> states;
+  // A run from the initial state whose every scan keeps the constraints and
+  // the assumption and whose last scan breaks `good`; sampling stops there.
+  std::optional<checker::Trace> violation;
+};
+
+// Inputs drawn from the numerals of the formulas (the limits, as ordered
+// integers once reduced) and one either side, changed at the start of a
+// stretch (each with probability 1/2, or one or two from rest), held for as
+// many scans as a numeral or one or two more (a timer runs out, or stops one
+// scan short). A draw that breaks the constraints or the assumption is
+// drawn again.
+Samples sample(const checker::SafetyProblem& p, const SamplingOptions& o = {});
+
+}  // namespace cemv::plc_check
