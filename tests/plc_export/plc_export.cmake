@@ -5,7 +5,7 @@ if(TARGET cemv_plc_export AND TARGET cemv_plc_check)
   target_link_libraries(test_plc_export PRIVATE cemv_plc_export cemv_plc_check cemv_runtime cemv_testsupport
                         GTest::gtest_main)
   target_compile_definitions(test_plc_export PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
-  gtest_discover_tests(test_plc_export DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 900)
+  gtest_discover_tests(test_plc_export DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 1800)
 endif()
 # Translation validation (issue 39 "Done when"): every example's generated
 # program proved equal to its matrix by plc-check, exit 0 required.
