@@ -18,6 +18,11 @@
 #include "checker/check.hpp"
 #include "checker/prover.hpp"
 #include "cli/commands.hpp"
+#ifdef CEMV_WITH_PLC
+#include "cli/plc_program.hpp"
+#include "model/text.hpp"
+#include "plc_check/check.hpp"
+#endif
 #include "cli/matrix_input.hpp"
 #include "cli/evidence_inputs.hpp"
 #include "cli/explain_trace.hpp"
@@ -55,6 +60,7 @@ struct EvidenceArgs {
   std::string support = "core";  // --support full|core|off, as `cemv check`
   int jobs = 1;
   bool quiet = false;
+  std::string plc, map, pou;  // --plc: the program proved against the matrix (docs/plc.md)
 };
 
 struct BadArguments : std::runtime_error {
@@ -109,6 +115,75 @@ std::string report_date() {
   auto now = std::chrono::system_clock::now().time_since_epoch();
   return reports::utc_date(std::chrono::duration_cast<std::chrono::seconds>(now).count());
 }
+
+#ifdef CEMV_WITH_PLC
+std::string value_text(const plc::Value& v) {
+  if (v.type == plc::Type::Bool) return v.integer ? "TRUE" : "FALSE";
+  return plc::literal_text(v);
+}
+
+// The chapter's data from the program, its completed map and plc_check's results.
+reports::PlcFigures plc_figures(const PlcProgram& p, const plc_check::PlcCheckReport& r) {
+  reports::PlcFigures f;
+  f.file = p.file;
+  f.sha256 = p.sha256;
+  f.pou = p.pou;
+  f.relation = r.relation == plc_check::Relation::Equal ? "equal" : "safe-side";
+  f.map_source = p.map_source;
+  f.scan_ms = p.map.scan_ms;
+  f.assumptions = p.map.assumptions;
+  const auto& map = p.map.map;
+  for (const auto& b : map.inputs)
+    f.map.push_back({"input tag " + b.tag, b.variable,
+                     !b.variable.empty()
+                         ? (!b.bad_quality.empty() ? "bad quality: " + b.bad_quality
+                            : b.good_quality       ? "good quality declared"
+                                                   : "")
+                         : "held at " + model::float_text(static_cast<float>(b.value.value_or(0.0)))});
+  for (const auto& b : map.outputs)
+    f.map.push_back({"output tag " + b.tag + (b.effect ? " of effect " + std::to_string(b.effect) : ""), b.variable, ""});
+  for (const auto& b : map.commands) {
+    std::string what = std::string("command ") + model::to_string(b.op);
+    if (b.cause) what += " cause " + std::to_string(b.cause);
+    if (b.effect) what += " effect " + std::to_string(b.effect);
+    if (b.tag) what += " tag " + std::to_string(b.tag);
+    if (!b.tag_name.empty()) what += " " + b.tag_name;
+    if (b.on) what += *b.on ? " on" : " off";
+    f.map.push_back({what, b.variable, b.variable.empty() ? "declared unused: never issued" : "TRUE in the scan issued"});
+  }
+  for (const auto& h : map.program_inputs)
+    f.map.push_back({"program input", h.variable, "held at " + model::float_text(static_cast<float>(h.value))});
+  for (const auto& o : r.outputs) {
+    reports::PlcFigures::Output x;
+    x.tag = o.question.tag;
+    x.effect = o.question.effect;
+    x.variable = o.question.variable;
+    x.verdict = plc_check::to_string(o.verdict);
+    x.method = o.method;
+    x.reason = o.reason;
+    x.k = o.k;
+    if (o.difference) {
+      const auto& d = *o.difference;
+      x.scan = d.scan + 1;
+      x.matrix_value = d.matrix_values.back();
+      x.program_value = d.program_values.back();
+      if (d.assigned_at)
+        x.assigned_at = p.file + ":" + std::to_string(d.assigned_at->line) + ":" + std::to_string(d.assigned_at->column);
+      for (std::size_t k = 0; k < d.program_values.size(); ++k) {
+        std::string changed;
+        for (const auto& [name, v] : d.program_inputs[k]) {
+          const bool same = k > 0 && d.program_inputs[k - 1].count(name) && d.program_inputs[k - 1].at(name) == v;
+          if (!same) changed += (changed.empty() ? "" : ", ") + name + " = " + value_text(v);
+        }
+        x.scans.push_back({static_cast<int>(k + 1), d.matrix_values[k], d.program_values[k], changed});
+      }
+    }
+    f.outputs.push_back(std::move(x));
+  }
+  f.interrupted = r.interrupted;
+  return f;
+}
+#endif
 
 int run_evidence(const EvidenceArgs& a) {
   if (a.jobs < 1) throw BadArguments("--jobs must be at least 1");
@@ -172,6 +247,13 @@ int run_evidence(const EvidenceArgs& a) {
   }
   if (!a.mutation_file.empty()) in.mutation = read_mutation(a.mutation_file, m);
   if (!a.defeats_file.empty() && valid) in.defeats = read_defeats(a.defeats_file, m);
+  if (a.plc.empty() && (!a.map.empty() || !a.pou.empty())) throw BadArguments("--map and --pou apply to --plc PROGRAM");
+#ifdef CEMV_WITH_PLC
+  std::unique_ptr<PlcProgram> program;
+  if (!a.plc.empty() && valid) program = load_plc_program(m, a.plc, a.map, a.pou);
+#else
+  if (!a.plc.empty()) throw BadArguments("--plc: this cemv is built without the PLC front end");
+#endif
   checker::CheckOptions options;
   options.property_timeout_s = a.timeout_s;
   options.cancel = &cancel;
@@ -187,6 +269,7 @@ int run_evidence(const EvidenceArgs& a) {
   options.on_start = [&](const std::string& name) { progress.started(name); };
   options.on_result = [&](const checker::PropertyResult& r) { progress.finished(r.name); };
   bool response_interrupted = false;
+  bool plc_interrupted = false;
   try {
     if (!files.empty()) {
       in.check = checker::check_properties(m, files, options);
@@ -204,6 +287,25 @@ int run_evidence(const EvidenceArgs& a) {
       const response::ResponseResult rr = response::analyse(m, ro);
       response_interrupted = rr.interrupted;
       in.response = response_figures(m, rr);
+    }
+#endif
+#ifdef CEMV_WITH_PLC
+    if (program) {
+      progress.phase("cemv evidence: PLC program", 1, "programs");
+      progress.started(program->pou);
+      plc_check::PlcCheckReport r;
+      r.program_file = program->file;
+      r.program_sha256 = program->sha256;
+      r.pou = program->pou;
+      r.map = program->map;
+      r.map_source = program->map_source;
+      const plc::Pou& pou = *plc::find_pou(program->program, program->pou);
+      const double left = a.total_timeout_s > 0
+                              ? std::max(1e-3, std::chrono::duration<double>(deadline - checker::Clock::now()).count())
+                              : 0.0;
+      decide_outputs(m, program->program, pou, r, a.timeout_s, left, a.jobs);
+      plc_interrupted = r.interrupted;
+      in.plc = plc_figures(*program, r);
     }
 #endif
   } catch (const std::exception& e) {
@@ -230,7 +332,7 @@ int run_evidence(const EvidenceArgs& a) {
               << "; wrote " << a.out_file << (a.json_file.empty() ? "" : " and " + a.json_file) << "\n";
   if (!valid) return 1;
   // The report is complete but for what the time limit left unknown.
-  const bool interrupted = in.check.interrupted || response_interrupted;
+  const bool interrupted = in.check.interrupted || response_interrupted || plc_interrupted;
   if (interrupted && !a.quiet)
     std::cerr << "cemv evidence: the overall time limit of " << a.total_timeout_s
               << " s is up; what was not decided is reported unknown\n";
@@ -258,6 +360,13 @@ void add_evidence_commands(CLI::App& app, Context& ctx) {
   cmd->add_option("--defeats", a.defeats_file,
                   "minimal defeat sets to include (the cemv-defeats/1 JSON of cemv defeats --format json)")
       ->type_name("FILE");
+  cmd->add_option("--plc", a.plc,
+                  "add a chapter on this PLC program (Structured Text or PLCopen XML) proved against the matrix "
+                  "(docs/plc.md)")
+      ->type_name("PROGRAM");
+  cmd->add_option("--map", a.map, "with --plc: the map (cemv-plc-map/1); without it, found by name")->type_name("MAP");
+  cmd->add_option("--pou", a.pou, "with --plc: the PROGRAM (default: the map's, or the file's only one)")
+      ->type_name("NAME");
   cmd->add_option("--json", a.json_file, "also write the report's content as cemv-evidence/1 JSON (docs/reports.md)")
       ->type_name("FILE");
   cmd->add_flag("--response", a.response,

@@ -13,6 +13,7 @@
 #include "cli/commands.hpp"
 #include "cli/matrix_input.hpp"
 #include "cli/output.hpp"
+#include "cli/plc_program.hpp"
 #include "formats/diagnostics.hpp"
 #include "formats/matrix_json.hpp"
 #include "formats/plc_map.hpp"
@@ -39,47 +40,6 @@ struct PlcArgs {
   int jobs = 1;
   bool quiet = false;
 };
-
-plc_check::VarType var_type(const plc::VarType& t) {
-  if (t.kind != plc::VarType::Kind::Elementary) return plc_check::VarType::Other;
-  switch (t.type) {
-    case plc::Type::Bool: return plc_check::VarType::Bool;
-    case plc::Type::Int:
-    case plc::Type::Dint: return plc_check::VarType::Int;
-    case plc::Type::Real: return plc_check::VarType::Real;
-    case plc::Type::Time: return plc_check::VarType::Time;
-  }
-  return plc_check::VarType::Other;
-}
-
-plc_check::VarKind var_kind(plc::Section s) {
-  switch (s) {
-    case plc::Section::Input: return plc_check::VarKind::Input;
-    case plc::Section::Output: return plc_check::VarKind::Output;
-    case plc::Section::InOut: return plc_check::VarKind::InOut;
-    default: return plc_check::VarKind::Local;
-  }
-}
-
-// The PROGRAM checked: --pou, else the map's, else the file's only PROGRAM.
-const plc::Pou& choose_pou(const plc::Program& p, const std::string& wanted, const std::string& file) {
-  if (!wanted.empty()) {
-    const plc::Pou* pou = plc::find_pou(p, wanted);
-    if (!pou || pou->kind != plc::PouKind::Program)
-      throw formats::LoadError({{"", "no PROGRAM " + wanted + " in the program", file}});
-    return *pou;
-  }
-  const plc::Pou* only = nullptr;
-  int programs = 0;
-  for (const auto& pou : p.pous)
-    if (pou.kind == plc::PouKind::Program) {
-      only = &pou;
-      ++programs;
-    }
-  if (programs != 1)
-    throw formats::LoadError({{"", std::to_string(programs) + " PROGRAMs in the file: name the one to check with --pou", file}});
-  return *only;
-}
 
 std::string stem(const std::string& tag) {
   std::string s;
@@ -135,11 +95,7 @@ int run_plc_check(const PlcArgs& a) {
   std::optional<formats::PlcMap> given;
   if (!a.map.empty()) given = formats::parse_plc_map(read_input(a.map), input_name(a.map));
   const plc::Pou& pou = choose_pou(program, !a.pou.empty() ? a.pou : given ? given->pou : "", input_name(a.program));
-  plc_check::ProgramInterface iface;
-  iface.file = input_name(a.program);
-  iface.pou = pou.name;
-  if (program.scan_time_ms) iface.task_ms = static_cast<std::uint32_t>(*program.scan_time_ms);
-  for (const auto& v : pou.variables) iface.variables.push_back({v.name, var_kind(v.section), var_type(v.type)});
+  const plc_check::ProgramInterface iface = program_interface(program, pou, input_name(a.program));
   check_writable(a.output);
   if (!a.save_map.empty()) check_writable(a.save_map);
   if (!a.out_dir.empty()) check_writable_directory(a.out_dir);
@@ -157,41 +113,8 @@ int run_plc_check(const PlcArgs& a) {
   r.map = map;
   r.map_source = given ? input_name(a.map) : "found by name";
   r.tool_version = CEMV_VERSION;
-  // One output a task, decided in its own slot: the results do not depend
-  // on --jobs or on which worker ran what.
-  const auto start = checker::Clock::now();
-  auto seconds = [](double s) { return std::chrono::duration_cast<checker::Clock::duration>(std::chrono::duration<double>(s)); };
-  checker::CancelToken cancel(a.total_timeout_s > 0 ? start + seconds(a.total_timeout_s) : checker::Clock::time_point::max());
-  const auto qs = plc_check::questions(m, map);
-  std::vector<std::optional<plc_check::OutputResult>> slots(qs.size());
-  std::vector<std::optional<plc_encoder::Unsupported>> refused(qs.size());
-  checker::WorkQueue(a.jobs, cancel).run(qs.size(), [&](std::size_t i) {
-    plc_check::CheckOptions o;
-    o.relation = relation;
-    o.limits.cancel = &cancel;
-    if (a.timeout_s > 0) o.limits.deadline = checker::Clock::now() + seconds(a.timeout_s);
-    try {
-      slots[i] = plc_check::check_output(m, program, pou, map, qs[i], o);
-    } catch (const plc_encoder::Unsupported& e) {
-      refused[i] = e;
-    }
-  });
-  for (const auto& e : refused)
-    if (e) throw formats::LoadError({{"", e->what(), input_name(a.program), e->at.line, e->at.column}});
-  for (std::size_t i = 0; i < qs.size(); ++i) {
-    if (slots[i]) {
-      r.outputs.push_back(*slots[i]);
-    } else {
-      r.interrupted = true;
-      plc_check::OutputResult u;
-      u.question = qs[i];
-      u.reason = "total time limit";
-      r.outputs.push_back(u);
-    }
-    r.scenario_files.emplace_back();
-    r.diagram_files.emplace_back();
-    write_difference(a, m, r, i);
-  }
+  decide_outputs(m, program, pou, r, a.timeout_s, a.total_timeout_s, a.jobs);
+  for (std::size_t i = 0; i < r.outputs.size(); ++i) write_difference(a, m, r, i);
   std::string text;
   if (*format == reports::CheckFormat::Text) text = plc_check::to_text(r, m);
   else if (*format == reports::CheckFormat::Json) text = plc_check::to_json(r);

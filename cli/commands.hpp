@@ -56,5 +56,6 @@ void add_defeats_commands(CLI::App& app, Context& ctx);   // defeats
 void add_evidence_commands(CLI::App& app, Context& ctx);  // evidence
 void add_workbook_commands(CLI::App& app, Context& ctx);  // import-workbook, export-workbook
 void add_plc_commands(CLI::App& app, Context& ctx);       // plc-check
+void add_export_st_commands(CLI::App& app, Context& ctx); // export-st
 
 }  // namespace cemv::cli

@@ -94,6 +94,7 @@ int main(int argc, char** argv) {
 #endif
 #ifdef CEMV_WITH_PLC  // the PLC program's commands (docs/plc.md)
   cemv::cli::add_plc_commands(app, ctx);
+  cemv::cli::add_export_st_commands(app, ctx);
 #endif
 #ifdef CEMV_WITH_WORKBOOK  // the ODS/XLSX commands (their own guard: the CLI tests' doubles do not build them)
   cemv::cli::add_workbook_commands(app, ctx);

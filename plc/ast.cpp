@@ -49,6 +49,7 @@ void clear(Expr& e) {
 void clear(std::vector<Statement>& body);
 void clear(Statement& s) {
   s.position = {};
+  s.comment.clear();
   clear(s.value);
   clear(s.limit);
   clear(s.step);
@@ -84,8 +85,10 @@ Program without_positions(Program program) {
   program.file.clear();
   for (Pou& pou : program.pous) {
     pou.position = {};
+    pou.comment.clear();
     for (Variable& v : pou.variables) {
       v.position = {};
+      v.comment.clear();
       v.initial_position = {};
     }
     clear(pou.body);

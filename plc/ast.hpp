@@ -131,6 +131,9 @@ struct Statement {
   std::int64_t from = 0, to = 0, by = 1;
   std::vector<Statement> body;  // For
   std::vector<CallArg> args;              // Call
+  // Printed as `(* ... *)` on the lines before the statement; never read
+  // back (a generator's explanation for reviewers, cleared by without_positions).
+  std::string comment;
   bool operator==(const Statement&) const = default;
 };
 
@@ -157,6 +160,7 @@ struct Variable {
   VarType type;
   std::optional<Literal> initial;  // `:= literal` (elementary types only)
   Position initial_position;
+  std::string comment;  // printed after the declaration; never read back
   bool operator==(const Variable&) const = default;
 };
 
@@ -166,6 +170,7 @@ struct Pou {
   std::string name;
   std::vector<Variable> variables;  // in declaration order
   std::vector<Statement> body;
+  std::string comment;  // printed before the POU; never read back
   bool operator==(const Pou&) const = default;
 };
 
@@ -178,7 +183,7 @@ struct Program {
   bool operator==(const Program&) const = default;
 };
 
-// The same program with every position cleared and `file` emptied: what
+// The same program with every position and comment cleared and `file` emptied: what
 // `parse(print(ast))` must give back, whatever the layout.
 Program without_positions(Program program);
 

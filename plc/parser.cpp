@@ -180,7 +180,7 @@ class Parser : public ExpressionParser {
       }
       expect(Tok::Semicolon, ";");
       for (auto& [name, pos] : names)
-        p.variables.push_back(Variable{pos, name, section, type, initial, initial_pos});
+        p.variables.push_back(Variable{pos, name, section, type, initial, initial_pos, {}});
     }
     next();  // END_VAR
   }
@@ -461,6 +461,12 @@ Program parse_program_text(std::string_view text, const std::string& file) {
 
 Program read_program(const std::filesystem::path& file) {
   return parse_program_text(formats::read_text_file(file), file.string());
+}
+
+bool is_reserved_word(std::string_view word) {
+  return is_keyword(word) || in(kRefusedTypes, word) || in(kRefusedBlocks, word) || in(kRefusedFunctions, word) ||
+         is_conversion(word) || type_from_name(word) || block_from_name(word) || function_from_name(word) ||
+         same_name(word, "TIME") || same_name(word, "T") || same_name(word, "EN") || same_name(word, "ENO");
 }
 
 }  // namespace cemv::plc

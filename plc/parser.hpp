@@ -34,4 +34,9 @@ Literal parse_initial_value(std::string_view text, const Origin& origin, Positio
 // the types outside the subset at `at`.
 VarType parse_type_name(const std::string& word, const std::string& file, Position at);
 
+// Whether an identifier is a word of the language or a name of a type, block
+// or function (inside the subset or refused by it): a generator never names a
+// variable so.
+bool is_reserved_word(std::string_view word);
+
 }  // namespace cemv::plc

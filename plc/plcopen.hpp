@@ -19,4 +19,10 @@ inline constexpr std::string_view kPlcopenNamespace = "http://www.plcopen.org/xm
 // Throws formats::LoadError at the first problem.
 Program parse_plcopen(std::string_view text, const std::string& file);
 
+// The program as PLCopen XML that parse_plcopen reads back: its POUs, the
+// comments as `documentation`, the bodies as ST (print.hpp) in CDATA, and a
+// cyclic task of `scan_time_ms` running the first PROGRAM when it is set.
+// Deterministic (no clock in the file header).
+std::string write_plcopen(const Program& program);
+
 }  // namespace cemv::plc

@@ -28,6 +28,38 @@ std::string wrapped(const Expr& e, bool parens) {
   return parens ? "(" + print_expression(e) + ")" : print_expression(e);
 }
 
+// A comment as `(* ... *)` lines of at most about 100 columns at `indent`;
+// a `*)` inside the text would end it early, so it is written `* )`.
+std::string comment_lines(const std::string& text, const std::string& pad) {
+  std::string safe;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    safe += text[i];
+    if (text[i] == '*' && i + 1 < text.size() && text[i + 1] == ')') safe += ' ';
+    if (text[i] == '(' && i + 1 < text.size() && text[i + 1] == '*') safe += ' ';
+  }
+  std::string out;
+  std::string line = pad + "(*";
+  std::size_t start = 0;
+  while (start < safe.size()) {
+    std::size_t end = safe.find_first_of(" \n", start);
+    if (end == std::string::npos) end = safe.size();
+    const std::string word = safe.substr(start, end - start);
+    if (!word.empty()) {
+      if (line.size() + 1 + word.size() > 100 && line.size() > pad.size() + 3) {
+        out += line + "\n";
+        line = pad + "  ";
+      }
+      line += " " + word;
+    }
+    if (end < safe.size() && safe[end] == '\n' && line.size() > pad.size() + 3) {
+      out += line + "\n";
+      line = pad + "  ";
+    }
+    start = end + 1;
+  }
+  return out + line + " *)\n";
+}
+
 void body(std::string& out, const std::vector<Statement>& statements, int indent) {
   for (const Statement& s : statements) out += print_statement(s, indent);
 }
@@ -62,9 +94,9 @@ std::string print_expression(const Expr& e) {
 
 std::string print_statement(const Statement& s, int indent) {
   const std::string pad(static_cast<std::size_t>(indent), ' ');
-  std::string out;
+  std::string out = s.comment.empty() ? "" : comment_lines(s.comment, pad);
   switch (s.kind) {
-    case Statement::Kind::Assign: return pad + s.target + " := " + print_expression(s.value) + ";\n";
+    case Statement::Kind::Assign: return out + pad + s.target + " := " + print_expression(s.value) + ";\n";
     case Statement::Kind::If:
       for (std::size_t i = 0; i < s.branches.size(); ++i) {
         out += pad + (i ? "ELSIF " : "IF ") + print_expression(s.branches[i].condition) + " THEN\n";
@@ -107,7 +139,8 @@ std::string print_statement(const Statement& s, int indent) {
 }
 
 std::string print_pou(const Pou& pou) {
-  std::string out = (pou.kind == PouKind::Program ? "PROGRAM " : "FUNCTION_BLOCK ") + pou.name + "\n";
+  std::string out = pou.comment.empty() ? "" : comment_lines(pou.comment, "");
+  out += (pou.kind == PouKind::Program ? "PROGRAM " : "FUNCTION_BLOCK ") + pou.name + "\n";
   for (std::size_t i = 0; i < pou.variables.size();) {
     const Section section = pou.variables[i].section;
     out += std::string(section_keyword(section)) + "\n";
@@ -120,7 +153,9 @@ std::string print_pou(const Pou& pou) {
         case VarType::Kind::User: out += v.type.user; break;
       }
       if (v.initial) out += " := " + literal_text(*v.initial);
-      out += ";\n";
+      out += ";";
+      if (!v.comment.empty()) out += " " + comment_lines(v.comment, "");
+      else out += "\n";
     }
     out += "END_VAR\n";
   }

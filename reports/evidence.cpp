@@ -160,8 +160,10 @@ class Writer {
       evidence_detail::provenance_chapter(pages_, d_, "5");
       evidence_detail::response_section(pages_, m_, in_, "6");
       evidence_detail::tests_section(pages_, in_, "7");
-      limitations("8");
-      conclusion("9");
+      int next = 8;
+      if (in_.plc) evidence_detail::plc_chapter(pages_, *in_.plc, std::to_string(next++));
+      limitations(std::to_string(next++));
+      conclusion(std::to_string(next));
       appendix("A");
     }
     return assemble();

@@ -88,6 +88,36 @@ struct DefeatFigures {
   std::vector<Path> paths;
 };
 
+// `cemv evidence --plc` (docs/plc.md "Evidence with the program"): the PLC
+// program proved against the matrix, as plain data the command line fills
+// from plc_check's results.
+struct PlcFigures {
+  struct Binding {
+    std::string what;      // "input tag LT_100A", "output tag XV_101", "command ack_cause cause 1"
+    std::string variable;  // "" for a value held or a command declared unused
+    std::string note;      // "bad quality LT_100A_BQ", "held at 50", "never issued"
+  };
+  struct Scan {
+    int scan = 0;            // 1-based
+    int matrix = 0, program = 0;
+    std::string inputs;      // the program inputs that changed in this scan, "LT_100A = 91, ..."
+  };
+  struct Output {
+    std::string tag, variable, verdict, method, reason;  // verdict: related, differs, unknown
+    int effect = 0, k = 0;
+    // differs: the run replayed on both sides, cut after the first differing scan
+    int scan = 0, matrix_value = 0, program_value = 0;
+    std::string assigned_at;  // "tank.st:118:1", "" when no statement set it
+    std::vector<Scan> scans;
+  };
+  std::string file, sha256, pou, relation, map_source;
+  long long scan_ms = 0;
+  std::vector<Binding> map;
+  std::vector<std::string> assumptions;
+  std::vector<Output> outputs;
+  bool interrupted = false;  // --total-timeout ended the check
+};
+
 // A property as written, for the report's formal text (docs/properties.md):
 // its statement and the assumptions it is judged under, as properties/print
 // writes them.
@@ -123,6 +153,7 @@ struct EvidenceInputs {
   // coloured by acceptance status. Its signature is the matrix's (the CLI checks).
   std::optional<formats::Acceptance> acceptance;
   std::string acceptance_file;                   // as given on the command line
+  std::optional<PlcFigures> plc;                 // absent: no program given
 };
 
 // The report as one printable HTML file (docs/reports.md, "Evidence report").

@@ -144,6 +144,17 @@ void conclude(Document& d) {
                                                      " (chapter 2, Appendix A).");
     }
   }
+  if (d.in.plc) {
+    int related = 0, differs = 0;
+    for (const auto& o : d.in.plc->outputs) related += o.verdict == "related", differs += o.verdict == "differs";
+    const auto total = d.in.plc->outputs.size();
+    d.conclusion.push_back(
+        "PLC program " + d.in.plc->pou + " (SHA-256 " + d.in.plc->sha256 + "): " + std::to_string(related) + " of " +
+        std::to_string(total) + " output tags proved " + d.in.plc->relation +
+        (differs ? ", " + std::to_string(differs) + " differ (each run replayed on both sides)" : std::string()) +
+        (total - related - differs ? ", " + std::to_string(total - related - differs) + " unknown" : std::string()) +
+        ", under the assumptions listed (chapter The PLC program).");
+  }
   if (d.warnings) d.conclusion.push_back("Validation reports " + std::to_string(d.warnings) +
                                          (d.warnings == 1 ? " warning" : " warnings") +
                                          " (no errors); each is listed and should be read.");

@@ -167,6 +167,30 @@ std::string evidence_json(const model::Matrix& m, const EvidenceInputs& in) {
   } else {
     j["defeats"] = nullptr;
   }
+  if (in.plc) {
+    const auto& p = *in.plc;
+    json outputs = json::array();
+    for (const auto& o : p.outputs) {
+      json x = {{"tag", o.tag}, {"effect", o.effect}, {"variable", o.variable}, {"verdict", o.verdict},
+                {"method", o.method}, {"k", o.k}};
+      if (o.verdict == "unknown") x["reason"] = o.reason;
+      if (o.verdict == "differs") {
+        json scans = json::array();
+        for (const auto& s : o.scans)
+          scans.push_back({{"scan", s.scan}, {"matrix", s.matrix}, {"program", s.program}, {"inputs", s.inputs}});
+        x["difference"] = {{"scan", o.scan}, {"matrix_value", o.matrix_value}, {"program_value", o.program_value},
+                           {"assigned_at", o.assigned_at}, {"scans", scans}};
+      }
+      outputs.push_back(x);
+    }
+    json map = json::array();
+    for (const auto& b : p.map) map.push_back({{"matrix", b.what}, {"variable", b.variable}, {"note", b.note}});
+    j["plc"] = {{"file", p.file}, {"sha256", p.sha256}, {"pou", p.pou}, {"relation", p.relation},
+                {"scan_ms", p.scan_ms}, {"map_source", p.map_source}, {"map", map}, {"assumptions", p.assumptions},
+                {"outputs", outputs}, {"interrupted", p.interrupted}};
+  } else {
+    j["plc"] = nullptr;
+  }
   j["coverage"] = in.coverage ? json{{"file", in.coverage->file}, {"objectives", in.coverage->objectives},
                                      {"covered", in.coverage->covered}, {"infeasible", in.coverage->infeasible},
                                      {"undecided", in.coverage->undecided}, {"tests", in.coverage->tests}}

@@ -13,8 +13,45 @@ namespace cemv::testgen {
 
 namespace {
 
+// A scenario on another implementation (ReplayTarget): only the expectations
+// it has values for are checked, the others counted as skipped.
+TestOutcome replay_on_target(const model::Matrix& m, formats::Scenario sc, TestOutcome out, ReplayTarget& target) {
+  for (auto& step : sc.steps) {
+    std::vector<formats::Expectation> kept;
+    for (auto& x : step.expect)
+      if (target.observes(x.target)) kept.push_back(x);
+      else ++out.skipped;
+    step.expect = std::move(kept);
+  }
+  formats::ExpandedScenario ex = formats::expand_scenario(sc, m);
+  for (const auto& in : ex.cycles)
+    if (std::string why = target.cannot_run(in); !why.empty()) {
+      out.not_run = why;
+      return out;
+    }
+  target.start();
+  formats::ExpectationChecker checker(ex);
+  out.steps.resize(sc.steps.size());
+  for (std::size_t s = 0; s < sc.steps.size(); ++s) out.steps[s].step = s;
+  for (std::size_t k = 0; k < ex.cycles.size(); ++k) {
+    target.step(ex.cycles[k]);
+    out.steps[ex.step_of_cycle[k]].cycle = k;
+    for (const auto& r : checker.after_cycle(k, [&](const formats::ExpectTarget& t) { return target.value(t); }))
+      if (!r.ok) {
+        out.steps[r.step].passed = false;
+        out.steps[r.step].failures.push_back(r.failure_text(m.cycle_ms));
+      }
+  }
+  out.cycles = ex.cycles.size();
+  out.expectations = checker.checked();
+  out.failed = checker.failed();
+  out.passed = out.failed == 0;
+  return out;
+}
+
 TestOutcome replay_one(const model::Matrix& m, const std::string& name, const std::string& text,
-                       const std::vector<model::Observable>& obs, const std::map<std::string, std::size_t>& index) {
+                       const std::vector<model::Observable>& obs, const std::map<std::string, std::size_t>& index,
+                       ReplayTarget* target) {
   TestOutcome out;
   out.name = name;
   formats::Scenario sc;
@@ -24,6 +61,7 @@ TestOutcome replay_one(const model::Matrix& m, const std::string& name, const st
     for (const auto& issue : e.issues()) out.load_error += (out.load_error.empty() ? "" : "\n") + issue.str();
     return out;
   }
+  if (target) return replay_on_target(m, std::move(sc), std::move(out), *target);
   formats::ExpandedScenario ex = formats::expand_scenario(sc, m);
   runtime::Runtime rt(m);
   formats::ExpectationChecker checker(ex);
@@ -68,12 +106,13 @@ std::size_t ReplayResult::passed() const {
   return static_cast<std::size_t>(std::count_if(tests.begin(), tests.end(), [](const TestOutcome& t) { return t.passed; }));
 }
 
-ReplayResult replay_texts(const model::Matrix& m, const std::vector<std::pair<std::string, std::string>>& scenarios) {
+ReplayResult replay_texts(const model::Matrix& m, const std::vector<std::pair<std::string, std::string>>& scenarios,
+                          ReplayTarget* target) {
   const auto obs = model::observables(m);
   std::map<std::string, std::size_t> index;
   for (std::size_t i = 0; i < obs.size(); ++i) index[obs[i].key] = i;
   ReplayResult r;
-  for (const auto& [name, text] : scenarios) r.tests.push_back(replay_one(m, name, text, obs, index));
+  for (const auto& [name, text] : scenarios) r.tests.push_back(replay_one(m, name, text, obs, index, target));
   return r;
 }
 
@@ -83,7 +122,8 @@ ReplayResult replay_suite(const model::Matrix& m, const TestSuite& suite) {
   return replay_texts(m, texts);
 }
 
-ReplayResult replay_files(const model::Matrix& m, const std::vector<std::filesystem::path>& paths) {
+ReplayResult replay_files(const model::Matrix& m, const std::vector<std::filesystem::path>& paths,
+                          ReplayTarget* target) {
   std::vector<std::filesystem::path> files;
   for (const auto& p : paths) {
     std::error_code ec;
@@ -102,7 +142,7 @@ ReplayResult replay_files(const model::Matrix& m, const std::vector<std::filesys
   }
   std::vector<std::pair<std::string, std::string>> texts;
   for (const auto& f : files) texts.push_back({f.string(), formats::read_text_file(f)});
-  return replay_texts(m, texts);
+  return replay_texts(m, texts, target);
 }
 
 }  // namespace cemv::testgen

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "checker/limits.hpp"
+#include "formats/scenario.hpp"
 #include "model/matrix.hpp"
 #include "model/node.hpp"
 #include "model/vocabulary.hpp"
@@ -143,8 +144,25 @@ struct TestOutcome {
   std::string name;
   bool passed = false;
   std::string load_error;  // the scenario does not load against this matrix
+  std::string not_run;     // the replay target cannot run it (a command it does not implement)
   std::vector<StepOutcome> steps;
   std::size_t expectations = 0, failed = 0, cycles = 0;
+  std::size_t skipped = 0;  // expectations on values the replay target does not have
+};
+
+// What a replay runs a scenario on, when not the reference runtime: another
+// implementation of the matrix (a PLC program and its map, cli/plc_target.hpp).
+class ReplayTarget {
+ public:
+  virtual ~ReplayTarget() = default;
+  virtual void start() = 0;  // back to start-up, before each test
+  // Why the target cannot run this cycle ("" when it can): a command it has no input for.
+  virtual std::string cannot_run(const model::CycleInput& in) const = 0;
+  virtual void step(const model::CycleInput& in) = 0;
+  // Whether the target has a value for an expectation's target (others are
+  // counted as skipped, never as passed).
+  virtual bool observes(const formats::ExpectTarget& t) const = 0;
+  virtual int value(const formats::ExpectTarget& t) const = 0;
 };
 struct ReplayResult {
   std::vector<TestOutcome> tests;
@@ -153,12 +171,15 @@ struct ReplayResult {
 };
 
 // (name, cemv-scenario/1 text) pairs, each parsed against `m`.
+// `target`: nullptr runs the reference runtime.
 ReplayResult replay_texts(const model::Matrix& m,
-                          const std::vector<std::pair<std::string, std::string>>& scenarios);
+                          const std::vector<std::pair<std::string, std::string>>& scenarios,
+                          ReplayTarget* target = nullptr);
 ReplayResult replay_suite(const model::Matrix& m, const TestSuite& suite);
 // Files, and folders (every *.json in them, by name). A file that cannot be
 // read is a formats::LoadError; one that does not load against `m` is a
 // failed test with its load_error.
-ReplayResult replay_files(const model::Matrix& m, const std::vector<std::filesystem::path>& paths);
+ReplayResult replay_files(const model::Matrix& m, const std::vector<std::filesystem::path>& paths,
+                          ReplayTarget* target = nullptr);
 
 }  // namespace cemv::testgen

@@ -72,3 +72,9 @@ cemv_cli_test(NAME layout_plc_encoder_includes_only_plc_and_model EXIT 1
 # or another consumer of the checker.
 cemv_cli_test(NAME layout_plc_check_includes_only_its_row EXIT 1
   COMMAND grep -rnE "${_cemv_inc}(properties|testgen|mutate|diff|response|defeats|cli|sheets)/" ${PROJECT_SOURCE_DIR}/plc_check)
+# plc_export/ writes a matrix as a program from docs/semantics.md: model,
+# formats and plc/'s AST only, never the matrix's runtime or encoder (the
+# program is a diverse implementation that plc-check relates to them).
+cemv_cli_test(NAME layout_plc_export_includes_only_its_row EXIT 1
+  COMMAND grep -rnE "${_cemv_inc}(reports|runtime|encoder|properties|checker|testgen|mutate|diff|response|defeats|plc_encoder|plc_check|cli|sheets)/|${_cemv_inc}plc/(interpreter|blocks|values)"
+          ${PROJECT_SOURCE_DIR}/plc_export)

@@ -23,7 +23,7 @@ class Generator {
     Pou main;
     main.name = "Main";
     auto add = [&](const std::string& name, Section s, VarType t, std::optional<Literal> init = {}) {
-      main.variables.push_back(Variable{{}, name, s, t, init, {}});
+      main.variables.push_back(Variable{{}, name, s, t, init, {}, {}});
     };
     auto el = [](Type t) { return VarType{VarType::Kind::Elementary, t, {}, {}}; };
     for (int i = 0; i < 3; ++i) add("b" + std::to_string(i), Section::Input, el(Type::Bool));
@@ -67,9 +67,9 @@ class Generator {
     Pou fb;
     fb.kind = PouKind::FunctionBlock;
     fb.name = "Helper";
-    fb.variables = {Variable{{}, "x", Section::Input, {VarType::Kind::Elementary, Type::Bool, {}, {}}, {}, {}},
-                    Variable{{}, "y", Section::Output, {VarType::Kind::Elementary, Type::Bool, {}, {}}, {}, {}},
-                    Variable{{}, "n", Section::InOut, {VarType::Kind::Elementary, Type::Int, {}, {}}, {}, {}}};
+    fb.variables = {Variable{{}, "x", Section::Input, {VarType::Kind::Elementary, Type::Bool, {}, {}}, {}, {}, {}},
+                    Variable{{}, "y", Section::Output, {VarType::Kind::Elementary, Type::Bool, {}, {}}, {}, {}, {}},
+                    Variable{{}, "n", Section::InOut, {VarType::Kind::Elementary, Type::Int, {}, {}}, {}, {}, {}}};
     Statement s;
     s.target = "y";
     s.value = var("x", Type::Bool);
