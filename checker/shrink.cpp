@@ -152,7 +152,7 @@ Trace shrink_trace(const SafetyProblem& problem, const Trace& cex, const Preferr
   const auto& ts = *problem.ts;
   z3::context& ctx = ts.ctx();
   encoder::Unroller u(ts);
-  z3::solver s = incremental_solver(ctx);
+  z3::solver s(ctx);
   // The same question BMC answered at depth n - 1: a path of n cycles under
   // the constraints and assumptions, `good` in every cycle but the last.
   s.add(u.at(ts.init_formula(), 0));

@@ -175,7 +175,7 @@ ProverResult AcceleratedBmc::prove(const SafetyProblem& problem, const Limits& l
     Watchdog watchdog(ctx, limits);
     MacroUnrolling m(problem);
     encoder::Unroller& u = m.unroller();
-    z3::solver s = incremental_solver(ctx);
+    z3::solver s(ctx);
     s.add(m.init());
     for (int J = 0; J <= max_steps; ++J) {
       if (limits.interrupted()) return finish(UnknownReason::TimeLimit);

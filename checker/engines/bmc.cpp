@@ -10,7 +10,7 @@ ProverResult Bmc::prove(const SafetyProblem& problem, const Limits& limits) {
   const auto& ts = *problem.ts;
   z3::context& ctx = ts.ctx();
   encoder::Unroller u(ts);
-  z3::solver s = incremental_solver(ctx);
+  z3::solver s(ctx);
   Watchdog watchdog(ctx, limits);
   WorkMeter meter(ctx, limits.work);
   ProverResult r;

@@ -83,7 +83,7 @@ ProverResult KInduction::prove(const SafetyProblem& problem, const Limits& limit
     }
     encoder::Unroller u(ts);
     Watchdog watchdog(ctx, limits);
-    z3::solver base = incremental_solver(ctx), step = incremental_solver(ctx);
+    z3::solver base(ctx), step(ctx);
     const z3::expr facts = ts.constraint_formula() && problem.assumption;
     const z3::expr trans = ts.trans_formula();
     const int max_k = options_.max_k < 0 ? limits.max_depth : std::min(options_.max_k, limits.max_depth);

@@ -17,7 +17,7 @@ std::vector<ProverResult> reach_each(const encoder::TransitionSystem& ts, const 
   try {
     Watchdog watchdog(ctx, limits);
     encoder::Unroller u(ts);
-    z3::solver s = incremental_solver(ctx);
+    z3::solver s(ctx);
     const z3::expr facts = ts.constraint_formula() && assumption;
     s.add(u.at(ts.init_formula(), 0));
     for (int k = 0; k <= limits.max_depth && count > 0; ++k) {

@@ -13,7 +13,7 @@ namespace {
 // question is its own term under a fresh literal.
 class SharedSolver {
  public:
-  SharedSolver(z3::context& ctx, WorkMeter& meter, const char* tag) : s_(incremental_solver(ctx)), meter_(meter), tag_(tag) {}
+  SharedSolver(z3::context& ctx, WorkMeter& meter, const char* tag) : s_(ctx), meter_(meter), tag_(tag) {}
   void add(const z3::expr& e) { s_.add(e); }
   // Unsat: the member's question has no model (its proof obligation holds).
   z3::check_result ask(const z3::expr& question, std::size_t member) {

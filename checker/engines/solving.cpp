@@ -43,8 +43,6 @@ void Watchdog::watch() {
   }
 }
 
-z3::solver incremental_solver(z3::context& ctx) { return z3::solver(ctx, z3::solver::simple()); }
-
 z3::check_result check_within(z3::solver& s, WorkMeter& meter) {
   if (!meter.arm()) return z3::unknown;
   return s.check();

@@ -40,14 +40,6 @@ class Watchdog {
   std::thread thread_;
 };
 
-// A solver for incremental checks (under assumptions, or after a push): Z3's
-// SMT kernel alone. Z3's default solver pairs that same kernel with the
-// tactic of a one-shot check, which it builds at its first check (about 10
-// ms of parameter lookups in Z3 4.8.12, per solver), and answers
-// incremental checks with the kernel; only an `unknown` after a push would
-// it ask the tactic again. The engines make hundreds of solvers a run.
-z3::solver incremental_solver(z3::context& ctx);
-
 // One solver check within the meter's budget; unknown, without a call, when
 // nothing is left.
 z3::check_result check_within(z3::solver& s, WorkMeter& meter);
