@@ -111,19 +111,11 @@ class WorkMeter {
 
  private:
   z3::context& ctx_;
-  // What reads the count (resource_count): made once per meter, because
-  // reading it through a fresh default solver sets up a whole SMT solver
-  // each time, which cost a third of a standard property set's CPU.
-  mutable z3::solver probe_;
   Work budget_;
   Work start_;
 };
 
 // Z3's count of resource units spent in `ctx` so far.
 Work resource_count(z3::context& ctx);
-// The same, read through `probe`, a solver of that context that does no
-// work of its own (stats_probe).
-Work resource_count(z3::solver& probe);
-z3::solver stats_probe(z3::context& ctx);
 
 }  // namespace cemv::checker
