@@ -80,6 +80,7 @@ void recheck_proof(const SafetyProblem& problem, const ProverResult& result, con
   try {
     obs = obligations(problem, result);
   } catch (const z3::exception& e) {
+    if (limits) stop_if_interrupted(*limits);  // an interrupted context refuses any parse
     throw InternalError(result.method_text() + " proof: the invariant does not parse: " + e.msg());
   }
   // One fresh solver for the obligations, each in its own scope: in
