@@ -36,6 +36,7 @@ READERS = {
     "workbook_grid.cpp": ["import-workbook"],
     "text_encoding.cpp": ["import-csv"],
     "scenario.cpp": ["simulate"],
+    "cli/plc_program.cpp": ["plc-check", "replay", "evidence"],
 }
 
 FLAG = re.compile(r"(?<![\w-])--([a-z][a-z0-9-]*)")
