@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "formats/diagnostics.hpp"
+#include "formats/located_issues.hpp"
 #include "model/text.hpp"
 
 namespace cemv::formats {
@@ -200,13 +201,7 @@ PlcMap parse_plc_map(std::string_view json_text, const std::string& source_name)
   if (!parsed || !issues.empty()) throw LoadError(std::move(issues));
   MapParser parser;
   PlcMap map = parser.parse(*parsed);
-  if (!parser.issues.empty()) {
-    locate_issues(json_text, source_name, parser.issues);
-    std::stable_sort(parser.issues.begin(), parser.issues.end(), [](const LoadIssue& a, const LoadIssue& b) {
-      return std::pair(a.line, a.column) < std::pair(b.line, b.column);
-    });
-    throw LoadError(std::move(parser.issues));
-  }
+  if (!parser.issues.empty()) throw_in_text_order(json_text, source_name, std::move(parser.issues));
   return map;
 }
 

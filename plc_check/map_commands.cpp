@@ -4,6 +4,7 @@
 #include <cctype>
 
 #include "plc_check/map.hpp"
+#include "model/simulation.hpp"
 
 namespace cemv::plc_check {
 
@@ -92,18 +93,7 @@ std::vector<CommandSlot> command_slots(const model::Matrix& m) {
   // Simulation: every simulatable tag the operator is permitted to simulate (O.8).
   const model::CommandOrder order(m);
   for (const auto& tag : order.simulatable_tags()) {
-    bool allowed = true;
-    for (const auto& c : m.causes)
-      for (const auto& t : c.tags)
-        if (c.function != model::CauseFunction::Comment && model::tag_key(t.name) == model::tag_key(tag) &&
-            !t.simulation_allowed)
-          allowed = false;
-    for (const auto& e : m.effects)
-      for (const auto& t : e.tags)
-        if (e.function != model::EffectFunction::Comment && model::tag_key(t.name) == model::tag_key(tag) &&
-            !t.simulation_allowed)
-          allowed = false;
-    if (!allowed) continue;
+    if (!model::simulation_permitted(m, tag)) continue;
     out.push_back(slot(model::CommandOp::SimulateTag, "tag " + tag, tag + "_SIMULATE"));
     out.back().command.tag_name = tag;
   }

@@ -1,6 +1,7 @@
 // The interface of the generated program (inputs, outputs, commands), the
 // matrix level (M.1-M.3), the evaluation order (I.4) and the map.
 #include "plc_export/export.hpp"
+#include "model/simulation.hpp"
 
 #include <algorithm>
 #include <cctype>
@@ -302,18 +303,7 @@ formats::PlcMap build_map(const Generator& g, const std::string& pou) {
   bool simulation = false;
   const model::CommandOrder order(m);
   for (const auto& tag : order.simulatable_tags()) {
-    bool allowed = true;
-    for (const auto& c : m.causes)
-      for (const auto& t : c.tags)
-        if (c.function != model::CauseFunction::Comment && model::tag_key(t.name) == model::tag_key(tag) &&
-            !t.simulation_allowed)
-          allowed = false;
-    for (const auto& e : m.effects)
-      for (const auto& t : e.tags)
-        if (e.function != model::EffectFunction::Comment && model::tag_key(t.name) == model::tag_key(tag) &&
-            !t.simulation_allowed)
-          allowed = false;
-    simulation = simulation || allowed;
+    simulation = simulation || model::simulation_permitted(m, tag);
   }
   auto unused = [&](CommandOp op) {
     formats::PlcCommandBinding b;
