@@ -2,8 +2,11 @@
 # Every answer is independent of --jobs and of the machine's load (docs/checker.md
 # "Budgets"): `check`, `testgen` and `response` run on two examples, once alone
 # with --jobs 1 and once with --jobs 4 beside processes that keep every core
-# busy, and every file they write is compared byte for byte. Only what a format
-# carries as a time of day is set aside (the checklist's Date row).
+# busy, and every file they write is compared byte for byte. The busy processes
+# run at the lowest priority: they still take every idle moment and preempt
+# cemv's threads, without starving the suite's other tests beside this one.
+# Only what a format carries as a time of day is set aside (the checklist's
+# Date row).
 # Usage: byte_identity.sh CEMV EXAMPLES_DIR WORK_DIR
 set -euo pipefail
 cemv=$(realpath "$1")
@@ -36,7 +39,7 @@ run "$work/alone" 1
 
 burners=()
 for _ in $(seq "$(nproc)"); do
-  (while :; do :; done) &
+  nice -n 19 bash -c 'while :; do :; done' &
   burners+=($!)
 done
 trap 'kill "${burners[@]}" 2>/dev/null || true' EXIT
