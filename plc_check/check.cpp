@@ -13,6 +13,7 @@
 #include "checker/replay.hpp"
 #include "model/vocabulary.hpp"
 #include "plc_check/correspondence.hpp"
+#include "plc_check/shared_proof.hpp"
 
 namespace cemv::plc_check {
 
@@ -154,28 +155,6 @@ std::vector<OutputQuestion> questions(const model::Matrix& m, const ResolvedMap&
 
 namespace {
 
-// The plant at rest for the product's inputs: each tag (named "input.TAG" on
-// both sides) at its scenario default, good quality, no command.
-SamplingOptions at_rest(const model::Matrix& m) {
-  auto rest = std::make_shared<std::map<std::string, checker::Value>>();
-  const model::InputTable table(m);
-  const model::CycleInput defaults = model::default_cycle_input(m);
-  for (std::size_t i = 0; i < table.tags().size(); ++i) {
-    checker::Value v;
-    v.is_float = table.tags()[i].kind == model::TagKind::Analog;
-    v.f = defaults.tags.at(i).value;
-    v.i = v.is_float ? 0 : defaults.tags.at(i).value != 0.0f;
-    (*rest)["input." + table.tags()[i].name] = v;
-  }
-  SamplingOptions o;
-  o.rest = [rest](const std::string& name) -> std::optional<checker::Value> {
-    const auto it = rest->find(name);
-    if (it == rest->end()) return std::nullopt;
-    return it->second;
-  };
-  return o;
-}
-
 // A shortest run to `depth` on the reduced product, whose every scan also
 // keeps `invariant` (true in every reachable state, so no run is lost).
 std::optional<checker::Trace> shortest_run(const checker::OwnedProblem& original, const checker::OwnedProblem& reduced,
@@ -195,7 +174,21 @@ OutputResult check_output(const model::Matrix& m, const plc::Program& program, c
                           const ResolvedMap& map, const OutputQuestion& q, const CheckOptions& options) {
   OutputResult out;
   out.question = q;
-  const checker::ProblemFactory make = product_factory(m, program, pou, map, q, options.relation);
+  // Every output at once first: most programs that compute the matrix are
+  // proved there, each output's proof is not repeated.
+  try {
+    const SharedProof all = shared_proof(m, program, pou, map, options);
+    if (all.proved) {
+      out.verdict = OutputVerdict::Related;
+      out.method = "correspondence invariants";
+      out.k = all.k;
+      return out;
+    }
+  } catch (const checker::Interrupted&) {
+    out.reason = "time limit";
+    return out;
+  }
+  const checker::ProblemFactory make = product_factory(m, program, pou, map, {q}, options.relation);
   Replay replay(m, program, pou, map, q, options.relation);
   auto differs = [&](const checker::OwnedProblem& original, const checker::Trace& t, const std::string& method) {
     out.verdict = OutputVerdict::Differs;

@@ -11,6 +11,7 @@
 #include "checker/engines/invariants.hpp"
 #include "checker/engines/solving.hpp"
 #include "encoder/unroller.hpp"
+#include "plc_check/houdini.hpp"
 #include "plc_check/product.hpp"
 
 namespace cemv::plc_check {
@@ -93,15 +94,16 @@ class Templates {
       }
   }
 
-  // p = q or p = not q, p the program's flag, q the matrix's, under a
-  // guard: an edge memory that starts TRUE ("no edge in the first scan") is
-  // the matrix's previous value after the first scan. Only guards that hold
-  // in a quarter of the sampled states at least: under a rarer one many
-  // flags agree by chance, and each such candidate costs Houdini (on a
+  // p = q or p = not q, p the program's flag, q the matrix's, everywhere
+  // (a latch and the effect's latch: stated here, not left to the checker's
+  // clauses over pairs, which the first round of Houdini goes without) or
+  // under a guard: an edge memory that starts TRUE ("no edge in the first
+  // scan") is the matrix's previous value after the first scan. Only guards
+  // that hold in a quarter of the sampled states at least: under a rarer one
+  // many flags agree by chance, and each such candidate costs Houdini (on a
   // generated 4 x 4 program's widest output, 3,400 candidates and 7 s
   // against 700 and 2.6 s).
   void equalities(const Guard& g) {
-    if (g.var == SIZE_MAX) return;  // the checker's clauses over pairs state these
     const auto n = std::count_if(samples_.begin(), samples_.end(), [&](const Sample& s) { return holds(g, s); });
     if (4 * n < static_cast<std::ptrdiff_t>(samples_.size())) return;
     for (std::size_t p : bools_) {
@@ -115,7 +117,8 @@ class Templates {
             });
           };
           // Not where it holds without the guard: one candidate, not one per guard.
-          if (equal_where(g) && !equal_where(Guard{SIZE_MAX, 1})) add(g, same ? var(p) == var(q) : var(p) == !var(q));
+          if (equal_where(g) && (g.var == SIZE_MAX || !equal_where(Guard{SIZE_MAX, 1})))
+            add(g, same ? var(p) == var(q) : var(p) == !var(q));
         }
       }
     }
@@ -220,25 +223,32 @@ Correspondence prove_by_correspondence(const checker::SafetyProblem& p, const Sa
   z3::context& ctx = p.ts->ctx();
   checker::WorkMeter meter(ctx, limits.work);
   try {
-    std::vector<z3::expr> cands;
-    std::unordered_set<unsigned> ids;
-    auto add = [&](const z3::expr& e) {
-      if (ids.insert(e.id()).second) cands.push_back(e);
-    };
-    for (const auto& l : p.ts->lemmas()) add(l.term);
-    checker::MiningOptions mo;
-    mo.runs = o.runs;
-    mo.cycles_per_run = o.cycles_per_run;
-    mo.seed = o.seed;
-    mo.limits = &limits;
-    for (const auto& c : checker::mine_candidates(p, mo)) add(c);
-    for (const auto& c : correspondence_candidates(p, samples)) add(c);
-    std::vector<z3::expr> kept = checker::houdini(p, std::move(cands), limits, meter);
-    checker::Watchdog watchdog(ctx, limits);
-    z3::expr_vector all(ctx);
-    for (const auto& c : kept) all.push_back(c);
-    const std::optional<int> k = good_from(p, z3::mk_and(all), limits, meter);
-    out.invariant = std::move(kept);
+    // Two rounds, cheaper first: without the checker's clauses over pairs of
+    // Booleans (most of the candidates and of Houdini's rounds), then with
+    // them when the output does not follow.
+    std::optional<int> k;
+    for (int round = 0; round < 2 && !k; ++round) {
+      std::vector<z3::expr> cands;
+      std::unordered_set<unsigned> ids;
+      auto add = [&](const z3::expr& e) {
+        if (ids.insert(e.id()).second) cands.push_back(e);
+      };
+      for (const auto& l : p.ts->lemmas()) add(l.term);
+      checker::MiningOptions mo;
+      mo.runs = o.runs;
+      mo.cycles_per_run = o.cycles_per_run;
+      mo.seed = o.seed;
+      mo.limits = &limits;
+      mo.bool_implications = round == 1;
+      for (const auto& c : checker::mine_candidates(p, mo)) add(c);
+      for (const auto& c : correspondence_candidates(p, samples)) add(c);
+      std::vector<z3::expr> kept = product_houdini(p, std::move(cands), limits, meter);
+      checker::Watchdog watchdog(ctx, limits);
+      z3::expr_vector all(ctx);
+      for (const auto& c : kept) all.push_back(c);
+      k = good_from(p, z3::mk_and(all), limits, meter);
+      out.invariant = std::move(kept);
+    }
     r.work = meter.spent();
     r.seconds = checker::seconds_since(start);
     if (!k) {

@@ -41,7 +41,9 @@ struct Correspondence {
 };
 
 // Houdini over the candidates (those above and the checker's mined ones, with
-// the runs `o` describes), then `good` from what is kept.
+// the runs `o` describes), then `good` from what is kept; in two rounds, the
+// second with the checker's clauses over pairs of Booleans, only when `good`
+// does not follow from the first's.
 Correspondence prove_by_correspondence(const checker::SafetyProblem& p, const Samples& samples,
                                        const checker::Limits& limits, const SamplingOptions& o = {});
 

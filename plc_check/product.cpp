@@ -1,6 +1,7 @@
 // The matrix and the program in one transition system (docs/plc.md "Relations").
 #include "plc_check/product.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "plc_encoder/encode.hpp"
@@ -115,11 +116,17 @@ class Binder {
 const char* to_string(Relation r) { return r == Relation::Equal ? "equal" : "safe-side"; }
 
 std::shared_ptr<ProductProblem> build_product(z3::context& ctx, const model::Matrix& m, const plc::Program& program,
-                                              const plc::Pou& pou, const ResolvedMap& map, const OutputQuestion& q,
-                                              Relation relation) {
+                                              const plc::Pou& pou, const ResolvedMap& map,
+                                              const std::vector<OutputQuestion>& qs, Relation relation) {
+  if (qs.empty()) throw std::logic_error("a product without a question");
   auto p = std::shared_ptr<ProductProblem>(
-      new ProductProblem{nullptr, {}, {}, ctx.bool_val(false), ctx.bool_val(false), {nullptr, ctx.bool_val(true), ctx.bool_val(true)}});
-  p->matrix = encoder::encode(ctx, m, {model::Node{model::Node::Kind::Effect, q.effect}});
+      new ProductProblem{nullptr, {}, {}, ctx.bool_val(false), ctx.bool_val(false), {}, {nullptr, ctx.bool_val(true), ctx.bool_val(true)}});
+  std::vector<model::Node> roots;
+  for (const auto& q : qs) {
+    const model::Node n{model::Node::Kind::Effect, q.effect};
+    if (std::none_of(roots.begin(), roots.end(), [&](const model::Node& r) { return r.id == n.id; })) roots.push_back(n);
+  }
+  p->matrix = encoder::encode(ctx, m, roots);
   auto& ts = p->matrix->ts;
   const plc_encoder::ProgramSystem sys = plc_encoder::encode(ctx, program, pou, map.scan_ms, kProgramPrefix);
   for (float v : sys.real_literals) ts.float_const(v);
@@ -138,30 +145,35 @@ std::shared_ptr<ProductProblem> build_product(z3::context& ctx, const model::Mat
     ts.set_init(v, s.init);
     ts.assign_next(v, z3::expr(s.next).substitute(from, to));
   }
-  const std::string key = "effect[" + std::to_string(q.effect) + "].tag[" + std::to_string(q.position) + "]";
-  const auto matrix_out = ts.term(key);
-  if (!matrix_out) throw std::logic_error("the encoding has no " + key);
-  p->matrix_output = *matrix_out;
-  bool found = false;
-  for (const auto& o : sys.outputs)
-    if (same(o.variable, q.variable)) {
-      p->program_output = z3::expr(o.term).substitute(from, to);
-      found = true;
+  z3::expr_vector goods(ctx);
+  for (const auto& q : qs) {
+    const std::string key = "effect[" + std::to_string(q.effect) + "].tag[" + std::to_string(q.position) + "]";
+    const auto matrix_out = ts.term(key);
+    if (!matrix_out) throw std::logic_error("the encoding has no " + key);
+    std::optional<z3::expr> program_out;
+    for (const auto& o : sys.outputs)
+      if (same(o.variable, q.variable)) program_out = z3::expr(o.term).substitute(from, to);
+    if (!program_out) throw std::logic_error("the program has no output " + q.variable);
+    const std::string name = std::string(kProgramPrefix) + "out." + q.variable;
+    if (!ts.term(name)) ts.name_term(name, *program_out);
+    if (&q == &qs.front()) {
+      p->matrix_output = *matrix_out;
+      p->program_output = *program_out;
     }
-  if (!found) throw std::logic_error("the program has no output " + q.variable);
-  ts.name_term(std::string(kProgramPrefix) + "out." + q.variable, p->program_output);
-  const z3::expr safe = ctx.bool_val(q.ett);
-  const z3::expr good = relation == Relation::Equal ? p->program_output == p->matrix_output
-                                                    : z3::implies(p->matrix_output == safe, p->program_output == safe);
-  p->problem = checker::SafetyProblem{&ts, good, binder.assumption()};
+    const z3::expr safe = ctx.bool_val(q.ett);
+    p->goods.push_back(relation == Relation::Equal ? *program_out == *matrix_out
+                                                   : z3::implies(*matrix_out == safe, *program_out == safe));
+    goods.push_back(p->goods.back());
+  }
+  p->problem = checker::SafetyProblem{&ts, z3::mk_and(goods), binder.assumption()};
   ts.check_complete();
   return p;
 }
 
 checker::ProblemFactory product_factory(const model::Matrix& m, const plc::Program& program, const plc::Pou& pou,
-                                        const ResolvedMap& map, const OutputQuestion& q, Relation relation) {
-  return [&m, &program, &pou, &map, q, relation](z3::context& ctx) {
-    auto p = build_product(ctx, m, program, pou, map, q, relation);
+                                        const ResolvedMap& map, std::vector<OutputQuestion> qs, Relation relation) {
+  return [&m, &program, &pou, &map, qs = std::move(qs), relation](z3::context& ctx) {
+    auto p = build_product(ctx, m, program, pou, map, qs, relation);
     checker::OwnedProblem owned{p, p->problem};
     return owned;
   };

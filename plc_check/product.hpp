@@ -55,21 +55,25 @@ struct ProductProblem {
     std::optional<double> held;  // the value the map holds it at
   };
   std::vector<ProgramInput> program_inputs;
-  z3::expr program_output;
+  z3::expr program_output;  // of the first question
   z3::expr matrix_output;
-  checker::SafetyProblem problem;
+  std::vector<z3::expr> goods;  // each question's relation, in their order
+  checker::SafetyProblem problem;  // good: every question's relation
 };
 
 // The names the product gives the program's state (prefix of every program
 // variable) and a program input that reads a tag outside the cone.
 inline constexpr const char* kProgramPrefix = "plc.";
 
+// The product of several questions at once: the matrix's cones of their
+// effects, the whole program, and the conjunction of their relations as the
+// property (the product whose correspondence every output shares).
 std::shared_ptr<ProductProblem> build_product(z3::context& ctx, const model::Matrix& m, const plc::Program& program,
-                                              const plc::Pou& pou, const ResolvedMap& map, const OutputQuestion& q,
-                                              Relation relation);
+                                              const plc::Pou& pou, const ResolvedMap& map,
+                                              const std::vector<OutputQuestion>& qs, Relation relation);
 
-// The question's factory for the checker's engines (a fresh context each).
+// The factory for the checker's engines (a fresh context each).
 checker::ProblemFactory product_factory(const model::Matrix& m, const plc::Program& program, const plc::Pou& pou,
-                                        const ResolvedMap& map, const OutputQuestion& q, Relation relation);
+                                        const ResolvedMap& map, std::vector<OutputQuestion> qs, Relation relation);
 
 }  // namespace cemv::plc_check

@@ -1,0 +1,87 @@
+// Houdini on a product's Bool and Int state (houdini.hpp).
+#include "plc_check/houdini.hpp"
+
+#include <optional>
+#include <string>
+
+#include "checker/engines/invariants.hpp"
+#include "encoder/unroller.hpp"
+
+namespace cemv::plc_check {
+
+namespace {
+
+bool has_floats(const encoder::TransitionSystem& ts) {
+  for (const auto& v : ts.statevars())
+    if (v.var.is_fpa()) return true;
+  for (const auto& v : ts.inputvars())
+    if (v.var.is_fpa()) return true;
+  return false;
+}
+
+// A candidate, its copy at the cycle that decides it (0 for initiation, 1 for
+// consecution) and its activation literal in cycle 0 (consecution only).
+struct Candidate {
+  z3::expr term;
+  z3::expr decided;
+  std::optional<z3::expr> literal;
+};
+
+// Drops, in order, the candidates false in a model until the check is unsat;
+// each round's "some candidate is false" behind a fresh literal.
+void drop_until_unsat(z3::solver& s, std::vector<Candidate>& cands, const checker::Limits& limits,
+                      checker::WorkMeter& meter) {
+  z3::context& ctx = s.ctx();
+  for (int round = 0; !cands.empty(); ++round) {
+    if (limits.interrupted()) throw checker::Stopped{checker::UnknownReason::TimeLimit};
+    z3::expr_vector some_false(ctx);
+    for (const auto& c : cands) some_false.push_back(!c.decided);
+    const z3::expr this_round = ctx.bool_const(("plc.houdini.round." + std::to_string(round)).c_str());
+    s.add(z3::implies(this_round, z3::mk_or(some_false)));
+    z3::expr_vector assume(ctx);
+    assume.push_back(this_round);
+    for (const auto& c : cands)
+      if (c.literal) assume.push_back(*c.literal);
+    const z3::check_result r = checker::check_within(s, meter, assume);
+    if (r == z3::unsat) return;
+    if (r == z3::unknown) throw checker::Stopped{checker::unknown_reason(s.reason_unknown(), limits, meter)};
+    const z3::model m = s.get_model();
+    std::vector<Candidate> keep;
+    for (auto& c : cands)
+      if (m.eval(c.decided, true).is_true()) keep.push_back(std::move(c));
+    s.add(!this_round);
+    cands = std::move(keep);
+  }
+}
+
+}  // namespace
+
+std::vector<z3::expr> product_houdini(const checker::SafetyProblem& p, std::vector<z3::expr> candidates,
+                                      const checker::Limits& limits, checker::WorkMeter& meter) {
+  const auto& ts = *p.ts;
+  if (has_floats(ts)) return checker::houdini(p, std::move(candidates), limits, meter);
+  z3::context& ctx = ts.ctx();
+  encoder::Unroller u(ts);
+  checker::Watchdog watchdog(ctx, limits);
+  std::vector<Candidate> cands;
+  for (const auto& c : candidates) cands.push_back(Candidate{c, u.at(c, 0), std::nullopt});
+  {
+    z3::solver s(ctx, "QF_LIA");
+    s.add(u.at(ts.init_formula(), 0));
+    drop_until_unsat(s, cands, limits, meter);
+  }
+  z3::solver s(ctx, "QF_LIA");
+  s.add(u.at(ts.constraint_formula() && p.assumption && ts.trans_formula(), 0));
+  for (std::size_t i = 0; i < cands.size(); ++i) {
+    const z3::expr l = ctx.bool_const(("plc.houdini.cand." + std::to_string(i)).c_str());
+    s.add(z3::implies(l, cands[i].decided));
+    cands[i].literal = l;
+    cands[i].decided = u.at(cands[i].term, 1);
+  }
+  drop_until_unsat(s, cands, limits, meter);
+  std::vector<z3::expr> kept;
+  for (const auto& c : cands) kept.push_back(c.term);
+  return kept;
+}
+
+}  // namespace cemv::plc_check

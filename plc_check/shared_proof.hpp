@@ -1,0 +1,37 @@
+// One correspondence for the whole product (docs/plc.md "How an equality is
+// proved"): the matrix's cones of every output tag and the whole program in
+// one system, sampled once, its correspondence invariant found once by
+// Houdini, every output's relation following from it, the proof re-checked
+// once in a fresh context. A program that computes the matrix's outputs is
+// proved this way at the cost of one output's proof on a wider product
+// instead of one per output; when the conjunction does not follow (some
+// output differs, or its proof needs more), each output is decided alone.
+#pragma once
+
+#include "model/matrix.hpp"
+#include "plc/ast.hpp"
+#include "plc_check/check.hpp"
+#include "plc_check/map.hpp"
+#include "plc_check/sampling.hpp"
+
+namespace cemv::plc_check {
+
+struct SharedProof {
+  bool proved = false;  // every output's relation, with the invariant and k
+  int k = 0;
+};
+
+// The proof of every question of `m` at once, within `options.work` per
+// output tag. Found once per process for the same matrix, program, POU, map,
+// relation and budgets, by whichever output asks first (the others wait for
+// it): the answer depends on none of them. Throws checker::Interrupted when
+// the asker's limits end it (nothing is kept then), checker::InternalError
+// when its re-check fails.
+SharedProof shared_proof(const model::Matrix& m, const plc::Program& program, const plc::Pou& pou,
+                         const ResolvedMap& map, const CheckOptions& options);
+
+// The plant at rest for a product's inputs: each tag (named "input.TAG" on
+// both sides) at its scenario default, good quality, no command.
+SamplingOptions at_rest(const model::Matrix& m);
+
+}  // namespace cemv::plc_check
