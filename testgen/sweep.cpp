@@ -60,6 +60,56 @@ void start_after(encoder::Encoding& enc, const std::vector<model::CycleInput>& p
   }
 }
 
+// Every open target the solver's model reaches, then each other one in
+// catalogue order that the same run can reach as well (its literal added to
+// those kept, one incremental call each); `reached` gets their indices. The
+// model of the last satisfiable call.
+z3::model keep_compatible(z3::solver& s, checker::WorkMeter& meter, const std::vector<std::optional<z3::expr>>& lit,
+                          const std::vector<std::optional<z3::expr>>& target, std::vector<std::size_t>& reached) {
+  z3::model model = s.get_model();
+  std::vector<z3::expr> kept;
+  for (std::size_t i = 0; i < lit.size(); ++i)
+    if (lit[i] && model.eval(*target[i], true).is_true()) {
+      kept.push_back(*lit[i]);
+      reached.push_back(i);
+    }
+  for (std::size_t i = 0; i < lit.size(); ++i) {
+    if (!lit[i] || model.eval(*target[i], true).is_true()) continue;
+    z3::expr_vector more(s.ctx());  // a fresh vector: z3's copies share theirs
+    for (const auto& e : kept) more.push_back(e);
+    more.push_back(*lit[i]);
+    const z3::check_result c = checker::check_within(s, meter, more);
+    if (c == z3::unknown) break;  // the work left goes to the witness as found so far
+    if (c != z3::sat) continue;
+    model = s.get_model();
+    kept.push_back(*lit[i]);
+    reached.push_back(i);
+  }
+  return model;
+}
+
+// The question's system: the union of the cones, every target's monitor
+// compiled in, the state the prefix leaves as the initial state.
+struct Built {
+  std::shared_ptr<encoder::Encoding> enc;
+  std::vector<properties::Monitor> monitors;
+  z3::expr assumption;
+  std::vector<bool> open;  // the targets asked
+};
+
+Built build(z3::context& ctx, const model::Matrix& m, const SweepQuestion& q, const model::CycleInput& hold) {
+  std::shared_ptr<encoder::Encoding> enc = encoder::encode(ctx, m, q.roots);
+  std::vector<properties::Monitor> monitors;
+  for (const properties::Property* p : q.targets) monitors.push_back(properties::compile_monitor(*enc, *p, q.file->assumptions));
+  const z3::expr assumption = monitors.front().assumption && input_ranges(m, *enc, hold);
+  start_after(*enc, q.prefix);
+  // Only the targets that share the first one's assumptions are asked: one
+  // unrolling assumes one thing in every cycle.
+  std::vector<bool> open(monitors.size());
+  for (std::size_t i = 0; i < monitors.size(); ++i) open[i] = z3::eq(monitors[i].assumption, monitors.front().assumption);
+  return Built{std::move(enc), std::move(monitors), assumption, std::move(open)};
+}
+
 }  // namespace
 
 SweepAnswer sweep(const model::Matrix& m, const TestgenOptions& options, const SweepQuestion& q) {
@@ -67,17 +117,13 @@ SweepAnswer sweep(const model::Matrix& m, const TestgenOptions& options, const S
   if (q.targets.empty()) return out;
   checker::PooledContext pooled;
   z3::context& ctx = pooled;
-  std::shared_ptr<encoder::Encoding> enc = encoder::encode(ctx, m, q.roots);
-  std::vector<properties::Monitor> monitors;
-  for (const properties::Property* p : q.targets) monitors.push_back(properties::compile_monitor(*enc, *p, q.file->assumptions));
   const model::CycleInput hold = q.prefix.empty() ? model::default_cycle_input(m) : q.prefix.back();
-  const z3::expr assumption = monitors.front().assumption && input_ranges(m, *enc, hold);
-  start_after(*enc, q.prefix);
+  const Built b = build(ctx, m, q, hold);
+  const std::shared_ptr<encoder::Encoding>& enc = b.enc;
+  const std::vector<properties::Monitor>& monitors = b.monitors;
+  const z3::expr& assumption = b.assumption;
+  const std::vector<bool>& open = b.open;
   const encoder::TransitionSystem& ts = enc->ts;
-  // Only the targets that share the first one's assumptions are asked: one
-  // unrolling assumes one thing in every cycle.
-  std::vector<bool> open(monitors.size());
-  for (std::size_t i = 0; i < monitors.size(); ++i) open[i] = z3::eq(monitors[i].assumption, monitors.front().assumption);
 
   checker::Limits limits;
   limits.cancel = options.cancel;
@@ -113,27 +159,10 @@ SweepAnswer sweep(const model::Matrix& m, const TestgenOptions& options, const S
         break;
       }
       if (cr == z3::sat) {
-        // Every open target the model reaches, then each other one in
-        // catalogue order that the same run can reach as well.
-        z3::model model = s.get_model();
-        std::vector<z3::expr> kept;
+        std::vector<std::optional<z3::expr>> reached_at(monitors.size());
         for (std::size_t i = 0; i < monitors.size(); ++i)
-          if (lit[i] && model.eval(!u.at(monitors[i].good, k), true).is_true()) {
-            kept.push_back(*lit[i]);
-            out.reached.push_back(i);
-          }
-        for (std::size_t i = 0; i < monitors.size(); ++i) {
-          if (!lit[i] || model.eval(!u.at(monitors[i].good, k), true).is_true()) continue;
-          z3::expr_vector more(ctx);  // a fresh vector: z3's copies share theirs
-          for (const auto& e : kept) more.push_back(e);
-          more.push_back(*lit[i]);
-          const z3::check_result c2 = checker::check_within(s, meter, more);
-          if (c2 == z3::unknown) break;  // the work left goes to the witness as found so far
-          if (c2 != z3::sat) continue;
-          model = s.get_model();
-          kept.push_back(*lit[i]);
-          out.reached.push_back(i);
-        }
+          if (lit[i]) reached_at[i] = !u.at(monitors[i].good, k);
+        z3::model model = keep_compatible(s, meter, lit, reached_at, out.reached);
         std::sort(out.reached.begin(), out.reached.end());
         found = checker::trace_from_model(ts, u, model, k);
         break;
