@@ -23,6 +23,7 @@
 #include "testgen/explore.hpp"
 #include "testgen/scenario_writer.hpp"
 #include "testgen/search.hpp"
+#include "testgen/sweep.hpp"
 #include "testgen/testgen.hpp"
 
 namespace cemv::testgen {
@@ -36,7 +37,6 @@ struct Draft {
   int sif = 0;
   std::vector<model::CycleInput> inputs;
   std::vector<model::Node> roots;
-  checker::ConcreteTrace trace;
   std::vector<std::pair<std::size_t, std::size_t>> witnesses;  // (cycle, objective index)
   bool simulates = false;  // some cycle forces a tag (simulate_tag): only `simulates` objectives follow
 };
@@ -54,6 +54,10 @@ std::vector<model::Node> merge(std::vector<model::Node> a, const std::vector<mod
   a.erase(std::unique(a.begin(), a.end()), a.end());
   return a;
 }
+
+// Cycles a sweep adds to a test at most (testgen/sweep.hpp); objectives
+// whose witness needs half of them or more (timers) are searched alone.
+constexpr int kSweepDepth = 16;
 
 class GroupRun {
  public:
@@ -80,11 +84,15 @@ class GroupRun {
 
  private:
   void decide_all() {
+    sweep_all();
     for (std::size_t i : members_) {
       if (results_[i].status == ObjectiveStatus::Covered) continue;
       const properties::Property& p = file_.properties[i];
       t0_ = std::chrono::steady_clock::now();
-      Goal g{&file_, &p, properties::property_roots(p, file_.assumptions, m_), results_[i].objective.horizon};
+      Goal g{&file_, &p, roots_of(i), results_[i].objective.horizon};
+      // What the sweep could not reach within its depth waits for a timer
+      // in its cone, most likely: accelerated BMC (macro steps) goes first.
+      if (swept_.count(i)) g.horizon = std::max(g.horizon, timer_horizon(g.roots));
       // A `reference` objective is infeasible wherever no forcing interrupts
       // the reference: proved first, so that no search budget is spent on it.
       if (results_[i].objective.simulates && proved(i, g)) continue;
@@ -122,6 +130,83 @@ class GroupRun {
       }
       announce(res);
     }
+  }
+
+  // The group's objectives of short horizon on one incremental BMC a
+  // question (testgen/sweep.hpp): the open test is extended by the shortest
+  // run that reaches any of them, with every other one the same run can
+  // reach as well, again and again; when none is within reach of its end, a
+  // new test starts from start-up. What no sweep reaches is taken one
+  // objective at a time below (long timers, any float, simulation, proof).
+  void sweep_all() {
+    std::set<std::size_t> left_out;  // reached by a sweep but not witnessed on the runtime
+    for (;;) {
+      std::vector<std::size_t> pending;
+      for (std::size_t i : members_) {
+        const ObjectiveResult& r = results_[i];
+        if (r.status != ObjectiveStatus::Undecided || !r.reason.empty() || r.objective.simulates ||
+            r.objective.horizon >= kSweepDepth / 2 || left_out.count(i))
+          continue;
+        pending.push_back(i);
+        swept_.insert(i);
+      }
+      if (pending.empty()) return;
+      t0_ = std::chrono::steady_clock::now();
+      detail::SweepQuestion q;
+      q.file = &file_;
+      q.max_depth = kSweepDepth;
+      // A question that reaches nothing spends all of its budget: a few
+      // objectives left get a small one, many a whole objective's.
+      q.budget = std::min<checker::Work>(options_.objective_work,
+                                         pending.size() * std::max<checker::Work>(1, options_.objective_work / 32));
+      for (std::size_t i : pending) {
+        q.targets.push_back(&file_.properties[i]);
+        q.roots = merge(std::move(q.roots), roots_of(i));
+      }
+      if (room(pending.front())) {
+        Draft& d = drafts_.back();
+        q.prefix = d.inputs;
+        q.roots = merge(std::move(q.roots), d.roots);
+        detail::SweepAnswer a = detail::sweep(m_, options_, q);
+        if (!a.cycles.empty()) {
+          const std::size_t target = pending[a.reached.front()];
+          std::vector<model::CycleInput> all = d.inputs;
+          all.insert(all.end(), a.cycles.begin(), a.cycles.end());
+          if (adopt(d, std::move(all), target, "bmc")) {
+            d.roots = q.roots;
+            continue;
+          }
+        }
+        q.prefix.clear();
+      }
+      detail::SweepAnswer a = detail::sweep(m_, options_, q);
+      if (a.cycles.empty()) return;
+      const std::size_t target = pending[a.reached.front()];
+      SearchResult r;
+      r.kind = SearchResult::Kind::Found;
+      r.cycles = std::move(a.cycles);
+      r.method = "bmc";
+      Goal g{&file_, &file_.properties[target], q.roots, results_[target].objective.horizon};
+      if (!start(target, g, r)) left_out.insert(target);
+    }
+  }
+
+  // The longest on-delay of the causes in a cone, in cycles, and one more.
+  int timer_horizon(const std::vector<model::Node>& roots) const {
+    int h = 0;
+    for (const auto& n : roots) {
+      const model::Cause* c = n.kind == model::Node::Kind::Cause ? m_.find_cause(n.id) : nullptr;
+      if (c && c->time.mode == model::TimeMode::OnDelay)
+        h = std::max(h, static_cast<int>((c->time.ms + m_.cycle_ms - 1) / m_.cycle_ms) + 1);
+    }
+    return h;
+  }
+
+  const std::vector<model::Node>& roots_of(std::size_t i) {
+    auto it = roots_.find(i);
+    if (it == roots_.end())
+      it = roots_.emplace(i, properties::property_roots(file_.properties[i], file_.assumptions, m_)).first;
+    return it->second;
   }
 
   bool proved(std::size_t i, const Goal& g) {
@@ -193,7 +278,12 @@ class GroupRun {
     checker::ConcreteTrace t = checker::run_on_runtime(m_, inputs);
     properties::Trace trace;
     trace.reserve(t.inputs.size());
-    for (std::size_t k = 0; k < t.inputs.size(); ++k) trace.push_back({t.inputs[k], t.observables[k]});
+    // The run is judged and dropped: a test keeps its inputs only, so what
+    // generating it holds is bounded by one test (its run is made again
+    // when the suite is written).
+    for (std::size_t k = 0; k < t.inputs.size(); ++k)
+      trace.push_back({std::move(t.inputs[k]), std::move(t.observables[k])});
+    t = checker::ConcreteTrace{};
     properties::Evaluator ev(m_);
     auto witness = [&](std::size_t i) -> std::optional<std::size_t> {
       auto e = ev.evaluate(file_.properties[i], file_.assumptions, trace);
@@ -204,7 +294,6 @@ class GroupRun {
     if (!w) return false;
     d.simulates = forces(inputs);
     d.inputs = std::move(inputs);
-    d.trace = std::move(t);
     for (std::size_t i : members_) {
       ObjectiveResult& r = results_[i];
       if (r.status == ObjectiveStatus::Covered || r.status == ObjectiveStatus::Infeasible) continue;
@@ -311,6 +400,8 @@ class GroupRun {
   std::mutex& report_;
   detail::Searcher search_;
   std::vector<Draft> drafts_;
+  std::map<std::size_t, std::vector<model::Node>> roots_;  // each objective's cone
+  std::set<std::size_t> swept_;                            // asked of a sweep
   bool open_ = false;
   std::chrono::steady_clock::time_point t0_ = std::chrono::steady_clock::now();
 };
@@ -421,9 +512,10 @@ TestSuite generate_tests(const model::Matrix& m, const TestgenOptions& options) 
         t.objectives.push_back(r.objective.id);
       }
       for (const auto& c : cps) t.checkpoints.push_back(c.cycle);
-      t.inputs = dr.inputs;
+      const checker::ConcreteTrace run = checker::run_on_runtime(m, dr.inputs);
       t.scenario_json = detail::test_scenario_json(m, options.matrix_ref, t.description, dr.inputs,
-                                                   dr.trace.observables, cps, t.steps, t.field_steps);
+                                                   run.observables, cps, t.steps, t.field_steps);
+      t.inputs = std::move(dr.inputs);
       suite.total_steps += t.steps;
       suite.total_cycles += t.inputs.size();
       suite.tests.push_back(std::move(t));

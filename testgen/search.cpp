@@ -62,10 +62,12 @@ checker::ProblemFactory problem(const model::Matrix& m, const Goal& g, const std
   return checker::property_problem(m, *g.file, *g.property, o);
 }
 
+}  // namespace
+
 // Inputs keep their value unless the objective needs otherwise: the end of
 // the prefix (held), or the plant at rest (scenario defaults, good quality);
 // no operator command.
-checker::PreferredValue preferred(const encoder::Encoding& enc, const model::CycleInput& hold) {
+checker::PreferredValue held_inputs(const encoder::Encoding& enc, const model::CycleInput& hold) {
   auto values = std::make_shared<std::unordered_map<std::string, checker::Value>>();
   for (std::size_t i = 0; i < enc.tag_value.size() && i < hold.tags.size(); ++i) {
     if (enc.tag_value[i]) {
@@ -92,7 +94,19 @@ checker::PreferredValue preferred(const encoder::Encoding& enc, const model::Cyc
   };
 }
 
-}  // namespace
+std::vector<model::CycleInput> witness_inputs(const checker::Trace& t, const encoder::Encoding& enc,
+                                             const model::Matrix& m, const model::CycleInput& hold) {
+  std::vector<model::CycleInput> cycles = checker::cycle_inputs(t, enc, m);
+  // Tags outside the cone keep what the test last gave them (cycle_inputs
+  // sets them to the defaults, which nothing encoded reads).
+  for (auto& in : cycles)
+    for (std::size_t i = 0; i < in.tags.size() && i < enc.tag_value.size(); ++i) {
+      if (in.tags[i].value == 0.0f) in.tags[i].value = 0.0f;  // -0 reads as 0 in every comparison (C.3)
+      if (!enc.tag_value[i]) in.tags[i].value = hold.tags[i].value;
+      if (!enc.tag_bad[i]) in.tags[i].bad_quality = hold.tags[i].bad_quality;
+    }
+  return cycles;
+}
 
 SearchResult Searcher::find(const Goal& g, const std::vector<model::CycleInput>& prefix, checker::Work budget) const {
   // First with the values an engineer sets (fast, readable), then any float.
@@ -147,17 +161,9 @@ SearchResult Searcher::find_once(const Goal& g, const std::vector<model::CycleIn
   }
   const model::CycleInput hold = prefix.empty() ? model::default_cycle_input(m_) : prefix.back();
   checker::Trace readable =
-      checker::shrink_trace(op.problem, r.cex, preferred(enc, hold), limits.with_work(options_.shrink_work));
+      checker::shrink_trace(op.problem, r.cex, held_inputs(enc, hold), limits.with_work(options_.shrink_work));
   checker::stop_if_interrupted(limits);
-  out.cycles = checker::cycle_inputs(readable, enc, m_);
-  // Tags outside the cone keep what the test last gave them (cycle_inputs
-  // sets them to the defaults, which nothing encoded reads).
-  for (auto& in : out.cycles)
-    for (std::size_t i = 0; i < in.tags.size() && i < enc.tag_value.size(); ++i) {
-      if (in.tags[i].value == 0.0f) in.tags[i].value = 0.0f;  // -0 reads as 0 in every comparison (C.3)
-      if (!enc.tag_value[i]) in.tags[i].value = hold.tags[i].value;
-      if (!enc.tag_bad[i]) in.tags[i].bad_quality = hold.tags[i].bad_quality;
-    }
+  out.cycles = witness_inputs(readable, enc, m_, hold);
   out.kind = SearchResult::Kind::Found;
   out.method = r.method_text();
   return out;

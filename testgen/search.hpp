@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "checker/shrink.hpp"
+#include "encoder/encode.hpp"
 #include "model/matrix.hpp"
 #include "model/node.hpp"
 #include "model/vocabulary.hpp"
@@ -33,6 +35,13 @@ struct SearchResult {
   std::string method;
   std::string reason;
 };
+
+// Inputs keep their value unless the objective needs otherwise: `hold` (the
+// end of the prefix, or the plant at rest), no operator command.
+checker::PreferredValue held_inputs(const encoder::Encoding& enc, const model::CycleInput& hold);
+// An engine's witness as cycle inputs; tags outside the encoding keep `hold`.
+std::vector<model::CycleInput> witness_inputs(const checker::Trace& t, const encoder::Encoding& enc,
+                                             const model::Matrix& m, const model::CycleInput& hold);
 
 class Searcher {
  public:

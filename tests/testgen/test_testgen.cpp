@@ -1,6 +1,7 @@
 // The test generator on the examples: objectives are well-formed properties
 // with unique ids; a generated suite covers its objectives and replays green;
 // replay reports failures on a matrix the suite was not made for.
+#include <algorithm>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -15,6 +16,7 @@
 #include "properties/parser.hpp"
 #include "testgen/explore.hpp"
 #include "testgen/scenario_writer.hpp"
+#include "testgen/sweep.hpp"
 #include "testgen/checklist.hpp"
 #include "testgen/testgen.hpp"
 #include "tests/support/random_matrix.hpp"
@@ -249,6 +251,61 @@ TEST(Explore, FindsLongDelayWitnesses) {
     ASSERT_TRUE(e.holds && e.cycle) << id;
     EXPECT_EQ(*e.cycle + 1, r.cycles.size()) << id;
   }
+}
+
+// One incremental BMC for a group's objectives (testgen/sweep.hpp): from
+// start-up, the shortest run reaching any of the short objectives of
+// tank-overfill's SIF group 2 (cause 4 and its effect) reaches several at once, each confirmed by the runtime and the
+// concrete evaluator in the run's last cycle; continued from that run's end,
+// the next question reaches objectives the first did not, and the same
+// question gives the same run.
+TEST(Sweep, OneWitnessCoversSeveralObjectives) {
+  const model::Matrix m = example("tank-overfill");
+  std::vector<testgen::Objective> objs;
+  for (auto& o : testgen::derive_objectives(m))
+    if (o.sif == 2 && !o.simulates && o.horizon < 8) objs.push_back(o);
+  ASSERT_GE(objs.size(), 3u);
+  const auto file = testgen::objectives_file(objs);
+  testgen::detail::SweepQuestion q;
+  q.file = &file;
+  q.max_depth = 16;
+  q.budget = 20 * checker::kMega;
+  for (const auto& p : file.properties) {
+    q.targets.push_back(&p);
+    for (const auto& n : properties::property_roots(p, file.assumptions, m)) q.roots.push_back(n);
+  }
+  std::sort(q.roots.begin(), q.roots.end());
+  q.roots.erase(std::unique(q.roots.begin(), q.roots.end()), q.roots.end());
+  const testgen::TestgenOptions options;
+  auto witnessed = [&](const std::vector<model::CycleInput>& run, std::size_t i) {
+    const auto t = checker::run_on_runtime(m, run);
+    properties::Trace trace;
+    for (std::size_t k = 0; k < t.inputs.size(); ++k) trace.push_back({t.inputs[k], t.observables[k]});
+    const auto e = properties::Evaluator(m).evaluate(file.properties[i], file.assumptions, trace);
+    return e.holds && e.cycle && *e.cycle + 1 == run.size();
+  };
+  const auto first = testgen::detail::sweep(m, options, q);
+  ASSERT_FALSE(first.cycles.empty()) << first.reason;
+  EXPECT_GE(first.reached.size(), 2u);
+  for (std::size_t i : first.reached) EXPECT_TRUE(witnessed(first.cycles, i)) << objs[i].id;
+  const auto again = testgen::detail::sweep(m, options, q);
+  EXPECT_EQ(again.reached, first.reached);
+  EXPECT_EQ(again.cycles.size(), first.cycles.size());
+  // Continued: the objectives the first run reached are no longer asked.
+  testgen::detail::SweepQuestion next = q;
+  next.prefix = first.cycles;
+  next.targets.clear();
+  std::vector<std::size_t> index;
+  for (std::size_t i = 0; i < file.properties.size(); ++i)
+    if (std::find(first.reached.begin(), first.reached.end(), i) == first.reached.end()) {
+      next.targets.push_back(&file.properties[i]);
+      index.push_back(i);
+    }
+  const auto second = testgen::detail::sweep(m, options, next);
+  ASSERT_FALSE(second.cycles.empty()) << second.reason;
+  std::vector<model::CycleInput> run = first.cycles;
+  run.insert(run.end(), second.cycles.begin(), second.cycles.end());
+  for (std::size_t j : second.reached) EXPECT_TRUE(witnessed(run, index[j])) << objs[index[j]].id;
 }
 
 // A step holds its inputs for as many cycles as nothing changes: 10,000
