@@ -28,9 +28,10 @@ Clock::duration seconds(double s) {
 struct PropertyClock {
   double limit_s = 0.0;
   double used_s = 0.0;
-  Limits limits(const CancelToken& cancel) const {
+  Limits limits(const CancelToken& cancel, SolverSetup solvers) const {
     Limits l;
     l.cancel = &cancel;
+    l.solvers = solvers;
     if (limit_s > 0) l.deadline = Clock::now() + seconds(std::max(0.0, limit_s - used_s));
     return l;
   }
@@ -106,6 +107,7 @@ CheckResult check_properties(const model::Matrix& m, const std::vector<propertie
     for (std::size_t i : groups[g]) group.push_back(members[i]);
     Limits shared;
     shared.cancel = &cancel;
+    shared.solvers = options.solvers;
     std::vector<EarlyAnswer> early = ConeGroup(m, group, options).decide(shared);
     for (std::size_t k = 0; k < groups[g].size(); ++k) {
       Job& j = jobs[groups[g][k]];
@@ -114,7 +116,7 @@ CheckResult check_properties(const model::Matrix& m, const std::vector<propertie
         options.on_start(j.property->name);
       }
       j.checker = std::make_unique<PropertyChecker>(m, *j.file, *j.property, options, std::move(early[k]));
-      j.result = j.checker->decide(j.clock.limits(cancel));
+      j.result = j.checker->decide(j.clock.limits(cancel, options.solvers));
       j.clock.used_s += j.result->seconds;
       if (!j.checker->needs_vacuity(*j.result) && !j.checker->needs_support(*j.result)) report(j);
     }
@@ -135,7 +137,7 @@ CheckResult check_properties(const model::Matrix& m, const std::vector<propertie
     WitnessPool group;
     for (Job* j : open[g]) {
       const double before = j->result->seconds;
-      j->checker->settle_vacuity(*j->result, known, group, j->clock.limits(cancel));
+      j->checker->settle_vacuity(*j->result, known, group, j->clock.limits(cancel, options.solvers));
       j->vacuity_settled = true;
       j->clock.used_s += j->result->seconds - before;
       if (!j->checker->needs_support(*j->result)) report(*j);
@@ -153,7 +155,7 @@ CheckResult check_properties(const model::Matrix& m, const std::vector<propertie
   }
   queue.run(proofs.size(), [&](std::size_t g) {
     for (Job* j : proofs[g]) {
-      j->checker->find_support(*j->result, j->clock.limits(cancel));
+      j->checker->find_support(*j->result, j->clock.limits(cancel, options.solvers));
       report(*j);
     }
   });
