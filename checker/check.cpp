@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "checker/cone_group.hpp"
+#include "checker/group_support.hpp"
 #include "checker/property_checker.hpp"
 #include "checker/work_queue.hpp"
 #include "formats/matrix_json.hpp"
@@ -144,19 +145,44 @@ CheckResult check_properties(const model::Matrix& m, const std::vector<propertie
     }
   });
 
-  // 3. Support, a cone group at a time as the decisions were, each member's
-  // from its own proof (checker/property_support.cpp).
-  std::vector<std::vector<Job*>> proofs;
-  for (const auto& members : open) {
-    std::vector<Job*> group;
-    for (Job* j : members)
-      if (!j->done && j->checker->needs_support(*j->result)) group.push_back(j);
-    if (!group.empty()) proofs.push_back(std::move(group));
-  }
-  queue.run(proofs.size(), [&](std::size_t g) {
-    for (Job* j : proofs[g]) {
-      j->checker->find_support(*j->result, j->clock.limits(cancel, options.solvers));
-      report(*j);
+  // 3. Support, a cone group at a time as the decisions were: the unsat
+  // cores of the group's proofs on one guarded encoding of its cone
+  // (checker/group_support.hpp), then each member's support from its core,
+  // re-checked by its own checker (checker/property_support.cpp).
+  std::vector<std::size_t> with_proofs;
+  for (std::size_t g = 0; g < open.size(); ++g)
+    for (Job* j : open[g])
+      if (!j->done && j->checker->needs_support(*j->result)) {
+        with_proofs.push_back(g);
+        break;
+      }
+  queue.run(with_proofs.size(), [&](std::size_t n) {
+    const std::size_t g = with_proofs[n];
+    std::vector<GroupMember> group;
+    std::vector<SupportQuestion> questions;
+    std::vector<Job*> asked;
+    for (std::size_t k = 0; k < groups[g].size(); ++k) {
+      Job& j = jobs[groups[g][k]];
+      group.push_back(members[groups[g][k]]);
+      if (j.done || !j.checker || !j.result || !j.checker->needs_support(*j.result)) continue;
+      SupportQuestion q;
+      q.member = k;
+      q.proof = &*j.checker->proof();
+      for (const auto& d : j.checker->support_candidates()) q.keys.insert(d.element.key);
+      questions.push_back(std::move(q));
+      asked.push_back(&j);
+    }
+    // The group's question runs on the first member's clock; interrupted
+    // there, each member asks on its own encoding within its own.
+    std::vector<std::optional<SupportCore>> cores(questions.size());
+    try {
+      cores = group_support_cores(m, group, questions, options, asked.front()->clock.limits(cancel, options.solvers));
+    } catch (const Interrupted&) {
+      if (cancel.cancelled()) throw;
+    }
+    for (std::size_t q = 0; q < asked.size(); ++q) {
+      asked[q]->checker->find_support(*asked[q]->result, asked[q]->clock.limits(cancel, options.solvers), cores[q]);
+      report(*asked[q]);
     }
   });
 
