@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "checker/cone_group.hpp"
+#include "checker/group_support.hpp"
 #include "checker/property_checker.hpp"
 #include "checker/work_queue.hpp"
 #include "formats/matrix_json.hpp"
@@ -28,9 +29,10 @@ Clock::duration seconds(double s) {
 struct PropertyClock {
   double limit_s = 0.0;
   double used_s = 0.0;
-  Limits limits(const CancelToken& cancel) const {
+  Limits limits(const CancelToken& cancel, SolverSetup solvers) const {
     Limits l;
     l.cancel = &cancel;
+    l.solvers = solvers;
     if (limit_s > 0) l.deadline = Clock::now() + seconds(std::max(0.0, limit_s - used_s));
     return l;
   }
@@ -106,6 +108,7 @@ CheckResult check_properties(const model::Matrix& m, const std::vector<propertie
     for (std::size_t i : groups[g]) group.push_back(members[i]);
     Limits shared;
     shared.cancel = &cancel;
+    shared.solvers = options.solvers;
     std::vector<EarlyAnswer> early = ConeGroup(m, group, options).decide(shared);
     for (std::size_t k = 0; k < groups[g].size(); ++k) {
       Job& j = jobs[groups[g][k]];
@@ -114,7 +117,7 @@ CheckResult check_properties(const model::Matrix& m, const std::vector<propertie
         options.on_start(j.property->name);
       }
       j.checker = std::make_unique<PropertyChecker>(m, *j.file, *j.property, options, std::move(early[k]));
-      j.result = j.checker->decide(j.clock.limits(cancel));
+      j.result = j.checker->decide(j.clock.limits(cancel, options.solvers));
       j.clock.used_s += j.result->seconds;
       if (!j.checker->needs_vacuity(*j.result) && !j.checker->needs_support(*j.result)) report(j);
     }
@@ -135,26 +138,51 @@ CheckResult check_properties(const model::Matrix& m, const std::vector<propertie
     WitnessPool group;
     for (Job* j : open[g]) {
       const double before = j->result->seconds;
-      j->checker->settle_vacuity(*j->result, known, group, j->clock.limits(cancel));
+      j->checker->settle_vacuity(*j->result, known, group, j->clock.limits(cancel, options.solvers));
       j->vacuity_settled = true;
       j->clock.used_s += j->result->seconds - before;
       if (!j->checker->needs_support(*j->result)) report(*j);
     }
   });
 
-  // 3. Support, a cone group at a time as the decisions were, each member's
-  // from its own proof (checker/property_support.cpp).
-  std::vector<std::vector<Job*>> proofs;
-  for (const auto& members : open) {
-    std::vector<Job*> group;
-    for (Job* j : members)
-      if (!j->done && j->checker->needs_support(*j->result)) group.push_back(j);
-    if (!group.empty()) proofs.push_back(std::move(group));
-  }
-  queue.run(proofs.size(), [&](std::size_t g) {
-    for (Job* j : proofs[g]) {
-      j->checker->find_support(*j->result, j->clock.limits(cancel));
-      report(*j);
+  // 3. Support, a cone group at a time as the decisions were: the unsat
+  // cores of the group's proofs on one guarded encoding of its cone
+  // (checker/group_support.hpp), then each member's support from its core,
+  // re-checked by its own checker (checker/property_support.cpp).
+  std::vector<std::size_t> with_proofs;
+  for (std::size_t g = 0; g < open.size(); ++g)
+    for (Job* j : open[g])
+      if (!j->done && j->checker->needs_support(*j->result)) {
+        with_proofs.push_back(g);
+        break;
+      }
+  queue.run(with_proofs.size(), [&](std::size_t n) {
+    const std::size_t g = with_proofs[n];
+    std::vector<GroupMember> group;
+    std::vector<SupportQuestion> questions;
+    std::vector<Job*> asked;
+    for (std::size_t k = 0; k < groups[g].size(); ++k) {
+      Job& j = jobs[groups[g][k]];
+      group.push_back(members[groups[g][k]]);
+      if (j.done || !j.checker || !j.result || !j.checker->needs_support(*j.result)) continue;
+      SupportQuestion q;
+      q.member = k;
+      q.proof = &*j.checker->proof();
+      for (const auto& d : j.checker->support_candidates()) q.keys.insert(d.element.key);
+      questions.push_back(std::move(q));
+      asked.push_back(&j);
+    }
+    // The group's question runs on the first member's clock; interrupted
+    // there, each member asks on its own encoding within its own.
+    std::vector<std::optional<SupportCore>> cores(questions.size());
+    try {
+      cores = group_support_cores(m, group, questions, options, asked.front()->clock.limits(cancel, options.solvers));
+    } catch (const Interrupted&) {
+      if (cancel.cancelled()) throw;
+    }
+    for (std::size_t q = 0; q < asked.size(); ++q) {
+      asked[q]->checker->find_support(*asked[q]->result, asked[q]->clock.limits(cancel, options.solvers), cores[q]);
+      report(*asked[q]);
     }
   });
 

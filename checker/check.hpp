@@ -52,6 +52,11 @@ struct CheckOptions {
   SupportMode support_mode = SupportMode::Core;  // --support: how (checker/result.hpp)
   bool standard = false;            // the properties are the standard set
   CheckBudgets budgets;
+  // How every engine, re-check and support query of the run makes its Z3
+  // solvers and reads its work (checker/limits.hpp, docs/performance.md
+  // "Solver set-up"). SmtKernel by default: the same verdicts as
+  // DefaultSolver on the examples, at half the CPU of a standard set.
+  SolverSetup solvers = SolverSetup::SmtKernel;
   // The engines that decide each property, in order (empty = the
   // portfolio's default order). A caller that knows which answer to expect
   // (cemv response: a proof of T, a counterexample to T - 1) leaves out the

@@ -59,31 +59,25 @@ std::vector<std::string> space_tags(const RunSpace& space) {
 
 }  // namespace
 
-struct ConeGroup::Built {
-  std::shared_ptr<encoder::Encoding> enc;
-  std::optional<OwnedProblem> original;  // the group's encoding, the shared assumption
-  std::optional<OwnedProblem> reduced;
-  std::vector<z3::expr> goods;                       // reduced, one per member
-  std::vector<std::optional<z3::expr>> antecedents;  // reduced, one per member
-  std::vector<bool> shared;                          // the member's assumption is the group's
-};
-
 ConeGroup::ConeGroup(const model::Matrix& m, std::vector<GroupMember> members, const CheckOptions& options)
     : m_(m), members_(std::move(members)), options_(options) {
-  for (const auto& g : members_) {
-    roots_of_.push_back(properties::property_roots(*g.property, g.file->assumptions, m_));
-    for (const auto& n : roots_of_.back()) roots_.push_back(n);
-  }
-  std::sort(roots_.begin(), roots_.end());
-  roots_.erase(std::unique(roots_.begin(), roots_.end()), roots_.end());
+  for (const auto& g : members_) roots_of_.push_back(properties::property_roots(*g.property, g.file->assumptions, m_));
 }
 
-ConeGroup::Built ConeGroup::build(z3::context& ctx) const {
-  Built b;
-  b.enc = encoder::encode(ctx, m_, roots_);
-  if (options_.modify_encoding) options_.modify_encoding(*b.enc);
+GroupEncoding encode_group(z3::context& ctx, const model::Matrix& m, const std::vector<GroupMember>& members,
+                           const CheckOptions& options, bool guard_cells) {
+  std::vector<model::Node> roots;
+  for (const auto& g : members)
+    for (const auto& n : properties::property_roots(*g.property, g.file->assumptions, m)) roots.push_back(n);
+  std::sort(roots.begin(), roots.end());
+  roots.erase(std::unique(roots.begin(), roots.end()), roots.end());
+  GroupEncoding b;
+  encoder::EncodeOptions eo;
+  eo.guard_cells = guard_cells;
+  b.enc = encoder::encode(ctx, m, roots, eo);
+  if (options.modify_encoding) options.modify_encoding(*b.enc);
   std::vector<properties::Monitor> monitors;
-  for (const auto& g : members_) monitors.push_back(properties::compile_monitor(*b.enc, *g.property, g.file->assumptions));
+  for (const auto& g : members) monitors.push_back(properties::compile_monitor(*b.enc, *g.property, g.file->assumptions));
   // Analog inputs over the finite floats, as checker/property_problem states
   // every property's problem.
   z3::expr assumption = monitors.front().assumption;
@@ -96,6 +90,7 @@ ConeGroup::Built ConeGroup::build(z3::context& ctx) const {
   std::vector<z3::expr> terms;
   for (const auto& mon : monitors) {
     terms.push_back(mon.good);
+    b.original_goods.push_back(mon.good);
     b.shared.push_back(z3::eq(mon.assumption, monitors.front().assumption));
   }
   for (const auto& mon : monitors)
@@ -113,7 +108,7 @@ ConeGroup::Built ConeGroup::build(z3::context& ctx) const {
 std::vector<EarlyAnswer> ConeGroup::decide(const Limits& limits) {
   std::vector<EarlyAnswer> out(members_.size());
   PooledContext ctx;
-  Built b = build(ctx);
+  Built b = encode_group(ctx, m_, members_, options_);
   // What every member's own checker needs of the cone.
   ConeFacts facts;
   facts.preferred = plant_at_rest({{b.enc.get(), &m_}});
@@ -278,7 +273,7 @@ void ConeGroup::recheck(std::vector<EarlyAnswer>& out, const Limits& limits) con
   // Built again in a context that holds nothing of the engines' (the same
   // names in the same order: the invariants' text reads there).
   PooledContext ctx;
-  Built b = build(ctx);
+  Built b = encode_group(ctx, m_, members_, options_);
   for (std::size_t i = 0; i < out.size(); ++i)
     if (out[i].proof)
       check::recheck_proof(SafetyProblem{b.reduced->problem.ts, b.goods[i], b.reduced->problem.assumption},

@@ -23,6 +23,7 @@
 // on the number of workers.
 #pragma once
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -31,6 +32,7 @@
 #include "checker/prover.hpp"
 #include "checker/random_runs.hpp"
 #include "checker/shrink.hpp"
+#include "encoder/encode.hpp"
 #include "properties/ast.hpp"
 
 namespace cemv::checker {
@@ -57,6 +59,24 @@ struct EarlyAnswer {
   bool runs_tried = false;              // the group's random runs were judged for it
 };
 
+// The group's one encoding: its cone with every member's monitor compiled
+// in, in member order (the same names in every context, so an invariant's
+// text reads in each), and one reduction that keeps every member's `good`
+// and antecedent.
+struct GroupEncoding {
+  std::shared_ptr<encoder::Encoding> enc;
+  std::optional<OwnedProblem> original;  // the group's encoding, the shared assumption
+  std::optional<OwnedProblem> reduced;
+  std::vector<z3::expr> goods;                       // reduced, one per member
+  std::vector<z3::expr> original_goods;              // unreduced, one per member
+  std::vector<std::optional<z3::expr>> antecedents;  // reduced, one per member
+  std::vector<bool> shared;                          // the member's assumption is the group's
+};
+// `guard_cells`: each removable cell behind an activation literal
+// (encoder::EncodeOptions::guard_cells), for the support's core query.
+GroupEncoding encode_group(z3::context& ctx, const model::Matrix& m, const std::vector<GroupMember>& members,
+                           const CheckOptions& options, bool guard_cells = false);
+
 class ConeGroup {
  public:
   ConeGroup(const model::Matrix& m, std::vector<GroupMember> members, const CheckOptions& options);
@@ -64,8 +84,7 @@ class ConeGroup {
   std::vector<EarlyAnswer> decide(const Limits& limits);
 
  private:
-  struct Built;
-  Built build(z3::context& ctx) const;
+  using Built = GroupEncoding;
   void random_runs(std::vector<EarlyAnswer>& out, const Limits& limits) const;
   void prove(Built& b, std::vector<EarlyAnswer>& out, const Limits& limits) const;
   // `antecedents`: also the witnesses that proved members' antecedents can
@@ -76,7 +95,6 @@ class ConeGroup {
   const model::Matrix& m_;
   std::vector<GroupMember> members_;
   const CheckOptions& options_;
-  std::vector<model::Node> roots_;                 // every member's, the cone encoded
   std::vector<std::vector<model::Node>> roots_of_;  // each member's
 };
 

@@ -10,6 +10,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdint>
+#include <optional>
 
 #include <z3++.h>
 
@@ -43,6 +44,24 @@ class CancelToken {
   Clock::time_point deadline_ = Clock::time_point::max();
 };
 
+// How an engine makes its Z3 solvers and reads the work it spends
+// (docs/performance.md, "Solver set-up"). Both give answers that are checked
+// alike; they differ in what a budget of work buys, and in which of several
+// valid models and unsat cores Z3 returns, so a caller whose output is
+// committed byte for byte keeps the set-up it was made with.
+enum class SolverSetup {
+  // Z3's default solver, which pairs its SMT kernel with the tactic of a
+  // one-shot check (built at a solver's first check, about 10 ms in Z3
+  // 4.8.12); the work read through a fresh default solver at every reading,
+  // which sets one up and spends work itself (about 100 units, 7 ms). What
+  // the committed test suites (examples/*/acceptance) were generated with.
+  DefaultSolver,
+  // Z3's SMT kernel alone (what the default solver answers incremental checks
+  // with), and the work read through one solver of the `skip` tactic per
+  // meter, which spends none. What `check` uses (CheckOptions::solvers).
+  SmtKernel,
+};
+
 struct Limits {
   // Work this call may spend (0: no bound of its own; an engine then stops
   // at its depth bound only).
@@ -51,6 +70,9 @@ struct Limits {
   // The user's wall-clock bound of this question (--timeout).
   Clock::time_point deadline = Clock::time_point::max();
   const CancelToken* cancel = nullptr;
+  // How the engines make solvers and read work (the caller's choice; test
+  // generation keeps DefaultSolver, check passes SmtKernel).
+  SolverSetup solvers = SolverSetup::DefaultSolver;
 
   // The question was interrupted: the wall clock or the cancel token. Its
   // answer, whatever an engine had, is abandoned.
@@ -97,7 +119,9 @@ inline void stop_if_interrupted(const Limits& limits) {
 // is set to what is left, so that Z3 stops exactly there on every machine.
 class WorkMeter {
  public:
-  WorkMeter(z3::context& ctx, Work budget);
+  WorkMeter(z3::context& ctx, Work budget, SolverSetup setup = SolverSetup::DefaultSolver);
+  // Limits::work within Limits::solvers.
+  WorkMeter(z3::context& ctx, const Limits& limits) : WorkMeter(ctx, limits.work, limits.solvers) {}
   // Leaves the context without a resource limit, for whoever checks next.
   ~WorkMeter();
   WorkMeter(const WorkMeter&) = delete;
@@ -110,12 +134,22 @@ class WorkMeter {
   Work budget() const { return budget_; }
 
  private:
+  Work read() const;
   z3::context& ctx_;
+  // SmtKernel: the solver of the `skip` tactic that reads the count (its
+  // statistics report the context's count without setting anything up).
+  mutable std::optional<z3::solver> probe_;
   Work budget_;
   Work start_;
 };
 
-// Z3's count of resource units spent in `ctx` so far.
+// Z3's count of resource units spent in `ctx` so far, read through a fresh
+// default solver (SolverSetup::DefaultSolver: that reading spends work).
 Work resource_count(z3::context& ctx);
+// The same, read through `probe` (a solver of the `skip` tactic: no work).
+Work resource_count(z3::solver& probe);
+// A solver for incremental checks (under assumptions, or after a push) in
+// `setup`: the default solver, or Z3's SMT kernel alone.
+z3::solver make_solver(z3::context& ctx, SolverSetup setup);
 
 }  // namespace cemv::checker

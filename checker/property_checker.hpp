@@ -27,6 +27,7 @@
 
 #include "checker/check.hpp"
 #include "checker/cone_group.hpp"
+#include "checker/group_support.hpp"
 #include "checker/property_problem.hpp"
 #include "checker/prover.hpp"
 #include "checker/random_runs.hpp"
@@ -60,7 +61,14 @@ class PropertyChecker {
   // --support core: the cells of the proof's unsat core, re-checked on the
   // matrix without the others; full: that core minimised by deletion
   // (docs/checker.md, "Support").
-  void find_support(PropertyResult& r, const Limits& limits) const;
+  // `core`: the proof's unsat core found on its cone group's encoding
+  // (checker/group_support.hpp); nullopt: asked on the property's own.
+  void find_support(PropertyResult& r, const Limits& limits,
+                    const std::optional<SupportCore>& core = std::nullopt) const;
+  // What the support is chosen from (candidate_deletions of the property's roots).
+  std::vector<Deletion> support_candidates() const;
+  // decide()'s proof, when it proved the property.
+  const std::optional<ProverResult>& proof() const { return proof_; }
   // The runtime runs decide() made (its directed runs, the replayed
   // counterexample or witness), as property traces: witnesses of other
   // properties' antecedents.
@@ -85,8 +93,12 @@ class PropertyChecker {
   // The candidates (candidate_deletions) the proof's unsat core needs, or
   // every candidate when no core is found; `reduced`: the matrix without the
   // others, on which the proof was re-checked.
-  std::vector<SupportElement> core_support(const std::vector<Deletion>& candidates, model::Matrix& reduced,
+  std::vector<SupportElement> core_support(const std::vector<Deletion>& candidates,
+                                           const std::optional<SupportCore>& core, model::Matrix& reduced,
                                            const Limits& limits) const;
+  // The unsat core of the proof's obligations on the property's own guarded
+  // encoding; nullopt when there is none within the budget.
+  std::optional<SupportCore> own_core(const std::vector<Deletion>& candidates, const Limits& limits) const;
   // Whether the property is proved on `trial` (a matrix with cells deleted),
   // `checked`: re-checked as every reported answer; nullopt when a tag the
   // property reads is gone.

@@ -82,11 +82,10 @@ std::optional<ProverResult> PropertyChecker::prove_on(const model::Matrix& trial
   return Portfolio([make, t](z3::context& ctx) { return make(ctx); }, po).run(limits);
 }
 
-std::vector<SupportElement> PropertyChecker::core_support(const std::vector<Deletion>& candidates,
-                                                          model::Matrix& reduced, const Limits& limits) const {
-  reduced = m_;
-  bool found = false;  // the core's terms die with their context below: only its keys leave the block
-  std::set<std::string> guarded, used;
+std::optional<SupportCore> PropertyChecker::own_core(const std::vector<Deletion>& candidates,
+                                                    const Limits& limits) const {
+  SupportCore out;  // the core's terms die with their context: only its keys leave
+  std::set<std::string>& guarded = out.guarded;
   {
     ProblemOptions o;
     o.guard_cells = true;
@@ -114,14 +113,21 @@ std::vector<SupportElement> PropertyChecker::core_support(const std::vector<Dele
     OwnedProblem problem = reduce(original);
     std::optional<std::vector<z3::expr>> core = check::proof_core(problem.problem, *proof_, literals, fixed, options_.budgets.support, limits);
     if (!core) core = check::proof_core(original.problem, *proof_, literals, fixed, options_.budgets.support, limits);
-    if (core)
-      for (const auto& l : *core) used.insert(l.decl().name().str().substr(std::string("guard.").size()));
-    found = core.has_value();
+    if (!core) return std::nullopt;
+    for (const auto& l : *core) out.used.insert(l.decl().name().str().substr(std::string("guard.").size()));
   }
-  if (!found) return all_of(candidates);
+  return out;
+}
+
+std::vector<SupportElement> PropertyChecker::core_support(const std::vector<Deletion>& candidates,
+                                                          const std::optional<SupportCore>& given,
+                                                          model::Matrix& reduced, const Limits& limits) const {
+  reduced = m_;
+  std::optional<SupportCore> core = given ? given : own_core(candidates, limits);
+  if (!core) return all_of(candidates);
   std::vector<SupportElement> support;
   for (const auto& d : candidates) {
-    if (!guarded.count(d.element.key) || used.count(d.element.key)) support.push_back(d.element);
+    if (!core->guarded.count(d.element.key) || core->used.count(d.element.key)) support.push_back(d.element);
     else d.apply(reduced);
   }
   if (support.size() == candidates.size()) return support;  // nothing removed: the proof itself
@@ -149,12 +155,15 @@ std::vector<SupportElement> PropertyChecker::core_support(const std::vector<Dele
   return all_of(candidates);
 }
 
-void PropertyChecker::find_support(PropertyResult& out, const Limits& limits) const {
+std::vector<Deletion> PropertyChecker::support_candidates() const { return candidate_deletions(m_, roots_); }
+
+void PropertyChecker::find_support(PropertyResult& out, const Limits& limits,
+                                   const std::optional<SupportCore>& group_core) const {
   if (!needs_support(out)) return;
   const auto start = Clock::now();
-  const std::vector<Deletion> candidates = candidate_deletions(m_, roots_);
+  const std::vector<Deletion> candidates = support_candidates();
   model::Matrix reduced;
-  out.support = core_support(candidates, reduced, limits);
+  out.support = core_support(candidates, group_core, reduced, limits);
   out.support_minimal = false;
   out.seconds += seconds_since(start);
   if (options_.support_mode != SupportMode::Full) return;

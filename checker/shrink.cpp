@@ -152,7 +152,7 @@ Trace shrink_trace(const SafetyProblem& problem, const Trace& cex, const Preferr
   const auto& ts = *problem.ts;
   z3::context& ctx = ts.ctx();
   encoder::Unroller u(ts);
-  z3::solver s(ctx);
+  z3::solver s = make_solver(ctx, limits.solvers);
   // The same question BMC answered at depth n - 1: a path of n cycles under
   // the constraints and assumptions, `good` in every cycle but the last.
   s.add(u.at(ts.init_formula(), 0));
@@ -187,7 +187,7 @@ Trace shrink_trace(const SafetyProblem& problem, const Trace& cex, const Preferr
   };
   try {
     Watchdog watchdog(ctx, limits);
-    WorkMeter meter(ctx, limits.work);
+    WorkMeter meter(ctx, limits);
     // 1. Start: the literals the concrete pass's trace keeps at rest, a
     // satisfiable set (that trace is a model of it).
     std::vector<bool> kept(literals.size(), false);

@@ -86,7 +86,7 @@ void recheck_proof(const SafetyProblem& problem, const ProverResult& result, con
   // One fresh solver for the obligations, each in its own scope: in
   // incremental mode Z3 skips the per-query preprocessing that dominated
   // re-checking the many small proofs of a standard property set.
-  z3::solver s(problem.ts->ctx());
+  z3::solver s = make_solver(problem.ts->ctx(), limits ? limits->solvers : SolverSetup::DefaultSolver);
   std::optional<Watchdog> watchdog;
   if (limits) watchdog.emplace(problem.ts->ctx(), *limits);
   for (const auto& o : obs) {
@@ -125,14 +125,14 @@ std::optional<std::vector<z3::expr>> proof_core(const SafetyProblem& problem, co
     return std::nullopt;  // an invariant over variables this problem does not have
   }
   z3::context& ctx = problem.ts->ctx();
-  z3::solver s(ctx);
+  z3::solver s = make_solver(ctx, limits.solvers);
   for (const auto& f : fixed) s.add(f);
   z3::expr_vector assumptions(ctx);
   for (const auto& l : literals) assumptions.push_back(l);
   std::vector<z3::expr> core;
   std::set<unsigned> in_core;
   Watchdog watchdog(ctx, limits);
-  WorkMeter meter(ctx, work);
+  WorkMeter meter(ctx, work, limits.solvers);
   for (const auto& o : obs) {
     z3::check_result cr = z3::unknown;
     try {

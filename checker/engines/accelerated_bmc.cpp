@@ -163,7 +163,7 @@ ProverResult AcceleratedBmc::prove(const SafetyProblem& problem, const Limits& l
   z3::context& ctx = ts.ctx();
   ProverResult r;
   r.method = method();
-  WorkMeter meter(ctx, limits.work);
+  WorkMeter meter(ctx, limits);
   auto finish = [&](UnknownReason reason) {
     r.reason = reason;
     r.work = meter.spent();
@@ -175,7 +175,7 @@ ProverResult AcceleratedBmc::prove(const SafetyProblem& problem, const Limits& l
     Watchdog watchdog(ctx, limits);
     MacroUnrolling m(problem);
     encoder::Unroller& u = m.unroller();
-    z3::solver s(ctx);
+    z3::solver s = make_solver(ctx, limits.solvers);
     s.add(m.init());
     for (int J = 0; J <= max_steps; ++J) {
       if (limits.interrupted()) return finish(UnknownReason::TimeLimit);

@@ -10,9 +10,9 @@ ProverResult Bmc::prove(const SafetyProblem& problem, const Limits& limits) {
   const auto& ts = *problem.ts;
   z3::context& ctx = ts.ctx();
   encoder::Unroller u(ts);
-  z3::solver s(ctx);
+  z3::solver s = make_solver(ctx, limits.solvers);
   Watchdog watchdog(ctx, limits);
-  WorkMeter meter(ctx, limits.work);
+  WorkMeter meter(ctx, limits);
   ProverResult r;
   r.method = method();
   auto finish = [&](int k, UnknownReason why) {

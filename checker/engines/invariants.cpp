@@ -430,13 +430,13 @@ std::vector<z3::expr> houdini(const SafetyProblem& problem, std::vector<z3::expr
   for (const auto& c : candidates) cands.push_back(Candidate{c, u.at(c, 0), std::nullopt});
   // Initiation: drop what the initial state violates.
   {
-    z3::solver s(ctx);
+    z3::solver s = make_solver(ctx, limits.solvers);
     s.add(abstract(u.at(ts.init_formula(), 0)));
     drop_until_unsat(s, cands, limits, meter);
   }
   // Consecution: candidates of cycle 0 (each behind an activation literal)
   // and one transition; drop what the post-state violates.
-  z3::solver s(ctx);
+  z3::solver s = make_solver(ctx, limits.solvers);
   s.add(abstract(u.at(ts.constraint_formula() && problem.assumption && ts.trans_formula(), 0)));
   for (std::size_t i = 0; i < cands.size(); ++i) {
     z3::expr l = ctx.bool_const(("houdini.cand." + std::to_string(i)).c_str());

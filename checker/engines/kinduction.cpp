@@ -62,7 +62,7 @@ ProverResult KInduction::prove(const SafetyProblem& problem, const Limits& limit
   r.method = options_.method;
   // One budget for the strengthening and the induction: the meter counts
   // the context's work from here, Houdini's checks included.
-  WorkMeter meter(ctx, limits.work);
+  WorkMeter meter(ctx, limits);
   auto finish = [&](Verdict v, int k, UnknownReason reason) {
     r.verdict = v;
     r.k = k;
@@ -83,7 +83,7 @@ ProverResult KInduction::prove(const SafetyProblem& problem, const Limits& limit
     }
     encoder::Unroller u(ts);
     Watchdog watchdog(ctx, limits);
-    z3::solver base(ctx), step(ctx);
+    z3::solver base = make_solver(ctx, limits.solvers), step = make_solver(ctx, limits.solvers);
     const z3::expr facts = ts.constraint_formula() && problem.assumption;
     const z3::expr trans = ts.trans_formula();
     const int max_k = options_.max_k < 0 ? limits.max_depth : std::min(options_.max_k, limits.max_depth);

@@ -12,12 +12,12 @@ std::vector<ProverResult> reach_each(const encoder::TransitionSystem& ts, const 
   std::vector<bool> left = open;
   std::size_t count = 0;
   for (bool b : left) count += b;
-  WorkMeter meter(ctx, limits.work);
+  WorkMeter meter(ctx, limits);
   UnknownReason stop = UnknownReason::BoundReached;
   try {
     Watchdog watchdog(ctx, limits);
     encoder::Unroller u(ts);
-    z3::solver s(ctx);
+    z3::solver s = make_solver(ctx, limits.solvers);
     const z3::expr facts = ts.constraint_formula() && assumption;
     s.add(u.at(ts.init_formula(), 0));
     for (int k = 0; k <= limits.max_depth && count > 0; ++k) {

@@ -13,7 +13,8 @@ namespace {
 // question is its own term under a fresh literal.
 class SharedSolver {
  public:
-  SharedSolver(z3::context& ctx, WorkMeter& meter, const char* tag) : s_(ctx), meter_(meter), tag_(tag) {}
+  SharedSolver(z3::context& ctx, SolverSetup setup, WorkMeter& meter, const char* tag)
+      : s_(make_solver(ctx, setup)), meter_(meter), tag_(tag) {}
   void add(const z3::expr& e) { s_.add(e); }
   // Unsat: the member's question has no model (its proof obligation holds).
   z3::check_result ask(const z3::expr& question, std::size_t member) {
@@ -54,13 +55,13 @@ std::vector<ProverResult> prove_each(const MultiProblem& p, const std::vector<bo
     return false;
   };
   if (!any_left()) return out;
-  WorkMeter meter(ctx, limits.work);
+  WorkMeter meter(ctx, limits);
   try {
     Watchdog watchdog(ctx, limits);
     encoder::Unroller u(ts);
     const z3::expr facts = ts.constraint_formula() && p.assumption;
     // k = 0, no strengthening: `good` follows from the cycle's own definitions.
-    SharedSolver plain(ctx, meter, "multi.plain");
+    SharedSolver plain(ctx, limits.solvers, meter, "multi.plain");
     plain.add(u.at(facts, 0));
     for (std::size_t i = 0; i < p.goods.size(); ++i)
       if (left[i] && plain.ask(!u.at(p.goods[i], 0), i) == z3::unsat) {
@@ -81,7 +82,7 @@ std::vector<ProverResult> prove_each(const MultiProblem& p, const std::vector<bo
     }
     const z3::expr S = s_parts.empty() ? ctx.bool_val(true) : z3::mk_and(s_parts);
     // k = 0 strengthened.
-    SharedSolver step0(ctx, meter, "multi.step0");
+    SharedSolver step0(ctx, limits.solvers, meter, "multi.step0");
     step0.add(u.at(S && facts, 0));
     for (std::size_t i = 0; i < p.goods.size(); ++i)
       if (left[i] && step0.ask(!u.at(p.goods[i], 0), i) == z3::unsat) {
@@ -91,10 +92,10 @@ std::vector<ProverResult> prove_each(const MultiProblem& p, const std::vector<bo
     if (!any_left() || limits.interrupted()) return out;
     // k = 1: no violation in the first cycle, and one good cycle under S is
     // followed by another.
-    SharedSolver base(ctx, meter, "multi.base");
+    SharedSolver base(ctx, limits.solvers, meter, "multi.base");
     base.add(u.at(ts.init_formula(), 0));
     base.add(u.at(facts, 0));
-    SharedSolver step1(ctx, meter, "multi.step1");
+    SharedSolver step1(ctx, limits.solvers, meter, "multi.step1");
     step1.add(u.at(S && facts && ts.trans_formula(), 0));
     step1.add(u.at(S && facts, 1));
     for (std::size_t i = 0; i < p.goods.size(); ++i) {

@@ -25,7 +25,7 @@ ProverResult Pdr::prove(const SafetyProblem& problem, const Limits& limits) {
   z3::context& ctx = ts.ctx();
   ProverResult r;
   r.method = method();
-  WorkMeter meter(ctx, limits.work);
+  WorkMeter meter(ctx, limits);
   try {
     z3::fixedpoint fp(ctx);
     // Declared after the fixedpoint, so destroyed (clearing the interrupt)

@@ -74,7 +74,7 @@ class RelationalInduction : public Prover {
     r.method = method();
     const auto& ts = *problem.ts;
     z3::context& ctx = ts.ctx();
-    WorkMeter meter(ctx, limits.work);
+    WorkMeter meter(ctx, limits);
     try {
       Watchdog watchdog(ctx, limits);
       encoder::Unroller u(ts);

@@ -87,42 +87,47 @@ std::vector<Case> cases() {
 
 class Engines : public ::testing::TestWithParam<Case> {};
 
+// In both solver set-ups (checker/limits.hpp): test generation's and check's.
 TEST_P(Engines, AnswerIsExpectedOrUndecidedByDesign) {
-  const Case& c = GetParam();
-  z3::context ctx;
-  OwnedProblem owned = c.problem.make(ctx);
-  auto prover = c.engine.make();
-  const bool undecided = c.problem.deep && c.engine.times_out_deep;
-  Limits limits;
-  limits.work = (undecided ? 3 : 60) * kMega;
-  limits.max_depth = std::min(c.engine.max_cex_cycles - 1, 30);
-  ProverResult r = prover->prove(owned.problem, limits);
-  SCOPED_TRACE(r.method_text() + " " + to_string(r.verdict) + " k=" + std::to_string(r.k) + " " + r.reason_text());
-  bool can = c.problem.expected == Verdict::Proved ? c.engine.proves
-                                                   : c.problem.cex_length <= c.engine.max_cex_cycles ||
-                                                         (c.problem.deep && c.engine.finds_deep_cex);
-  if (undecided) {
-    ASSERT_EQ(r.verdict, Verdict::Unknown);
-    EXPECT_EQ(r.reason, UnknownReason::WorkLimit);
-  } else if (can) {
-    ASSERT_EQ(r.verdict, c.problem.expected);
-  } else {
-    ASSERT_EQ(r.verdict, Verdict::Unknown);
-    EXPECT_EQ(r.reason, UnknownReason::BoundReached);
+  for (SolverSetup setup : {SolverSetup::DefaultSolver, SolverSetup::SmtKernel}) {
+    const Case& c = GetParam();
+    z3::context ctx;
+    OwnedProblem owned = c.problem.make(ctx);
+    auto prover = c.engine.make();
+    const bool undecided = c.problem.deep && c.engine.times_out_deep;
+    Limits limits;
+    limits.work = (undecided ? 3 : 60) * kMega;
+    limits.max_depth = std::min(c.engine.max_cex_cycles - 1, 30);
+    limits.solvers = setup;
+    ProverResult r = prover->prove(owned.problem, limits);
+    SCOPED_TRACE(std::string(setup == SolverSetup::SmtKernel ? "smt kernel: " : "default solver: ") +
+                 r.method_text() + " " + to_string(r.verdict) + " k=" + std::to_string(r.k) + " " + r.reason_text());
+    bool can = c.problem.expected == Verdict::Proved ? c.engine.proves
+                                                     : c.problem.cex_length <= c.engine.max_cex_cycles ||
+                                                           (c.problem.deep && c.engine.finds_deep_cex);
+    if (undecided) {
+      ASSERT_EQ(r.verdict, Verdict::Unknown);
+      EXPECT_EQ(r.reason, UnknownReason::WorkLimit);
+    } else if (can) {
+      ASSERT_EQ(r.verdict, c.problem.expected);
+    } else {
+      ASSERT_EQ(r.verdict, Verdict::Unknown);
+      EXPECT_EQ(r.reason, UnknownReason::BoundReached);
+    }
+    // Only the BMC-based searches promise a shortest counterexample.
+    const bool shortest = c.engine.name != "accelerated_bmc";
+    if (r.verdict == Verdict::Falsified && c.problem.exact_length && shortest) {
+      EXPECT_EQ(static_cast<int>(r.cex.length()), c.problem.cex_length);
+    }
+    if (r.verdict == Verdict::Falsified) {
+      EXPECT_GE(static_cast<int>(r.cex.length()), c.problem.cex_length);
+    }
+    if (r.verdict == Verdict::Falsified) {
+      EXPECT_EQ(r.cex.input_names.size(), owned.problem.ts->inputvars().size());
+    }
+    // Every definitive answer survives the independent re-check.
+    EXPECT_NO_THROW(check::recheck(c.problem.make, r, &limits));
   }
-  // Only the BMC-based searches promise a shortest counterexample.
-  const bool shortest = c.engine.name != "accelerated_bmc";
-  if (r.verdict == Verdict::Falsified && c.problem.exact_length && shortest) {
-    EXPECT_EQ(static_cast<int>(r.cex.length()), c.problem.cex_length);
-  }
-  if (r.verdict == Verdict::Falsified) {
-    EXPECT_GE(static_cast<int>(r.cex.length()), c.problem.cex_length);
-  }
-  if (r.verdict == Verdict::Falsified) {
-    EXPECT_EQ(r.cex.input_names.size(), owned.problem.ts->inputvars().size());
-  }
-  // Every definitive answer survives the independent re-check.
-  EXPECT_NO_THROW(check::recheck(c.problem.make, r));
 }
 
 std::string case_name(const ::testing::TestParamInfo<Case>& info) {
@@ -194,6 +199,45 @@ TEST(BmcBudget, TheSameBudgetStopsAtTheSameDepth) {
   EXPECT_EQ(a.reason, UnknownReason::WorkLimit);
   EXPECT_EQ(a.k, b.k);
   EXPECT_EQ(a.work, b.work);
+}
+
+// The same in check's solver set-up, whose meter reads the count through a
+// solver of the `skip` tactic: reading it spends no work, so a budget buys
+// more solving there, and still ends at the same point on every run.
+TEST(BmcBudget, TheSameBudgetStopsAtTheSameDepthWithTheSmtKernel) {
+  testsupport::MatrixOptions o;
+  o.min_causes = o.max_causes = 24;
+  o.min_effects = o.max_effects = 24;
+  o.intersections = 96;
+  const model::Matrix m = testsupport::random_matrix(7, o);
+  auto run = [&](Work budget, SolverSetup setup) {
+    z3::context ctx;
+    std::shared_ptr<encoder::Encoding> enc = encoder::encode(ctx, m, {});
+    const z3::expr never = ctx.bool_val(true);
+    Limits l = Limits{}.with_work(budget).with_depth(200);
+    l.solvers = setup;
+    return Bmc{}.prove(SafetyProblem{&enc->ts, never, ctx.bool_val(true)}, l);
+  };
+  const ProverResult a = run(kMega / 5, SolverSetup::SmtKernel), b = run(kMega / 5, SolverSetup::SmtKernel);
+  ASSERT_EQ(a.verdict, Verdict::Unknown);
+  EXPECT_EQ(a.reason, UnknownReason::WorkLimit);
+  EXPECT_EQ(a.k, b.k);
+  EXPECT_EQ(a.work, b.work);
+  const ProverResult d = run(kMega / 5, SolverSetup::DefaultSolver);
+  EXPECT_GE(a.k, d.k);
+}
+
+TEST(WorkMeter, TheSmtKernelsReadingSpendsNoWorkTheDefaultSolversDoes) {
+  z3::context ctx;
+  WorkMeter kernel(ctx, 0, SolverSetup::SmtKernel);
+  const Work first = kernel.spent();
+  for (int i = 0; i < 10; ++i) (void)kernel.spent();
+  EXPECT_EQ(kernel.spent(), first);
+  WorkMeter plain(ctx, 0, SolverSetup::DefaultSolver);
+  const Work before = plain.spent();
+  for (int i = 0; i < 10; ++i) (void)plain.spent();
+  EXPECT_GT(plain.spent(), before);
+  EXPECT_GT(kernel.spent(), first);  // the default solver's readings spent the context's work
 }
 
 }  // namespace

@@ -11,6 +11,8 @@
 #include <set>
 
 #include "checker/check.hpp"
+#include "checker/cone_group.hpp"
+#include "checker/group_support.hpp"
 #include "checker/support.hpp"
 #include "formats/matrix_json.hpp"
 #include "model/validate.hpp"
@@ -145,6 +147,47 @@ TEST_F(SupportOnTheTank, FullIsInsideTheCoreAndMinimal) {
       }
     }
   }
+}
+
+// The core query of a cone group (checker/group_support.hpp): one guarded
+// encoding of the group's cone for all the proofs its members found. A core
+// names only the question's own candidates, and the group's proofs find one
+// there (the supports made from them carry their proofs alone:
+// EveryCoreCarriesItsProofAlone, through check_properties).
+TEST_F(SupportOnTheTank, AGroupsCoresNameOnlyEachProofsOwnCandidates) {
+  std::vector<GroupMember> members;
+  for (const auto& p : file_->properties) members.push_back({file_, &p});
+  const CheckOptions o;
+  Limits l;
+  l.solvers = o.solvers;
+  std::size_t asked = 0, found = 0;
+  for (const auto& g : cone_groups(*m_, members)) {
+    if (g.size() < 2) continue;
+    std::vector<GroupMember> group;
+    for (std::size_t i : g) group.push_back(members[i]);
+    const std::vector<EarlyAnswer> early = ConeGroup(*m_, group, o).decide(l);
+    std::vector<SupportQuestion> questions;
+    for (std::size_t k = 0; k < group.size(); ++k) {
+      if (!early[k].proof) continue;
+      SupportQuestion q;
+      q.member = k;
+      q.proof = &*early[k].proof;
+      for (const auto& d : candidate_deletions(*m_, properties::property_roots(*group[k].property, file_->assumptions, *m_)))
+        q.keys.insert(d.element.key);
+      questions.push_back(std::move(q));
+    }
+    const auto cores = group_support_cores(*m_, group, questions, o, l);
+    ASSERT_EQ(cores.size(), questions.size());
+    for (std::size_t q = 0; q < questions.size(); ++q) {
+      ++asked;
+      if (!cores[q]) continue;
+      ++found;
+      for (const auto& k : cores[q]->used) EXPECT_TRUE(cores[q]->guarded.count(k)) << k;
+      for (const auto& k : cores[q]->guarded) EXPECT_TRUE(questions[q].keys.count(k)) << k;
+    }
+  }
+  EXPECT_GT(asked, 1u);
+  EXPECT_EQ(found, asked);
 }
 
 }  // namespace
