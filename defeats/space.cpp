@@ -201,7 +201,7 @@ std::vector<z3::expr> mined_without_actions(const Builder& b, const encoder::Tra
     z3::context ctx;
     const Built none = b.build(ctx, true);
     checker::MiningOptions mining;
-    mining.bool_implications = false;
+    mining.bool_implications = true;
     for (const auto& c : checker::mine_candidates(none.problem.problem, mining)) texts.push_back(checker::to_smtlib(c));
   }
   std::vector<z3::expr> out;
@@ -272,7 +272,7 @@ ActionSpace::ActionSpace(const model::Matrix& m, const PathDefeats& pd, const st
     if (v.has_init && (v.init.is_numeral() || v.init.is_true() || v.init.is_false())) cands.push_back(v.var == v.init);
   for (const auto& l : p.ts->lemmas()) cands.push_back(l.term);
   checker::MiningOptions mining;
-  mining.bool_implications = false;
+  mining.bool_implications = true;
   for (const auto& c : checker::mine_candidates(p, mining)) cands.push_back(c);
   for (const auto& c : mined_without_actions(s.builder, *p.ts)) cands.push_back(c);
   checker::WorkMeter meter(s.ctx, 0);
