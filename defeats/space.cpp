@@ -33,6 +33,60 @@ constexpr int kMaxBmcDepth = 200;
 
 bool in(const Set& s, int i) { return std::binary_search(s.begin(), s.end(), i); }
 
+// The work a test spends against its budget, as checker::WorkMeter counts it
+// (Z3's `rlimit count`, the context's resource limit armed to what is left
+// before each check), read through one solver of the `skip` tactic that
+// lives as long as the path: checker::resource_count makes a default solver
+// for each reading, a third of this enumeration's time when every set is a
+// few short checks.
+class Meter {
+ public:
+  Meter(z3::context& ctx, z3::solver& probe, checker::Work budget)
+      : ctx_(ctx), probe_(probe), budget_(budget), start_(count()) {}
+  ~Meter() { Z3_update_param_value(ctx_, "rlimit", "0"); }
+  Meter(const Meter&) = delete;
+  Meter& operator=(const Meter&) = delete;
+  bool arm() {
+    if (budget_ == 0) {
+      Z3_update_param_value(ctx_, "rlimit", "0");
+      return true;
+    }
+    const checker::Work used = spent();
+    if (used >= budget_) return false;
+    checker::Work left = budget_ - used;
+    if (left > 4000000000ULL) left = 4000000000ULL;  // Z3's limit is an unsigned int
+    Z3_update_param_value(ctx_, "rlimit", std::to_string(left).c_str());
+    return true;
+  }
+  checker::Work spent() const { return count() - start_; }
+  bool exhausted() const { return budget_ != 0 && spent() >= budget_; }
+
+ private:
+  checker::Work count() const {
+    const z3::stats st = probe_.statistics();
+    for (unsigned i = 0; i < st.size(); ++i)
+      if (st.key(i) == "rlimit count")
+        return st.is_uint(i) ? st.uint_value(i) : static_cast<checker::Work>(st.double_value(i));
+    return 0;
+  }
+  z3::context& ctx_;
+  z3::solver& probe_;
+  checker::Work budget_;
+  checker::Work start_;
+};
+
+z3::check_result check_within(z3::solver& s, Meter& meter, const z3::expr_vector& assumptions) {
+  if (!meter.arm()) return z3::unknown;
+  return s.check(assumptions);
+}
+
+checker::UnknownReason unknown_reason(const std::string& z3_reason, const checker::Limits& limits,
+                                      const Meter& meter) {
+  if (limits.interrupted()) return checker::UnknownReason::TimeLimit;
+  if (meter.exhausted()) return checker::UnknownReason::WorkLimit;
+  return checker::unknown_reason(z3_reason, limits);
+}
+
 // The requirement with every action excluded, parsed once: its property's
 // assumptions are the exclusions, one per action and in the actions' order
 // (response::requirement_property_text states no other).
@@ -127,6 +181,7 @@ class Builder {
 struct ActionSpace::Solvers {
   explicit Solvers(const model::Matrix& m, const PathDefeats& pd)
       : builder(m, pd), built(builder.build(ctx)), frame(ctx), trans(ctx), base(ctx), step(ctx), houdini(ctx),
+        probe(z3::tactic(ctx, "skip").mk_solver()),
         any_violation(ctx) {}
 
   Builder builder;
@@ -138,6 +193,7 @@ struct ActionSpace::Solvers {
   std::unordered_map<unsigned, std::size_t> cand_of;  // literal id -> candidate
   z3::expr frame, trans;          // one cycle: constraints, assumption, guarded exclusions; the transition
   z3::solver base, step, houdini;
+  z3::solver probe;  // reads the work spent (Meter)
   z3::expr any_violation;         // base: a violation in some cycle up to bmc_depth
   int bmc_depth = 0;
   bool any_made = false;
@@ -217,7 +273,7 @@ std::vector<z3::expr> mined_without_actions(const Builder& b, const encoder::Tra
 // The candidates the initial state satisfies (initiation does not depend on
 // the actions: the assumptions constrain cycles, not the initial state).
 std::vector<z3::expr> initiated(const checker::SafetyProblem& p, std::vector<z3::expr> cands, encoder::Unroller& u,
-                                checker::WorkMeter& meter, const checker::Limits& limits) {
+                                Meter& meter, const checker::Limits& limits) {
   z3::context& ctx = p.ts->ctx();
   z3::solver s(ctx);
   s.add(u.at(p.ts->init_formula(), 0));
@@ -228,9 +284,9 @@ std::vector<z3::expr> initiated(const checker::SafetyProblem& p, std::vector<z3:
     s.add(z3::implies(r, z3::mk_or(some_false)));
     z3::expr_vector a(ctx);
     a.push_back(r);
-    const z3::check_result cr = checker::check_within(s, meter, a);
+    const z3::check_result cr = check_within(s, meter, a);
     if (cr == z3::unsat) break;
-    if (cr == z3::unknown) throw checker::Stopped{checker::unknown_reason(s.reason_unknown(), limits, meter)};
+    if (cr == z3::unknown) throw checker::Stopped{unknown_reason(s.reason_unknown(), limits, meter)};
     z3::model m = s.get_model();
     std::vector<z3::expr> keep;
     for (const auto& c : cands)
@@ -275,7 +331,7 @@ ActionSpace::ActionSpace(const model::Matrix& m, const PathDefeats& pd, const st
   mining.bool_implications = true;
   for (const auto& c : checker::mine_candidates(p, mining)) cands.push_back(c);
   for (const auto& c : mined_without_actions(s.builder, *p.ts)) cands.push_back(c);
-  checker::WorkMeter meter(s.ctx, 0);
+  Meter meter(s.ctx, s.probe, 0);
   checker::Limits unbounded;
   s.cands = initiated(p, std::move(cands), *s.u, meter, unbounded);
   s.houdini.add(s.u->at(s.frame && s.trans, 0));
@@ -334,7 +390,7 @@ Test ActionSpace::test(const Set& allowed, const checker::Limits& limits) {
     return t;
   }
   Solvers& s = *s_;
-  checker::WorkMeter meter(s.ctx, limits.work);
+  Meter meter(s.ctx, s.probe, limits.work);
   checker::Watchdog watchdog(s.ctx, limits);
   // A fresh vector each check: copies of a z3::expr_vector share their elements.
   auto excluded = [&] {
@@ -359,7 +415,7 @@ Test ActionSpace::test(const Set& allowed, const checker::Limits& limits) {
   // between the timers of an action the set excludes) does not hold the
   // grown set back. False when a check is left unknown.
   auto close_invariant = [&](const std::vector<std::size_t>& alive, std::vector<bool>& inv, std::vector<bool>& need,
-                             checker::WorkMeter& meter_) {
+                             Meter& meter_) {
     for (;;) {
       z3::expr_vector some_false(s.ctx);
       for (std::size_t j : alive)
@@ -370,7 +426,7 @@ Test ActionSpace::test(const Set& allowed, const checker::Limits& limits) {
       z3::expr_vector a = excluded();
       for (std::size_t j : alive) a.push_back(s.lits[j]);
       a.push_back(round);
-      const z3::check_result cr = checker::check_within(s.houdini, meter_, a);
+      const z3::check_result cr = check_within(s.houdini, meter_, a);
       if (cr != z3::unsat) {
         s.houdini.add(!round);
         if (cr == z3::sat) throw std::logic_error("cemv defeats: Houdini's invariant is not inductive");
@@ -392,7 +448,7 @@ Test ActionSpace::test(const Set& allowed, const checker::Limits& limits) {
   };
   auto unknown = [&](z3::solver& solver) {
     t.answer = Test::Answer::Unknown;
-    t.reason = checker::to_string(checker::unknown_reason(solver.reason_unknown(), limits, meter));
+    t.reason = checker::to_string(unknown_reason(solver.reason_unknown(), limits, meter));
     t.work = meter.spent();
     return t;
   };
@@ -425,7 +481,7 @@ Test ActionSpace::test(const Set& allowed, const checker::Limits& limits) {
       z3::expr round = s.ctx.bool_const(("defeats.houdini.round." + std::to_string(s.rounds++)).c_str());
       s.houdini.add(z3::implies(round, z3::mk_or(some_false)));
       a.push_back(round);
-      const z3::check_result cr = alive.empty() ? z3::unsat : checker::check_within(s.houdini, meter, a);
+      const z3::check_result cr = alive.empty() ? z3::unsat : check_within(s.houdini, meter, a);
       if (cr == z3::unknown) return unknown(s.houdini);
       if (cr == z3::unsat) {
         s.houdini.add(!round);
@@ -447,7 +503,7 @@ Test ActionSpace::test(const Set& allowed, const checker::Limits& limits) {
       s.base_frames(k);
       z3::expr_vector a = excluded();
       a.push_back(s.base_bad[static_cast<std::size_t>(k)]);
-      z3::check_result cr = checker::check_within(s.base, meter, a);
+      z3::check_result cr = check_within(s.base, meter, a);
       if (cr == z3::sat) return defeated(s.base.get_model(), k, checker::Method::Bmc);
       if (cr == z3::unknown) return unknown(s.base);
       note_core(s.base);
@@ -457,7 +513,7 @@ Test ActionSpace::test(const Set& allowed, const checker::Limits& limits) {
       for (int c = 0; c <= k; ++c) b.push_back(s.step_on[static_cast<std::size_t>(c)]);
       for (int c = 0; c < k; ++c) b.push_back(s.step_good[static_cast<std::size_t>(c)]);
       b.push_back(s.step_bad[static_cast<std::size_t>(k)]);
-      cr = checker::check_within(s.step, meter, b);
+      cr = check_within(s.step, meter, b);
       if (cr == z3::unknown) return unknown(s.step);
       if (cr == z3::unsat) {
         const z3::expr_vector core = note_core(s.step);
@@ -490,7 +546,7 @@ Test ActionSpace::test(const Set& allowed, const checker::Limits& limits) {
     }
     z3::expr_vector a = excluded();
     a.push_back(s.any_violation);
-    const z3::check_result cr = checker::check_within(s.base, meter, a);
+    const z3::check_result cr = check_within(s.base, meter, a);
     if (cr == z3::unknown) return unknown(s.base);
     if (cr == z3::sat) {
       const z3::model model = s.base.get_model();
@@ -509,7 +565,7 @@ Test ActionSpace::test(const Set& allowed, const checker::Limits& limits) {
     return t;
   } catch (const z3::exception& e) {
     t.answer = Test::Answer::Unknown;
-    t.reason = checker::to_string(checker::unknown_reason(e.msg(), limits, meter));
+    t.reason = checker::to_string(unknown_reason(e.msg(), limits, meter));
     t.work = meter.spent();
     return t;
   }
