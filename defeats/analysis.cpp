@@ -50,6 +50,7 @@ DefeatsResult analyse(const model::Matrix& m, const DefeatsOptions& o) {
   ro.total_timeout_s = o.total_timeout_s;
   ro.work = o.work;
   ro.jobs = o.jobs;
+  ro.degraded = false;  // the requirement is the normal figure T; the degraded one is never read here
   const response::ResponseResult times = response::analyse(m, ro);
 
   DefeatsResult result;
@@ -93,7 +94,7 @@ DefeatsResult analyse(const model::Matrix& m, const DefeatsOptions& o) {
   if (o.on_plan) o.on_plan(unique.size());
   checker::WorkQueue(o.jobs, cancel).run(unique.size(), [&](std::size_t i) {
     report(o.on_start, i);
-    if (unique[i].requirement) enumerate_minimal_sets(m, unique[i], o.max_size, ao);
+    if (unique[i].requirement) enumerate_minimal_sets(m, unique[i], o.max_size, ao, o.enumeration);
     report(o.on_done, i);
   });
   result.interrupted = result.interrupted || cancel.cancelled();

@@ -18,6 +18,12 @@
 
 namespace cemv::defeats {
 
+// How one path's sets are enumerated (docs/defeats.md, "Enumeration"): every
+// candidate a question to the checker, level by level (the command line's),
+// or MARCO-style on one encoding per path (internal: not yet faster on the
+// examples, docs/performance.md "cemv defeats").
+enum class Enumeration { LevelByLevel, OneEncoding };
+
 struct DefeatsOptions {
   std::vector<int> sifs;         // empty = every declared group
   int max_size = 2;              // --max-size K
@@ -26,6 +32,7 @@ struct DefeatsOptions {
   checker::Work work = 20 * checker::kMega;  // each engine's budget of work per question
   int jobs = 1;                  // paths decided in parallel
   std::string out_dir;           // counterexample scenarios ("" = none written)
+  Enumeration enumeration = Enumeration::LevelByLevel;
   // Progress (serialised): the number of paths, then each path's key as it
   // starts and ends.
   std::function<void(std::size_t paths)> on_plan;

@@ -1,6 +1,8 @@
-// The minimal defeat sets of one path, level by level (docs/defeats.md,
-// "Enumeration"): every question decided by the checker, so every
-// counterexample is replayed on the runtime and every proof re-checked.
+// The minimal defeat sets of one path (docs/defeats.md, "Enumeration"):
+// level by level, every set a question of its own to the checker
+// (levels.cpp), or MARCO-style on one encoding of the path with every action
+// behind an assumption literal (marco.cpp); the differential test holds the
+// second to the first.
 #pragma once
 
 #include <string>
@@ -19,6 +21,11 @@ struct AskOptions {
 
 // Fills `pd.questions`, `pd.sets`, `pd.status` and `pd.distance` for sets of
 // up to `max_size` actions; `pd.actions` and `pd.requirement` are given.
-void enumerate_minimal_sets(const model::Matrix& m, PathDefeats& pd, int max_size, const AskOptions& o);
+void enumerate_minimal_sets(const model::Matrix& m, PathDefeats& pd, int max_size, const AskOptions& o,
+                            Enumeration how = Enumeration::LevelByLevel);
+
+// The two enumerations (enumerate_minimal_sets dispatches).
+void enumerate_one_encoding(const model::Matrix& m, PathDefeats& pd, int max_size, const AskOptions& o);
+void enumerate_level_by_level(const model::Matrix& m, PathDefeats& pd, int max_size, const AskOptions& o);
 
 }  // namespace cemv::defeats

@@ -105,12 +105,13 @@ ResponseResult analyse(const model::Matrix& m, const ResponseOptions& o) {
   checker::WorkQueue(o.jobs, cancel).run(unique.size(), [&](std::size_t i) {
     report(o.on_start, i);
     figures[i].logic = least_response(m, *unique[i], Mode::Normal, so);
-    if (!unique[i]->voted.empty()) figures[i].degraded = least_response(m, *unique[i], Mode::Degraded, so);
+    if (o.degraded && !unique[i]->voted.empty())
+      figures[i].degraded = least_response(m, *unique[i], Mode::Degraded, so);
     if (cancel.cancelled()) {
       // Cut short by the run's bound: nothing it found stands.
       figures[i] = Figures{};
       figures[i].logic.reason = checker::to_string(checker::UnknownReason::TimeLimit);
-      if (!unique[i]->voted.empty()) figures[i].degraded = figures[i].logic;
+      if (o.degraded && !unique[i]->voted.empty()) figures[i].degraded = figures[i].logic;
       return;
     }
     report(o.on_done, i);

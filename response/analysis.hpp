@@ -22,6 +22,10 @@ struct ResponseOptions {
   double total_timeout_s = 0.0;  // the whole run (0 = none): paths not decided by then are unknown
   checker::Work work = 20 * checker::kMega;  // each engine's budget of work in a probe
   int jobs = 1;               // paths decided in parallel
+  // The degraded figure of a voted path (one input in bad quality). false:
+  // the normal figure alone, for a caller that needs only the logic response
+  // T (cemv defeats); PathResult::degraded is then empty.
+  bool degraded = true;
   std::string out_dir;        // counterexample scenarios ("" = none written)
   // The command line's progress line (serialised, from any worker thread):
   // once with the number of paths to decide (a path in several groups is

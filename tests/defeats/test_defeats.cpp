@@ -20,6 +20,7 @@
 #include "properties/evaluator.hpp"
 #include "properties/parser.hpp"
 #include "response/property.hpp"
+#include "tests/support/random_matrix.hpp"
 
 namespace {
 
@@ -54,8 +55,11 @@ std::filesystem::path scratch(const std::string& name) {
   return dir;
 }
 
+// The hand-made matrices are enumerated on one encoding per path (the
+// level-by-level enumeration is held to them through the differential test).
 defeats::DefeatsResult run(const model::Matrix& m, const std::filesystem::path& out, int max_size = 2) {
   defeats::DefeatsOptions o;
+  o.enumeration = defeats::Enumeration::OneEncoding;
   o.max_size = max_size;
   o.out_dir = out.string();
   return defeats::analyse(m, o);
@@ -213,6 +217,59 @@ TEST(Defeats, ReportIsReproducible) {
   const std::string text = defeats::defeats_report(m, a, "m.json", defeats::Format::Text, "", 2);
   EXPECT_NE(text.find("{override[2]}"), std::string::npos) << text;
   EXPECT_NE(text.find("gate:"), std::string::npos) << text;
+}
+
+}  // namespace
+
+namespace {
+
+// The differential test of the enumerations (docs/defeats.md,
+// "Enumeration"): on seeded random matrices with SIF groups, the MARCO-style
+// enumeration on one encoding per path finds exactly the minimal sets (and
+// the statuses, distances and counterexample questions) that the
+// level-by-level enumeration, every set a question to the checker, finds.
+// Seeds are tried in order until the sample is large enough (paths decided
+// both ways, with sets, among them a pair), at most CEMV_DEFEATS_SEEDS (40).
+TEST(Defeats, OneEncodingFindsTheSetsOfTheLevelByLevelEnumeration) {
+  const int seeds = std::getenv("CEMV_DEFEATS_SEEDS") ? std::atoi(std::getenv("CEMV_DEFEATS_SEEDS")) : 40;
+  int compared = 0, with_sets = 0, pairs = 0;
+  for (int seed = 1; seed <= seeds && !(compared > 5 && with_sets > 3 && pairs > 0); ++seed) {
+    const model::Matrix m = testsupport::random_matrix(static_cast<std::uint64_t>(seed));
+    if (m.sif_groups.empty()) continue;
+    defeats::DefeatsOptions o;
+    o.max_size = 2;
+    o.jobs = 2;
+    o.enumeration = defeats::Enumeration::LevelByLevel;
+    const auto oracle = defeats::analyse(m, o);
+    o.enumeration = defeats::Enumeration::OneEncoding;
+    const auto marco = defeats::analyse(m, o);
+    ASSERT_EQ(oracle.paths.size(), marco.paths.size());
+    for (std::size_t i = 0; i < oracle.paths.size(); ++i) {
+      const auto& a = oracle.paths[i];
+      const auto& b = marco.paths[i];
+      ASSERT_EQ(a.path.key(), b.path.key());
+      if (a.status == defeats::PathStatus::Unknown || b.status == defeats::PathStatus::Unknown) continue;
+      ++compared;
+      with_sets += !a.sets.empty();
+      const std::string where = "seed " + std::to_string(seed) + " path " + a.path.key();
+      EXPECT_EQ(a.status, b.status) << where;
+      EXPECT_EQ(sets_of(a), sets_of(b)) << where;
+      EXPECT_EQ(a.distance, b.distance) << where;
+      for (std::size_t s = 0; s < a.sets.size() && s < b.sets.size(); ++s) {
+        pairs += a.sets[s].actions.size() == 2;
+        EXPECT_EQ(a.sets[s].set_class, b.sets[s].set_class) << where;
+        EXPECT_EQ(a.questions[a.sets[s].question].property, b.questions[b.sets[s].question].property) << where;
+        EXPECT_EQ(a.questions[a.sets[s].question].method, b.questions[b.sets[s].question].method) << where;
+        EXPECT_EQ(a.questions[a.sets[s].question].violation_cycle, b.questions[b.sets[s].question].violation_cycle)
+            << where;
+        for (const auto& [sub, proof] : b.sets[s].subsets) EXPECT_TRUE(b.questions.at(proof).holds()) << where;
+      }
+    }
+  }
+  // The sample is not empty: paths decided both ways, with sets of two.
+  EXPECT_GT(compared, 5);
+  EXPECT_GT(with_sets, 3);
+  EXPECT_GT(pairs, 0);
 }
 
 }  // namespace

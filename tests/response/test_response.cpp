@@ -410,6 +410,28 @@ TEST(Response, TwoOutOfThreeWithOneBadInputReportsItsDegradedFigure) {
   expect_replays(m, dir, p.degraded->counterexample);
 }
 
+// Without the degraded figure (cemv defeats needs only T): the same normal
+// figure, and no degraded one is computed or reported.
+TEST(Response, NormalFigureAloneIsTheSameWithoutTheDegradedOne) {
+  auto m = matrix(R"({"id": 1, "name": "C1", "sif": [1], "function": "2oo3", "bad_quality": "degrade",
+                      "time": {"mode": "on_delay", "ms": 1000},
+                      "tags": [{"name": "LS_A"}, {"name": "LS_B"}, {"name": "LS_C"}]})",
+                  effect(1, "Y1"), link(1, 1));
+  const auto both = analyse(m, scratch("with_degraded"));
+  response::ResponseOptions o;
+  o.degraded = false;
+  const auto normal = response::analyse(m, o);
+  const auto& a = only_path(both, 1);
+  const auto& b = only_path(normal, 1);
+  ASSERT_TRUE(a.degraded);
+  EXPECT_FALSE(b.degraded);
+  EXPECT_FALSE(b.degraded_total_ms);
+  ASSERT_EQ(b.logic.kind, Figure::Kind::Exact) << b.logic.reason;
+  EXPECT_EQ(b.logic.cycles, a.logic.cycles);
+  EXPECT_EQ(b.total_ms, a.total_ms);
+  EXPECT_EQ(b.verdict, a.verdict);
+}
+
 // A bad input in `ignore` mode votes with the value it delivers (C.3): an
 // `and` of two switches whose bad input delivers its healthy value never
 // trips. The degraded figure is `unbounded`, shown by the demand run itself

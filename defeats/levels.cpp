@@ -1,15 +1,11 @@
 #include "defeats/enumerate.hpp"
+#include "defeats/ask.hpp"
 
 #include <algorithm>
-#include <filesystem>
 #include <stdexcept>
 
-#include "checker/check.hpp"
 #include "defeats/runs.hpp"
-#include "formats/diagnostics.hpp"
-#include "properties/parser.hpp"
 #include "response/demand.hpp"
-#include "response/property.hpp"
 
 namespace cemv::defeats {
 
@@ -18,17 +14,6 @@ namespace {
 using Set = std::vector<int>;
 
 bool subset_of(const Set& a, const Set& b) { return std::includes(b.begin(), b.end(), a.begin(), a.end()); }
-
-// The property's name for a set: the path's key and the set's action
-// numbers (1-based), "defeat.c1.e2.a3_7"; the empty set "defeat.c1.e2.none";
-// a group question (never reported as a defeat) "defeat.c1.e2.group<n>".
-std::string set_name(const PathDefeats& pd, const Set& s) {
-  std::string n = "defeat." + pd.path.key() + ".";
-  if (s.empty()) return n + "none";
-  n += "a";
-  for (std::size_t i = 0; i < s.size(); ++i) n += (i ? "_" : "") + std::to_string(s[i] + 1);
-  return n;
-}
 
 std::string group_name(const PathDefeats& pd, int n) { return "defeat." + pd.path.key() + ".group" + std::to_string(n); }
 
@@ -57,69 +42,11 @@ class Enumerator {
 
   // Decides whether exactly the actions of `s` may occur defeats the path.
   // `write`: a candidate whose counterexample may be reported (written
-  // under the out folder); group questions are not.
+  // under the out folder); group questions (named by the caller) are not.
   const Question& ask(const Set& s, bool write, const std::string& name_override) {
-    // A group question (named by the caller) only needs a proof: a group
-    // that is not proved is split, whether it defeats or is undecided.
     const bool group = !name_override.empty();
-    Question q;
-    q.actions = s;
-    q.property = name_override.empty() ? set_name(pd_, s) : name_override;
-    std::vector<std::string> excluded;
-    for (std::size_t i = 0; i < pd_.actions.size(); ++i)
-      if (!std::binary_search(s.begin(), s.end(), static_cast<int>(i)))
-        excluded.push_back(pd_.actions[i].excluded_term());
-    const std::string text =
-        response::requirement_property_text(m_, pd_.path, *pd_.requirement, q.property, excluded);
-    properties::PropertyFile file;
-    try {
-      file = properties::parse_properties(text, m_, "cemv-defeats:" + q.property);
-    } catch (const formats::LoadError& e) {
-      std::string what;
-      for (const auto& i : e.issues()) what += "\n" + i.str();
-      throw std::logic_error("cemv defeats wrote a property the parser refuses:" + what + "\n" + text);
-    }
-    checker::CheckOptions options;
-    options.property_timeout_s = o_.timeout_s;
-    options.cancel = o_.cancel;
-    options.jobs = 1;
-    options.out_dir = write ? o_.out_dir : "";
-    options.support = false;
-    options.budgets.engine = o_.work;
-    // The demand with the set's actions taken: most defeats shown by one run
-    // of the runtime; the runs also witness that a demand can occur (vacuity).
-    options.directed_runs = defeat_runs(m_, pd_.path, pd_.actions, s, runs_);
-    options.localize_to = pd_.path.elements;
-    // A question no directed run falsifies usually holds: the engines of a
-    // proof first, as cemv response asks for a bound it expects to hold
-    // (invariants+induction, k-induction, BMC; PDR and BMC on a wide cone);
-    // left open, the whole portfolio.
-    // A group gets the proof engines alone, within a quarter of the budget:
-    // searching a group's counterexample past the directed runs (the
-    // accelerated unrolling over a long T) is work the split does anyway.
-    options.engines = {checker::Method::InvariantsInduction, checker::Method::KInduction, checker::Method::Bmc};
-    options.engines_when_wide = {checker::Method::Pdr, checker::Method::Bmc};
-    if (group) {
-      options.engines.pop_back();
-      options.engines_when_wide.pop_back();
-      options.budgets.engine = o_.work / 4;
-    }
-    checker::CheckResult r = checker::check_properties(m_, {file}, options);
-    if (r.properties.at(0).verdict == checker::PropertyVerdict::Unknown && !group && !cancelled()) {
-      options.engines.clear();
-      options.engines_when_wide.clear();
-      options.localize_to.clear();
-      r = checker::check_properties(m_, {file}, options);
-    }
-    const checker::PropertyResult& pr = r.properties.at(0);
-    q.verdict = pr.verdict;
-    q.method = pr.method;
-    q.reason = pr.reason;
-    q.work = pr.work;
-    q.violation_cycle = pr.violation_cycle;
-    if (!pr.scenario_file.empty()) q.scenario = std::filesystem::path(pr.scenario_file).filename().string();
-    if (!write) q.scenario.clear();
-    pd_.questions.push_back(std::move(q));
+    pd_.questions.push_back(
+        ask_checker(m_, pd_, s, group ? name_override : set_name(pd_, s), group, write, runs_, o_));
     return pd_.questions.back();
   }
 
@@ -311,7 +238,7 @@ class Enumerator {
 
 }  // namespace
 
-void enumerate_minimal_sets(const model::Matrix& m, PathDefeats& pd, int max_size, const AskOptions& o) {
+void enumerate_level_by_level(const model::Matrix& m, PathDefeats& pd, int max_size, const AskOptions& o) {
   Enumerator(m, pd, o).run(max_size);
 }
 
