@@ -88,4 +88,21 @@ Question ask_checker(const model::Matrix& m, const PathDefeats& pd, const std::v
   return q;
 }
 
+void finish_path(PathDefeats& pd, bool complete, std::string reason, bool cancelled) {
+  if (cancelled) {
+    complete = false;
+    if (reason.empty()) reason = checker::to_string(checker::UnknownReason::TimeLimit);
+  }
+  pd.status = complete ? PathStatus::Complete : PathStatus::Unknown;
+  pd.reason = std::move(reason);
+  std::stable_sort(pd.sets.begin(), pd.sets.end(), [](const DefeatSet& a, const DefeatSet& b) {
+    return a.actions.size() != b.actions.size() ? a.actions.size() < b.actions.size() : a.actions < b.actions;
+  });
+  for (const auto& d : pd.sets)
+    if (d.set_class == SetClass::Indirect) {
+      pd.distance = static_cast<int>(d.actions.size());
+      break;
+    }
+}
+
 }  // namespace cemv::defeats

@@ -27,4 +27,9 @@ Question ask_checker(const model::Matrix& m, const PathDefeats& pd, const std::v
                      const std::string& property, bool group, bool write, const std::vector<Run>& demand_runs,
                      const AskOptions& o);
 
+// Ends a path's enumeration, whichever enumeration made it: complete or
+// unknown with `reason` (a cancelled run is the time limit), its sets in
+// order (size, then actions), its defeat distance the smallest indirect set.
+void finish_path(PathDefeats& pd, bool complete, std::string reason, bool cancelled);
+
 }  // namespace cemv::defeats

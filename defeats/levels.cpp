@@ -211,20 +211,7 @@ class Enumerator {
     for (const auto& q : pd_.questions)
       if (q.verdict == checker::PropertyVerdict::Unknown && q.property.find(".group") == std::string::npos)
         incomplete(q);
-    if (cancelled()) {
-      complete_ = false;
-      if (reason_.empty()) reason_ = checker::to_string(checker::UnknownReason::TimeLimit);
-    }
-    pd_.status = complete_ ? PathStatus::Complete : PathStatus::Unknown;
-    pd_.reason = reason_;
-    std::stable_sort(pd_.sets.begin(), pd_.sets.end(), [](const DefeatSet& a, const DefeatSet& b) {
-      return a.actions.size() != b.actions.size() ? a.actions.size() < b.actions.size() : a.actions < b.actions;
-    });
-    for (const auto& d : pd_.sets)
-      if (d.set_class == SetClass::Indirect) {
-        pd_.distance = static_cast<int>(d.actions.size());
-        break;
-      }
+    finish_path(pd_, complete_, reason_, cancelled());
   }
 
   const model::Matrix& m_;
