@@ -25,7 +25,8 @@ z3::expr one_of(const encoder::Encoding& enc, const z3::expr& var, const std::ve
   return any;
 }
 
-// The state the prefix leaves becomes the initial state.
+}  // namespace
+
 void start_after(encoder::Encoding& enc, const std::vector<model::CycleInput>& prefix) {
   encoder::Evaluator ev(enc);
   for (const auto& in : prefix) ev.step(in);
@@ -41,7 +42,6 @@ void start_after(encoder::Encoding& enc, const std::vector<model::CycleInput>& p
   }
 }
 
-}  // namespace
 
 ProblemFactory property_problem(const model::Matrix& m, const properties::PropertyFile& file,
                                 const properties::Property& p, const ProblemOptions& options) {

@@ -49,6 +49,10 @@ struct ProblemOptions {
   std::function<void(encoder::Encoding&)> modify_encoding;
 };
 
+// The state `prefix` leaves, computed by the encoding's own Evaluator (the
+// monitors included), becomes the encoding's initial state.
+void start_after(encoder::Encoding& enc, const std::vector<model::CycleInput>& prefix);
+
 // The factory builds the problem in any context (one per portfolio thread).
 // It keeps copies of the matrix and pointers to the property and its file:
 // both must outlive the factory. The owner of every built problem is its

@@ -6,6 +6,7 @@
 
 #include "checker/context_pool.hpp"
 #include "checker/engines/solving.hpp"
+#include "checker/property_problem.hpp"
 #include "checker/random_runs.hpp"
 #include "checker/shrink.hpp"
 #include "encoder/encode.hpp"
@@ -45,20 +46,6 @@ z3::expr input_ranges(const model::Matrix& m, const encoder::Encoding& enc, cons
   return all;
 }
 
-// The state the prefix leaves (monitors included) becomes the initial state.
-void start_after(encoder::Encoding& enc, const std::vector<model::CycleInput>& prefix) {
-  encoder::Evaluator ev(enc);
-  for (const auto& in : prefix) ev.step(in);
-  const auto state = ev.state();
-  const auto& vars = enc.ts.statevars();
-  z3::context& ctx = enc.ts.ctx();
-  for (std::size_t i = 0; i < vars.size(); ++i) {
-    const z3::expr& v = vars[i].var;
-    enc.ts.set_init(v, v.is_bool()  ? ctx.bool_val(state[i].i != 0)
-                       : v.is_int() ? ctx.int_val(static_cast<int64_t>(state[i].i))
-                                    : enc.ts.float_const(state[i].f));
-  }
-}
 
 // Every open target the solver's model reaches, then each other one in
 // catalogue order that the same run can reach as well (its literal added to
@@ -102,7 +89,7 @@ Built build(z3::context& ctx, const model::Matrix& m, const SweepQuestion& q, co
   std::vector<properties::Monitor> monitors;
   for (const properties::Property* p : q.targets) monitors.push_back(properties::compile_monitor(*enc, *p, q.file->assumptions));
   const z3::expr assumption = monitors.front().assumption && input_ranges(m, *enc, hold);
-  start_after(*enc, q.prefix);
+  checker::start_after(*enc, q.prefix);
   // Only the targets that share the first one's assumptions are asked: one
   // unrolling assumes one thing in every cycle.
   std::vector<bool> open(monitors.size());
