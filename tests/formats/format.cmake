@@ -1,4 +1,4 @@
-# cemv-matrix/1: loader, canonical form, signature (formats/matrix_json.cpp), and the
+# cemv-matrix/1: loader, canonical form, signature (formats/matrix_json*.cpp), and the
 # table of malformed files under malformed/ (EXPECTED.tsv: file<TAB>regex).
 add_executable(test_formats_matrix_json
   ${CMAKE_CURRENT_LIST_DIR}/test_format.cpp
