@@ -2,6 +2,7 @@
 
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -237,6 +238,15 @@ Trace shrink_trace(const SafetyProblem& problem, const Trace& cex, const Preferr
     // A limit or a solver failure: the concrete pass's trace stands.
   }
   return start;
+}
+
+Trace rest_inputs_concretely(const SafetyProblem& problem, const Trace& cex, const PreferredValue& preferred,
+                             const Limits& limits) {
+  try {
+    return rest_concretely(problem, cex, preferred, limits);
+  } catch (const std::logic_error&) {
+    return cex;
+  }
 }
 
 }  // namespace cemv::checker

@@ -41,4 +41,13 @@ PreferredValue plant_at_rest(const std::vector<std::pair<const encoder::Encoding
 Trace shrink_trace(const SafetyProblem& problem, const Trace& cex, const PreferredValue& preferred,
                    const Limits& limits, std::size_t max_cycles = 400);
 
+// The first pass alone, without the solver: each input put back at its
+// preferred value over every cycle, then over halves of the cycles down to
+// single cycles, wherever the violation still happens on the encoding's own
+// evaluator. Microseconds a try; for a trace a seeded run found, which
+// already changes few inputs, it is most of what the solver's pass would
+// give. `cex` itself when the evaluator cannot run the problem.
+Trace rest_inputs_concretely(const SafetyProblem& problem, const Trace& cex, const PreferredValue& preferred,
+                             const Limits& limits);
+
 }  // namespace cemv::checker

@@ -17,7 +17,8 @@ if(TARGET cemv_checker)
 endif()
 
 if(TARGET cemv_checker)
-  add_executable(test_checker_reduce ${CMAKE_CURRENT_LIST_DIR}/test_reduce.cpp)
+  add_executable(test_checker_reduce ${CMAKE_CURRENT_LIST_DIR}/test_reduce.cpp
+                                     ${CMAKE_CURRENT_LIST_DIR}/test_round_values.cpp)
   target_link_libraries(test_checker_reduce PRIVATE cemv_checker_problems GTest::gtest_main)
   gtest_discover_tests(test_checker_reduce DISCOVERY_MODE PRE_TEST)
   add_executable(test_checker_localize ${CMAKE_CURRENT_LIST_DIR}/test_localize.cpp)
