@@ -37,9 +37,25 @@ void difference(Pages& pages, const PlcFigures::Output& o, const std::string& nu
   t.widths_mm = {16, 22, 22, 126};
   t.head = {"Scan", "Matrix", "Program", "Program inputs changed"};
   t.font_pt = 8;
-  for (const auto& s : o.scans)
-    t.rows.push_back({cell(std::to_string(s.scan), "num"), cell(std::to_string(s.matrix), "num"),
-                      cell(std::to_string(s.program), s.matrix == s.program ? "num" : "num bad"), cell(s.inputs)});
+  // Scans in which nothing changes (no input, both outputs as before and
+  // equal) are one row: a run waiting for a 2 s delay is 20 such scans.
+  auto quiet = [&](std::size_t i) {
+    const auto& s = o.scans[i];
+    return i > 0 && s.inputs.empty() && s.matrix == s.program && s.matrix == o.scans[i - 1].matrix &&
+           s.program == o.scans[i - 1].program;
+  };
+  for (std::size_t i = 0; i < o.scans.size();) {
+    const auto& s = o.scans[i];
+    std::size_t end = i + 1;
+    if (quiet(i))
+      while (end < o.scans.size() && quiet(end)) ++end;
+    const std::string scans = end - i > 1 ? std::to_string(s.scan) + "-" + std::to_string(o.scans[end - 1].scan)
+                                          : std::to_string(s.scan);
+    t.rows.push_back({cell(scans, "num"), cell(std::to_string(s.matrix), "num"),
+                      cell(std::to_string(s.program), s.matrix == s.program ? "num" : "num bad"),
+                      cell(quiet(i) ? "(no change)" : s.inputs)});
+    i = end;
+  }
   pages.table(t);
 }
 

@@ -59,6 +59,12 @@ if(TARGET cemv_plc_check AND TARGET cemv_checker)
     MATCH "079ea75b7bd14c99c456362ae99a9ae0d7afa5364701df1bf5b7d0b78cdd3858.*Difference on P_101_RUN.*In scan 1 the matrix writes P_101_RUN = 1 and the program writes P_101_RUN = 0"
     COMMAND bash -c "mkdir -p \"$4\" && \"$1\" evidence \"$2\"/matrix.json --plc \"$2\"/plc/tank_t100_off_delay.st --map \"$2\"/plc/tank_t100.map.json --timeout 5 --out \"$4\"/evidence.html -q && tr '\\n' ' ' < \"$4\"/evidence.html"
             plc $<TARGET_FILE:cemv> ${PLC_TANK} unused ${CMAKE_BINARY_DIR}/plc_export/evidence)
+  # The 1oo3 copy's run waits 20 scans for the on-delay: the scans in which
+  # nothing changes are one row a stretch.
+  cemv_cli_test(NAME cli_evidence_plc_quiet_scans_folded EXIT 0
+    MATCH "Difference on XV_101.*<td class=\"num\">[0-9]+-[0-9]+</td><td class=\"num\">[01]</td><td class=\"num\">[01]</td><td>\\(no change\\)</td>"
+    COMMAND bash -c "mkdir -p \"$4\" && \"$1\" evidence \"$2\"/matrix.json --plc \"$2\"/plc/tank_t100_one_of_three.st --map \"$2\"/plc/tank_t100.map.json --out \"$4\"/evidence.html -q && tr '\\n' ' ' < \"$4\"/evidence.html"
+            plc $<TARGET_FILE:cemv> ${PLC_TANK} unused ${CMAKE_BINARY_DIR}/plc_export/evidence_1oo3)
   cemv_cli_test(NAME cli_evidence_map_without_plc_exit2 EXIT 2
     MATCH "--map and --pou apply to --plc PROGRAM"
     COMMAND $<TARGET_FILE:cemv> evidence ${PLC_TANK}/matrix.json --map x.json --out ${CMAKE_BINARY_DIR}/plc_export/unused.html)
