@@ -18,6 +18,7 @@
 #include "formats/matrix_json.hpp"
 #include "formats/plc_map.hpp"
 #include "formats/scenario_writer.hpp"
+#include "model/vocabulary.hpp"
 #include "plc/parser.hpp"
 #include "plc_check/check.hpp"
 #include "plc_check/report.hpp"
@@ -64,8 +65,18 @@ void write_difference(const PlcArgs& a, const model::Matrix& m, plc_check::PlcCh
                                                   "; the expectation is the program's value, so the matrix fails it",
                                               expect)));
   reports::TimingDiagram diagram;
-  diagram.title = r.pou + " against " + m.name + ": " + o.question.tag;
+  diagram.title = "program " + r.pou + " against matrix " + m.name + ": " + o.question.tag;
   diagram.shown.push_back(key);
+  // Every input the run holds away from the plant at rest, changing or not:
+  // the run is made of what the difference needs (docs/plc.md).
+  const model::CycleInput rest = model::default_cycle_input(m);
+  const model::InputTable table(m);
+  for (std::size_t i = 0; i < table.size(); ++i)
+    for (const auto& scan : d.matrix_inputs)
+      if (scan.tags.at(i).value != rest.tags.at(i).value || scan.tags.at(i).bad_quality != rest.tags.at(i).bad_quality) {
+        diagram.inputs_shown.push_back(table.tags()[i].name);
+        break;
+      }
   diagram.marks.push_back({static_cast<std::size_t>(d.scan), "first difference: matrix " +
                                                                  std::to_string(d.matrix_values.back()) + ", program " +
                                                                  std::to_string(d.program_values.back())});

@@ -167,8 +167,13 @@ namespace {
 // values made round numbers (checker/round_values.hpp), and replayed there.
 checker::Trace readable_run(const checker::OwnedProblem& original, const checker::OwnedProblem& reduced,
                             const checker::Trace& run, const model::Matrix& m, const CheckOptions& o) {
-  const checker::Trace rested = checker::rest_inputs_concretely(reduced.problem, run, at_rest(m).rest, o.limits);
-  checker::Trace t = checker::round_values(original.problem, checker::lift_trace(original.problem, rested));
+  const auto rest = at_rest(m).rest;
+  const checker::Trace rested = checker::rest_inputs_concretely(reduced.problem, run, rest, o.limits);
+  // The inputs the reduction left out play no part; lifted, they read 0 (a
+  // level below its low limit): at rest instead, on the product as built.
+  const checker::Trace lifted =
+      checker::rest_inputs_concretely(original.problem, checker::lift_trace(original.problem, rested), rest, o.limits);
+  checker::Trace t = checker::round_values(original.problem, lifted);
   checker::check::replay_counterexample(original.problem, t, &o.limits);
   return t;
 }

@@ -145,7 +145,8 @@ std::vector<Row> rows_of(const model::Matrix& m, const checker::ConcreteTrace& t
       r.bad.push_back(t.inputs[k].tags[i].bad_quality);
       r.changes |= r.value[k] != r.value[0] || r.bad[k] != r.bad[0];
     }
-    if (!r.changes) continue;
+    const bool shown = std::find(d.inputs_shown.begin(), d.inputs_shown.end(), tag.name) != d.inputs_shown.end();
+    if (!r.changes && !shown) continue;
     if (r.kind == RowKind::Analog) add_levels(m, tag, r);
     rows.push_back(std::move(r));
   }

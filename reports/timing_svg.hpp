@@ -35,6 +35,10 @@ struct TimingDiagram {
   // shown ones, in model::observables order). Input tags are drawn when they
   // change, always.
   bool all_changing = false;
+  // Input tags drawn whether or not they change (names as the matrix spells
+  // them): a run that holds a transmitter over its limit from the first cycle
+  // needs it drawn, though it never changes.
+  std::vector<std::string> inputs_shown;
   std::vector<TimingMark> marks;
   // Cycles (0-based) at which a test checks its expectations: small ticks
   // under the cycle axis, without a line of text each (a test has many).
