@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "formats/matrix_json.hpp"
+#include "formats/scenario_reader.hpp"
 #include "model/text.hpp"
 
 namespace cemv::formats {
@@ -21,39 +22,13 @@ using namespace cemv::model;
 
 namespace {
 
-using nlohmann::json;
-
-// ---- small helpers ---------------------------------------------------------
-
-std::string json_type_name(const json& j) {
-  if (j.is_boolean()) return "a boolean";
-  if (j.is_number_integer() || j.is_number_unsigned()) return "an integer";
-  if (j.is_number()) return "a number";
-  if (j.is_string()) return "a string";
-  if (j.is_array()) return "an array";
-  if (j.is_object()) return "an object";
-  return "null";
-}
+using namespace scenario_detail;
 
 // ---- the parser ------------------------------------------------------------
 
-class Parser {
+class Parser : public ScenarioContext {
  public:
-  Parser(const Matrix& m) : m_(m), table_(m) {
-    for (const auto& t : table_.tags()) input_names_.push_back(t.name);
-    for (const auto& e : m_.effects) {
-      if (e.function == EffectFunction::Comment) continue;
-      for (std::size_t k = 0; k < e.tags.size(); ++k) {
-        if (parse_internal_ref(e.tags[k].name)) continue;
-        outputs_.push_back({e.tags[k].name, e.id, static_cast<int>(k + 1)});
-        output_names_.push_back(e.tags[k].name);
-      }
-    }
-    for (const auto& c : m_.causes) {
-      cause_names_.push_back(c.name);
-    }
-    for (const auto& e : m_.effects) effect_names_.push_back(e.name);
-  }
+  using ScenarioContext::ScenarioContext;
 
   Scenario parse(const json& root) {
     Scenario sc;
@@ -93,7 +68,7 @@ class Parser {
                 "the scenario exceeds " + std::to_string(kMaxScenarioCycles) + " cycles in total");
           break;
         }
-        std::uint64_t width = std::max<std::uint64_t>(1, table_.size());
+        std::uint64_t width = std::max<std::uint64_t>(1, table.size());
         if (total * width > kMaxScenarioTagValues) {
           error("steps[" + std::to_string(i) + "]",
                 "the scenario is too long for this matrix: " + std::to_string(total) + " cycles x " +
@@ -108,112 +83,21 @@ class Parser {
   }
 
   void finish() {
-    if (issues_.empty()) return;
+    if (issues.empty()) return;
     // A scenario whose tags are mostly unknown is most likely the scenario of
     // another matrix: one line says so before the list of unknown tags.
-    if (tags_seen_.size() >= 3 && 2 * tags_unknown_.size() > tags_seen_.size()) {
-      const std::string n = std::to_string(tags_seen_.size());
-      std::string what = tags_unknown_.size() == tags_seen_.size()
-                             ? "none of the scenario's " + n + " tags is in matrix " + m_.name
-                             : std::to_string(tags_unknown_.size()) + " of the scenario's " + n +
-                                   " tags are not in matrix " + m_.name;
-      issues_.insert(issues_.begin(), LoadIssue{"", what + "; is it the scenario of another matrix?"});
+    if (tags_seen.size() >= 3 && 2 * tags_unknown.size() > tags_seen.size()) {
+      const std::string n = std::to_string(tags_seen.size());
+      std::string what = tags_unknown.size() == tags_seen.size()
+                             ? "none of the scenario's " + n + " tags is in matrix " + m.name
+                             : std::to_string(tags_unknown.size()) + " of the scenario's " + n +
+                                   " tags are not in matrix " + m.name;
+      issues.insert(issues.begin(), LoadIssue{"", what + "; is it the scenario of another matrix?"});
     }
-    throw LoadError(issues_);
+    throw LoadError(issues);
   }
 
  private:
-  struct OutputRef {
-    std::string name;
-    int effect;
-    int k;
-  };
-
-  void error(std::string where, std::string what) {
-    issues_.push_back({std::move(where), std::move(what)});
-  }
-
-  static std::string join(const std::string& path, const std::string& key) {
-    return path.empty() ? key : path + "." + key;
-  }
-
-  void check_keys(const json& obj, const std::string& path,
-                  std::initializer_list<const char*> allowed) {
-    std::vector<std::string> names(allowed.begin(), allowed.end());
-    for (const auto& [k, v] : obj.items()) {
-      (void)v;
-      if (std::find(names.begin(), names.end(), k) == names.end())
-        error(join(path, k), "unknown key" + did_you_mean(k, names));
-    }
-  }
-
-  std::string string_field(const json& j, const std::string& where) {
-    if (!j.is_string()) {
-      error(where, "must be a string, not " + json_type_name(j));
-      return "";
-    }
-    return j.get<std::string>();
-  }
-
-  std::optional<bool> bool_field(const json& j, const std::string& where) {
-    if (!j.is_boolean()) {
-      error(where, "must be true or false, not " + json_type_name(j));
-      return std::nullopt;
-    }
-    return j.get<bool>();
-  }
-
-  std::optional<std::int64_t> int_field(const json& j, const std::string& where) {
-    if (j.is_number_unsigned()) {
-      auto v = j.get<std::uint64_t>();
-      if (v > static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max())) {
-        error(where, "out of range");
-        return std::nullopt;
-      }
-      return static_cast<std::int64_t>(v);
-    }
-    if (j.is_number_integer()) return j.get<std::int64_t>();
-    error(where, "must be an integer, not " + json_type_name(j));
-    return std::nullopt;
-  }
-
-  // A REAL (IEEE single precision, 6.3.1): finite and within float range.
-  std::optional<float> real_field(const json& j, const std::string& where) {
-    if (!j.is_number()) {
-      error(where, "must be a number, not " + json_type_name(j));
-      return std::nullopt;
-    }
-    double d = j.get<double>();
-    // Out of range is what rounds to an infinity as a float: the shortest
-    // text of the largest float, 3.4028235e+38, is a little above it as a
-    // double and must read back (the checker writes it in counterexamples).
-    if (!std::isfinite(d) || std::isinf(static_cast<float>(d))) {
-      error(where, "is outside the range of a REAL (32-bit float)");
-      return std::nullopt;
-    }
-    return static_cast<float>(d);
-  }
-
-  // The value of an input (or simulated) tag: a boolean for Boolean tags, a
-  // number for analog ones.
-  std::optional<float> tag_value(const json& j, TagKind kind, const std::string& tag,
-                                 const std::string& where) {
-    if (kind == TagKind::Bool) {
-      if (!j.is_boolean()) {
-        error(where, "tag " + in_quotes(tag) + " is Boolean: the value must be true or false, not " +
-                         json_type_name(j));
-        return std::nullopt;
-      }
-      return j.get<bool>() ? 1.0f : 0.0f;
-    }
-    if (!j.is_number()) {
-      error(where, "tag " + in_quotes(tag) + " is analog: the value must be a number, not " +
-                       json_type_name(j));
-      return std::nullopt;
-    }
-    return real_field(j, where);
-  }
-
   std::vector<InputSetting> parse_inputs(const json& j, const std::string& path) {
     std::vector<InputSetting> out;
     if (!j.is_object()) {
@@ -222,12 +106,12 @@ class Parser {
     }
     for (const auto& [name, v] : j.items()) {
       std::string where = join(path, name);
-      auto idx = table_.find(name);
-      tags_seen_.insert(tag_key(name));
+      auto idx = table.find(name);
+      tags_seen.insert(tag_key(name));
       if (!idx) {
-        std::string hint = did_you_mean(name, input_names_);
+        std::string hint = did_you_mean(name, input_names);
         // The key by value: clang before 16 cannot capture a structured binding.
-        bool is_output = std::any_of(outputs_.begin(), outputs_.end(), [&, key = tag_key(name)](const OutputRef& o) {
+        bool is_output = std::any_of(outputs.begin(), outputs.end(), [&, key = tag_key(name)](const OutputRef& o) {
           return tag_key(o.name) == key;
         });
         if (is_output)
@@ -236,14 +120,14 @@ class Parser {
                           "simulate_tag command to force one)");
         else
           error(path, "unknown tag " + in_quotes(name) + hint);
-        if (!is_output) tags_unknown_.insert(tag_key(name));
+        if (!is_output) tags_unknown.insert(tag_key(name));
         continue;
       }
       if (std::any_of(out.begin(), out.end(), [&](const InputSetting& s) { return s.tag == *idx; })) {
-        error(where, "tag " + in_quotes(table_.tags()[*idx].name) + " is set twice");
+        error(where, "tag " + in_quotes(table.tags()[*idx].name) + " is set twice");
         continue;
       }
-      const InputTag& tag = table_.tags()[*idx];
+      const InputTag& tag = table.tags()[*idx];
       InputSetting s;
       s.tag = *idx;
       if (v.is_object()) {
@@ -269,422 +153,6 @@ class Parser {
     return out;
   }
 
-  // A cause referenced by id (integer) or name (string, case-insensitive).
-  const Cause* cause_ref(const json& j, const std::string& where) {
-    const Cause* c = nullptr;
-    if (j.is_number_integer() || j.is_number_unsigned()) {
-      auto id = int_field(j, where);
-      if (id && *id >= 0 && *id <= std::numeric_limits<int>::max())
-        c = m_.find_cause(static_cast<int>(*id));
-      if (!c) {
-        error(where, "no cause with id " + j.dump());
-        return nullptr;
-      }
-    } else if (j.is_string()) {
-      std::string key = tag_key(j.get<std::string>());
-      for (const auto& x : m_.causes)
-        if (tag_key(x.name) == key) c = &x;
-      if (!c) {
-        error(where, "no cause named " + in_quotes(j.get<std::string>()) +
-                         did_you_mean(j.get<std::string>(), cause_names_));
-        return nullptr;
-      }
-    } else {
-      error(where, "must be a cause id or name, not " + json_type_name(j));
-      return nullptr;
-    }
-    if (c->function == CauseFunction::Comment) {
-      error(where, "cause " + std::to_string(c->id) + " is comment-only and is not processed");
-      return nullptr;
-    }
-    return c;
-  }
-
-  const Effect* effect_ref(const json& j, const std::string& where) {
-    const Effect* e = nullptr;
-    if (j.is_number_integer() || j.is_number_unsigned()) {
-      auto id = int_field(j, where);
-      if (id && *id >= 0 && *id <= std::numeric_limits<int>::max())
-        e = m_.find_effect(static_cast<int>(*id));
-      if (!e) {
-        error(where, "no effect with id " + j.dump());
-        return nullptr;
-      }
-    } else if (j.is_string()) {
-      std::string key = tag_key(j.get<std::string>());
-      for (const auto& x : m_.effects)
-        if (tag_key(x.name) == key) e = &x;
-      if (!e) {
-        error(where, "no effect named " + in_quotes(j.get<std::string>()) +
-                         did_you_mean(j.get<std::string>(), effect_names_));
-        return nullptr;
-      }
-    } else {
-      error(where, "must be an effect id or name, not " + json_type_name(j));
-      return nullptr;
-    }
-    if (e->function == EffectFunction::Comment) {
-      error(where, "effect " + std::to_string(e->id) + " is comment-only and is not processed");
-      return nullptr;
-    }
-    return e;
-  }
-
-  // docs/scenario.md "Commands (10.7)": one command, its arguments checked
-  // against the matrix. Each argument kind has its own reader below.
-  std::optional<Command> parse_command(const json& j, const std::string& path) {
-    if (!j.is_object()) {
-      error(path, "a command is an object, not " + json_type_name(j));
-      return std::nullopt;
-    }
-    auto op = parse_op(j, path);
-    if (!op) return std::nullopt;
-    const std::string name = j["op"].get<std::string>();
-    Command cmd;
-    cmd.op = *op;
-    std::size_t before = issues_.size();
-    CommandArgs args{*this, j, path, name, cmd};
-    switch (*op) {
-      case CommandOp::AckCause:
-        check_keys(j, path, {"op", "cause"});
-        args.cause();
-        break;
-      case CommandOp::ResetEffect:
-      case CommandOp::OverrideEffect:
-      case CommandOp::StopOverride:
-        check_keys(j, path, {"op", "effect"});
-        args.effect();
-        break;
-      case CommandOp::SoftBypassCause:
-        check_keys(j, path, {"op", "cause", "on"});
-        args.cause();
-        args.on();
-        break;
-      case CommandOp::SoftBypassTag:
-        check_keys(j, path, {"op", "cause", "tag", "on"});
-        args.tag_index(args.cause());
-        args.on();
-        break;
-      case CommandOp::SoftBypassEffect:
-        check_keys(j, path, {"op", "effect", "on"});
-        args.effect();
-        args.on();
-        break;
-      case CommandOp::SimulateTag:
-        check_keys(j, path, {"op", "tag", "value"});
-        args.simulated_tag_and_value();
-        break;
-      case CommandOp::StopSimulation:
-        check_keys(j, path, {"op", "tag"});
-        args.stopped_tag();
-        break;
-      case CommandOp::ClearFirstOut:
-        check_keys(j, path, {"op", "group"});
-        args.group();
-        break;
-      case CommandOp::ClearAlarms:
-        check_keys(j, path, {"op", "cause", "effect"});
-        args.cause_or_effect();
-        break;
-    }
-    if (issues_.size() != before) return std::nullopt;
-    return cmd;
-  }
-
-  // The "op" of a command: a known command name.
-  std::optional<CommandOp> parse_op(const json& j, const std::string& path) {
-    if (!j.contains("op") || !j["op"].is_string()) {
-      error(join(path, "op"), "missing or not a string; a command names its \"op\"");
-      return std::nullopt;
-    }
-    std::string name = j["op"].get<std::string>();
-    auto op = command_op_from_string(name);
-    if (!op) {
-      std::vector<std::string> ops;
-      for (int i = 0; i <= static_cast<int>(CommandOp::ClearAlarms); ++i)
-        ops.push_back(to_string(static_cast<CommandOp>(i)));
-      error(join(path, "op"), "unknown command " + in_quotes(name) + did_you_mean(name, ops));
-    }
-    return op;
-  }
-
-  // A simulatable tag by name (O.8): an input tag of the matrix, else one of its
-  // output tags; nullopt (and an error naming the closest tags) otherwise.
-  struct SimulatedTag {
-    std::string name;
-    TagKind kind = TagKind::Bool;
-  };
-  std::optional<SimulatedTag> simulatable_tag(const std::string& tag, const std::string& where) {
-    tags_seen_.insert(tag_key(tag));
-    if (auto idx = table_.find(tag)) return SimulatedTag{table_.tags()[*idx].name, table_.tags()[*idx].kind};
-    auto out = std::find_if(outputs_.begin(), outputs_.end(),
-                            [&](const OutputRef& o) { return tag_key(o.name) == tag_key(tag); });
-    if (out != outputs_.end()) return SimulatedTag{out->name, TagKind::Bool};
-    std::vector<std::string> all = input_names_;
-    all.insert(all.end(), output_names_.begin(), output_names_.end());
-    error(where, "unknown tag " + in_quotes(tag) + did_you_mean(tag, all));
-    tags_unknown_.insert(tag_key(tag));
-    return std::nullopt;
-  }
-
-  // The arguments of one command, each read into `cmd` with its own checks.
-  struct CommandArgs {
-    Parser& p;
-    const json& j;
-    const std::string& path;
-    const std::string& name;
-    Command& cmd;
-
-    const json* need(const char* key) {
-      if (!j.contains(key)) {
-        p.error(path, "command " + in_quotes(name) + " needs \"" + key + "\"");
-        return nullptr;
-      }
-      return &j[key];
-    }
-    const Cause* cause() {
-      const json* v = need("cause");
-      if (!v) return nullptr;
-      const Cause* c = p.cause_ref(*v, join(path, "cause"));
-      if (c) cmd.cause = c->id;
-      return c;
-    }
-    void effect() {
-      const json* v = need("effect");
-      if (!v) return;
-      if (const Effect* e = p.effect_ref(*v, join(path, "effect"))) cmd.effect = e->id;
-    }
-    void on() {
-      const json* v = need("on");
-      if (!v) return;
-      if (auto b = p.bool_field(*v, join(path, "on"))) cmd.on = *b;
-    }
-    // soft_bypass_tag (O.6): the position of an input tag of cause `c`, 1-3.
-    void tag_index(const Cause* c) {
-      const json* t = need("tag");
-      if (!t) return;
-      auto k = p.int_field(*t, join(path, "tag"));
-      if (!k || !c) return;
-      if (*k < 1 || *k > static_cast<std::int64_t>(c->tags.size()))
-        p.error(join(path, "tag"), "cause " + std::to_string(c->id) + " has " + std::to_string(c->tags.size()) +
-                                       " input tag(s); the tag index is 1-" + std::to_string(c->tags.size()));
-      else
-        cmd.tag = static_cast<int>(*k);
-    }
-    // simulate_tag (O.8): the tag, and a value of its kind.
-    void simulated_tag_and_value() {
-      const json* t = need("tag");
-      const json* v = need("value");
-      if (!t) return;
-      std::string tag = p.string_field(*t, join(path, "tag"));
-      if (tag.empty()) return;
-      auto sim = p.simulatable_tag(tag, join(path, "tag"));
-      if (!sim) return;
-      cmd.tag_name = sim->name;
-      if (v)
-        if (auto x = p.tag_value(*v, sim->kind, sim->name, join(path, "value"))) cmd.value = *x;
-    }
-    // stop_simulation (O.8): one tag, or (without "tag") every simulation.
-    void stopped_tag() {
-      if (!j.contains("tag")) return;
-      std::string tag = p.string_field(j["tag"], join(path, "tag"));
-      if (!j["tag"].is_string()) return;
-      if (auto sim = p.simulatable_tag(tag, join(path, "tag"))) cmd.tag_name = sim->name;
-    }
-    // clear_first_out (O.9): a first-out group.
-    void group() {
-      const json* g = need("group");
-      if (!g) return;
-      auto v = p.int_field(*g, join(path, "group"));
-      if (v && (*v < 1 || *v > kMaxFirstOutGroup))
-        p.error(join(path, "group"), "first-out groups are 1-" + std::to_string(kMaxFirstOutGroup));
-      else if (v)
-        cmd.group = static_cast<int>(*v);
-    }
-    // clear_alarms (O.10): exactly one of a cause and an effect.
-    void cause_or_effect() {
-      if (j.contains("cause") == j.contains("effect")) {
-        p.error(path, "command 'clear_alarms' needs exactly one of \"cause\" and \"effect\"");
-      } else if (j.contains("cause")) {
-        if (const Cause* c = p.cause_ref(j["cause"], join(path, "cause"))) cmd.cause = c->id;
-      } else {
-        if (const Effect* e = p.effect_ref(j["effect"], join(path, "effect"))) cmd.effect = e->id;
-      }
-    }
-  };
-
-
-  // "cause[ID or NAME].FIELD", "effect[..].FIELD", "effect[..].tag[k]" or an
-  // output tag name.
-  // docs/scenario.md "Expectations": KEY -> VALUE, where the key names a status
-  // field (cause[..].FIELD, effect[..].FIELD, effect[..].tag[k]) or an output tag.
-  std::optional<Expectation> parse_expectation(const std::string& key, const json& v,
-                                               const std::string& path) {
-    Expectation x;
-    x.key = key;
-    x.where = join(path, key);
-    const bool status = key.starts_with("cause[") || key.starts_with("effect[");
-    auto target = status ? status_target(key, x.where) : output_target(key, x.where);
-    if (!target) return std::nullopt;
-    x.target = *target;
-    x.type = target->observable.type;
-    auto expected = expected_value(x.type, v, x.where);
-    if (!expected) return std::nullopt;
-    x.expected = *expected;
-    return x;
-  }
-
-  // cause[ID or NAME].FIELD or effect[ID or NAME].FIELD.
-  std::optional<ExpectTarget> status_target(const std::string& key, const std::string& where) {
-    const bool is_cause = key.starts_with("cause[");
-    std::size_t open = key.find('[');
-    std::size_t close = key.find(']', open);
-    if (close == std::string::npos || close + 1 >= key.size() || key[close + 1] != '.') {
-      error(where, "malformed key; expected " + std::string(is_cause ? "cause" : "effect") +
-                       "[ID or NAME].FIELD");
-      return std::nullopt;
-    }
-    std::string ref = key.substr(open + 1, close - open - 1);
-    std::string field = key.substr(close + 2);
-    bool numeric = !ref.empty() && ref.size() <= 9 &&
-                   std::all_of(ref.begin(), ref.end(), [](char c) { return c >= '0' && c <= '9'; });
-    json ref_json = numeric ? json(std::stoi(ref)) : json(ref);
-    std::optional<Observable> o;
-    if (is_cause) {
-      const Cause* c = cause_ref(ref_json, where);
-      if (!c) return std::nullopt;
-      o = cause_field(*c, field, where);
-    } else {
-      const Effect* e = effect_ref(ref_json, where);
-      if (!e) return std::nullopt;
-      o = effect_field(*e, field, where);
-    }
-    if (!o) return std::nullopt;
-    ExpectTarget t;
-    t.kind = ExpectTarget::Kind::Status;
-    t.observable = *o;
-    return t;
-  }
-
-  // A status field of a cause (C.9).
-  std::optional<Observable> cause_field(const Cause& c, const std::string& field, const std::string& where) {
-    const auto& fields = cause_fields();
-    auto f = std::find_if(fields.begin(), fields.end(), [&](const FieldInfo& fi) { return field == fi.name; });
-    if (f == fields.end()) {
-      std::vector<std::string> names;
-      for (const auto& fi : fields) names.push_back(fi.name);
-      error(where, "unknown cause field " + in_quotes(field) + did_you_mean(field, names));
-      return std::nullopt;
-    }
-    Observable o;
-    o.kind = Node::Kind::Cause;
-    o.id = c.id;
-    o.field = f->name;
-    o.type = f->type;
-    o.key = observable_key({o.kind, o.id}, o.field);
-    return o;
-  }
-
-  // A status field of an effect (E.11), or tag[k], the value of its output k (E.9).
-  std::optional<Observable> effect_field(const Effect& e, const std::string& field, const std::string& where) {
-    Observable o;
-    o.kind = Node::Kind::Effect;
-    o.id = e.id;
-    if (field.starts_with("tag[") && field.ends_with("]")) {
-      std::string digits = field.substr(4, field.size() - 5);
-      bool ok = !digits.empty() && digits.size() <= 2 &&
-                std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
-      int k = ok ? std::stoi(digits) : 0;
-      if (k < 1 || k > static_cast<int>(e.tags.size())) {
-        error(where, "effect " + std::to_string(e.id) + " has " + std::to_string(e.tags.size()) +
-                         " output tag(s); tag[k] takes k = 1-" + std::to_string(e.tags.size()));
-        return std::nullopt;
-      }
-      o.field = "tag";
-      o.tag = k;
-      o.type = FieldType::Bool;
-      o.key = observable_key({o.kind, o.id}, o.field, k);
-      return o;
-    }
-    const auto& fields = effect_fields();
-    auto f = std::find_if(fields.begin(), fields.end(), [&](const FieldInfo& fi) { return field == fi.name; });
-    if (f == fields.end()) {
-      std::vector<std::string> names;
-      for (const auto& fi : fields) names.push_back(fi.name);
-      names.push_back("tag[1]");
-      error(where, "unknown effect field " + in_quotes(field) + did_you_mean(field, names));
-      return std::nullopt;
-    }
-    o.field = f->name;
-    o.type = f->type;
-    o.key = observable_key({o.kind, o.id}, o.field);
-    return o;
-  }
-
-  // An output tag by name: the value the matrix writes to it (E.9).
-  std::optional<ExpectTarget> output_target(const std::string& key, const std::string& where) {
-    auto out = std::find_if(outputs_.begin(), outputs_.end(),
-                            [&](const OutputRef& o) { return tag_key(o.name) == tag_key(key); });
-    tags_seen_.insert(tag_key(key));
-    if (out == outputs_.end()) {
-      std::string hint = did_you_mean(key, output_names_);
-      if (!table_.find(key)) tags_unknown_.insert(tag_key(key));
-      if (table_.find(key))
-        error(where, in_quotes(key) + " is an input tag; expectations name output tags, "
-                                      "cause[..].FIELD or effect[..].FIELD");
-      else
-        error(where, "unknown expectation key " + in_quotes(key) +
-                         ": not an output tag, nor cause[..].FIELD / effect[..].FIELD" + hint);
-      return std::nullopt;
-    }
-    ExpectTarget t;
-    t.kind = ExpectTarget::Kind::OutputTag;
-    t.output_tag = out->name;
-    Observable& o = t.observable;
-    o.kind = Node::Kind::Effect;
-    o.id = out->effect;
-    o.field = "tag";
-    o.tag = out->k;
-    o.type = FieldType::Bool;
-    o.key = observable_key({o.kind, o.id}, o.field, o.tag);
-    return t;
-  }
-
-  // The expected value, written as the field's type is (docs/scenario.md).
-  std::optional<int> expected_value(FieldType type, const json& v, const std::string& where) {
-    switch (type) {
-      case FieldType::Bool:
-        if (!v.is_boolean()) {
-          error(where, "expects true or false, not " + json_type_name(v));
-          return std::nullopt;
-        }
-        return v.get<bool>() ? 1 : 0;
-      case FieldType::Int: {
-        if (!v.is_number_integer() && !v.is_number_unsigned()) {
-          error(where, "expects an integer, not " + json_type_name(v));
-          return std::nullopt;
-        }
-        auto n = v.get<std::int64_t>();
-        if (n < 0 || n > 1000) {
-          error(where, "expects a count, not " + v.dump());
-          return std::nullopt;
-        }
-        return static_cast<int>(n);
-      }
-      case FieldType::Voting: {
-        auto s = v.is_string() ? voting_from_string(v.get<std::string>()) : std::nullopt;
-        if (!s) {
-          error(where, "expects a voting: \"1oo1\", \"1oo2\", \"2oo2\", \"1oo3\", \"2oo3\", "
-                       "\"3oo3\" or \"bypass\", not " + v.dump());
-          return std::nullopt;
-        }
-        return static_cast<int>(*s);
-      }
-    }
-    return std::nullopt;
-  }
-
-
   ScenarioStep parse_step(const json& j, const std::string& path) {
     ScenarioStep st;
     if (!j.is_object()) {
@@ -700,7 +168,7 @@ class Parser {
         error(join(path, "commands"), "must be an array, not " + json_type_name(cs));
       } else {
         for (std::size_t i = 0; i < cs.size(); ++i)
-          if (auto c = parse_command(cs[i], path + ".commands[" + std::to_string(i) + "]"))
+          if (auto c = read_command(*this, cs[i], path + ".commands[" + std::to_string(i) + "]"))
             st.commands.push_back(*c);
       }
     }
@@ -716,7 +184,7 @@ class Parser {
     } else if (j.contains("ms")) {
       auto n = int_field(j["ms"], join(path, "ms"));
       if (n) {
-        std::uint64_t cycle = m_.cycle_ms == 0 ? 1 : m_.cycle_ms;
+        std::uint64_t cycle = m.cycle_ms == 0 ? 1 : m.cycle_ms;
         if (*n < 1)
           error(join(path, "ms"), "must be positive, not " + std::to_string(*n));
         else if (static_cast<std::uint64_t>(*n) % cycle != 0)
@@ -734,24 +202,11 @@ class Parser {
         error(join(path, "expect"), "must be an object, not " + json_type_name(ex));
       } else {
         for (const auto& [k, v] : ex.items())
-          if (auto x = parse_expectation(k, v, join(path, "expect"))) st.expect.push_back(*x);
+          if (auto x = read_expectation(*this, k, v, join(path, "expect"))) st.expect.push_back(*x);
       }
     }
     return st;
   }
-
-  const Matrix& m_;
-  InputTable table_;
-  std::vector<std::string> input_names_;
-  std::vector<OutputRef> outputs_;
-  std::vector<std::string> output_names_;
-  std::vector<std::string> cause_names_;
-  std::vector<std::string> effect_names_;
-  std::vector<LoadIssue> issues_;
-  // Tag names the scenario uses (inputs, simulated tags, output expectations)
-  // and those of them the matrix does not know, by tag_key.
-  std::set<std::string> tags_seen_;
-  std::set<std::string> tags_unknown_;
 };
 
 }  // namespace
