@@ -47,14 +47,18 @@ class Judge {
     const std::vector<model::CycleInput> cycles = checker::expand(m_, run, start_);
     runtime::Runtime rt(m_);
     for (const auto& in : prefix_) rt.step(in);
-    properties::Trace t = trace_;
+    // The run's cycles are judged after the prefix's and dropped again: the
+    // prefix (hours of a soft bypass: 576,000 cycles) is held once, not
+    // copied for every run.
+    const std::size_t base = trace_.size();
     std::vector<int> obs;
     for (const auto& in : cycles) {
       rt.step(in);
       rt.snapshot(obs);
-      t.push_back({in, obs});
+      trace_.push_back({in, obs});
     }
-    const auto e = eval_.evaluate(*g_.property, g_.file->assumptions, t);
+    const auto e = eval_.evaluate(*g_.property, g_.file->assumptions, trace_);
+    trace_.erase(trace_.begin() + static_cast<long>(base), trace_.end());
     if (!e.holds || !e.cycle || *e.cycle < prefix_.size()) return -1;
     return static_cast<long>(*e.cycle - prefix_.size());
   }

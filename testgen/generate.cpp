@@ -13,6 +13,7 @@
 #include <mutex>
 #include <set>
 
+#include "checker/engines/accelerated_bmc.hpp"
 #include "checker/prover.hpp"
 #include "checker/work_queue.hpp"
 #include "checker/replay.hpp"
@@ -84,7 +85,8 @@ class GroupRun {
 
  private:
   void decide_all() {
-    sweep_all();
+    sweep_all(false);
+    sweep_all(true);
     for (std::size_t i : members_) {
       if (results_[i].status == ObjectiveStatus::Covered) continue;
       const properties::Property& p = file_.properties[i];
@@ -136,25 +138,37 @@ class GroupRun {
   // question (testgen/sweep.hpp): the open test is extended by the shortest
   // run that reaches any of them, with every other one the same run can
   // reach as well, again and again; when none is within reach of its end, a
-  // new test starts from start-up. What no sweep reaches is taken one
-  // objective at a time below (long timers, any float, simulation, proof).
-  void sweep_all() {
+  // new test starts from start-up. With `held`, the same for the objectives
+  // that wait for a timer (a long horizon, or not reached by the first
+  // sweep), on macro steps of held inputs. What no sweep reaches is taken
+  // one objective at a time below (any float, simulation, proof).
+  void sweep_all(bool held) {
     std::set<std::size_t> left_out;  // reached by a sweep but not witnessed on the runtime
     for (;;) {
       std::vector<std::size_t> pending;
+      int horizon = 0;
       for (std::size_t i : members_) {
         const ObjectiveResult& r = results_[i];
-        if (r.status != ObjectiveStatus::Undecided || !r.reason.empty() || r.objective.simulates ||
-            r.objective.horizon >= kSweepDepth / 2 || left_out.count(i))
+        if (r.status != ObjectiveStatus::Undecided || !r.reason.empty() || r.objective.simulates || left_out.count(i))
           continue;
+        const bool long_horizon = r.objective.horizon >= kSweepDepth / 2;
+        const bool wanted = held ? long_horizon || swept_.count(i) > 0 : !long_horizon;
+        if (!wanted) continue;
         pending.push_back(i);
-        swept_.insert(i);
+        if (!held) swept_.insert(i);
+        horizon = std::max({horizon, r.objective.horizon, held ? timer_horizon(roots_of(i)) : 0});
       }
       if (pending.empty()) return;
       t0_ = std::chrono::steady_clock::now();
       detail::SweepQuestion q;
       q.file = &file_;
-      q.max_depth = kSweepDepth;
+      q.held = held;
+      q.max_depth = held ? checker::AcceleratedBmc::kMaxMacroSteps : kSweepDepth;
+      // Held inputs may be held far longer than a timer needs (any length
+      // satisfies a saturated one): a test holds them at most as long as
+      // one objective's search would (testgen/search.cpp).
+      const std::int64_t longest = std::min<std::int64_t>(
+          checker::kMaxTraceCycles, std::max(2 * horizon, horizon + options_.max_depth));
       // A question that reaches nothing spends all of its budget: a few
       // objectives left get a small one, many a whole objective's.
       q.budget = std::min<checker::Work>(options_.objective_work,
@@ -163,29 +177,33 @@ class GroupRun {
         q.targets.push_back(&file_.properties[i]);
         q.roots = merge(std::move(q.roots), roots_of(i));
       }
+      const std::string method = held ? "accelerated-bmc" : "bmc";
       if (room(pending.front())) {
         Draft& d = drafts_.back();
         q.prefix = d.inputs;
         q.roots = merge(std::move(q.roots), d.roots);
-        detail::SweepAnswer a = detail::sweep(m_, options_, q);
+        q.max_cycles = std::min<std::int64_t>(longest, static_cast<std::int64_t>(options_.max_test_cycles) -
+                                                           static_cast<std::int64_t>(d.inputs.size()));
+        detail::SweepAnswer a = q.max_cycles > 0 ? detail::sweep(m_, options_, q) : detail::SweepAnswer{};
         if (!a.cycles.empty()) {
           const std::size_t target = pending[a.reached.front()];
           std::vector<model::CycleInput> all = d.inputs;
           all.insert(all.end(), a.cycles.begin(), a.cycles.end());
-          if (adopt(d, std::move(all), target, "bmc")) {
+          if (adopt(d, std::move(all), target, method)) {
             d.roots = q.roots;
             continue;
           }
         }
         q.prefix.clear();
       }
+      q.max_cycles = longest;
       detail::SweepAnswer a = detail::sweep(m_, options_, q);
       if (a.cycles.empty()) return;
       const std::size_t target = pending[a.reached.front()];
       SearchResult r;
       r.kind = SearchResult::Kind::Found;
       r.cycles = std::move(a.cycles);
-      r.method = "bmc";
+      r.method = method;
       Goal g{&file_, &file_.properties[target], q.roots, results_[target].objective.horizon};
       if (!start(target, g, r)) left_out.insert(target);
     }

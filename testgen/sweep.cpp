@@ -5,6 +5,8 @@
 #include <optional>
 
 #include "checker/context_pool.hpp"
+#include "checker/engines/accelerated_bmc.hpp"
+#include "checker/engines/macro_unrolling.hpp"
 #include "checker/engines/solving.hpp"
 #include "checker/property_problem.hpp"
 #include "checker/random_runs.hpp"
@@ -97,11 +99,34 @@ Built build(z3::context& ctx, const model::Matrix& m, const SweepQuestion& q, co
   return Built{std::move(enc), std::move(monitors), assumption, std::move(open)};
 }
 
-}  // namespace
+// The witness found (every kept target reached in its last cycle) made
+// readable: inputs it does not need keep their held value.
+SweepAnswer finish(const model::Matrix& m, const TestgenOptions& options, const SweepQuestion& q, const Built& b,
+                   const model::CycleInput& hold, const checker::Limits& limits,
+                   const std::optional<checker::Trace>& found, SweepAnswer& out) {
+  z3::context& ctx = b.enc->ts.ctx();
+  const std::vector<properties::Monitor>& monitors = b.monitors;
+  const encoder::TransitionSystem& ts = b.enc->ts;
+  const z3::expr& assumption = b.assumption;
+  const std::shared_ptr<encoder::Encoding>& enc = b.enc;
+  checker::stop_if_interrupted(limits);
+  if (!found) {
+    if (out.reason.empty())
+      out.reason = std::string("not found (") + (q.held ? "held sweep, steps " : "sweep, depth ") + std::to_string(q.max_depth) + ")";
+    return out;
+  }
+  z3::expr good = ctx.bool_val(false);
+  for (std::size_t i : out.reached) good = good || monitors[i].good;
+  const checker::SafetyProblem problem{&ts, good, assumption};
+  const checker::Trace readable =
+      checker::shrink_trace(problem, *found, held_inputs(*enc, hold), limits.with_work(options.shrink_work));
+  checker::stop_if_interrupted(limits);
+  out.cycles = witness_inputs(readable, *enc, m, hold);
+  return out;
+}
 
-SweepAnswer sweep(const model::Matrix& m, const TestgenOptions& options, const SweepQuestion& q) {
+SweepAnswer sweep_cycles(const model::Matrix& m, const TestgenOptions& options, const SweepQuestion& q) {
   SweepAnswer out;
-  if (q.targets.empty()) return out;
   checker::PooledContext pooled;
   z3::context& ctx = pooled;
   const model::CycleInput hold = q.prefix.empty() ? model::default_cycle_input(m) : q.prefix.back();
@@ -162,21 +187,92 @@ SweepAnswer sweep(const model::Matrix& m, const TestgenOptions& options, const S
     out.reason = std::string(checker::to_string(checker::unknown_reason(e.msg(), limits, meter))) + " (sweep)";
     return out;
   }
-  checker::stop_if_interrupted(limits);
-  if (!found) {
-    if (out.reason.empty()) out.reason = "not found (sweep, depth " + std::to_string(q.max_depth) + ")";
+  return finish(m, options, q, b, hold, limits, found, out);
+}
+
+// Macro steps of held inputs instead of cycles: a timer's stretch is one step.
+SweepAnswer sweep_held(const model::Matrix& m, const TestgenOptions& options, const SweepQuestion& q) {
+  SweepAnswer out;
+  checker::PooledContext pooled;
+  z3::context& ctx = pooled;
+  const model::CycleInput hold = q.prefix.empty() ? model::default_cycle_input(m) : q.prefix.back();
+  const Built b = build(ctx, m, q, hold);
+  const encoder::TransitionSystem& ts = b.enc->ts;
+  // The stretches' facts: the cycle's constraints and the question's assumption.
+  const checker::SafetyProblem facts{&ts, ctx.bool_val(true), b.assumption};
+  checker::Limits limits;
+  limits.cancel = options.cancel;
+  checker::WorkMeter meter(ctx, q.budget);
+  std::optional<checker::Trace> found;
+  try {
+    checker::Watchdog watchdog(ctx, limits);
+    checker::MacroUnrolling mu(facts);
+    encoder::Unroller& u = mu.unroller();
+    z3::solver s(ctx);
+    s.add(mu.init());
+    z3::expr total = ctx.int_val(1);  // the last cycle
+    for (int J = 0; J <= q.max_depth && !found && out.reason.empty(); ++J) {
+      checker::stop_if_interrupted(limits);
+      if (J > 0) {
+        s.add(mu.step(J - 1));
+        total = total + mu.length(J - 1);
+        s.add(total <= ctx.int_val(static_cast<int64_t>(q.max_cycles)));
+      }
+      s.add(u.at(ts.constraint_formula() && b.assumption, J));
+      std::vector<std::optional<z3::expr>> lit(b.monitors.size()), reached_at(b.monitors.size());
+      z3::expr_vector any(ctx);
+      for (std::size_t i = 0; i < b.monitors.size(); ++i) {
+        if (!b.open[i]) continue;
+        lit[i] = ctx.bool_const(("held." + std::to_string(J) + "." + std::to_string(i)).c_str());
+        reached_at[i] = !u.at(b.monitors[i].good, J);
+        s.add(z3::implies(*lit[i], *reached_at[i]));
+        any.push_back(*lit[i]);
+      }
+      if (any.empty()) break;
+      const z3::expr some = ctx.bool_const(("held.any." + std::to_string(J)).c_str());
+      s.add(z3::implies(some, z3::mk_or(any)));
+      for (int attempt = 0; attempt < checker::AcceleratedBmc::kMaxRefinements && !found; ++attempt) {
+        z3::expr_vector a(ctx);
+        a.push_back(some);
+        const z3::check_result cr = checker::check_within(s, meter, a);
+        if (cr == z3::unknown) {
+          out.reason = std::string(checker::to_string(checker::unknown_reason(s.reason_unknown(), limits, meter))) +
+                       " (held sweep, step " + std::to_string(J) + ")";
+          break;
+        }
+        if (cr == z3::unsat) break;
+        std::vector<std::size_t> reached;
+        const z3::model model = keep_compatible(s, meter, lit, reached_at, reached);
+        const checker::MacroRun run = checker::macro_run(mu, ts, model, J);
+        z3::expr good = ctx.bool_val(false);
+        for (std::size_t i : reached) good = good || b.monitors[i].good;
+        const checker::SafetyProblem kept{&ts, good, b.assumption};
+        if (auto last = checker::first_violation(kept, run, limits)) {
+          std::sort(reached.begin(), reached.end());
+          out.reached = std::move(reached);
+          found = checker::expand(kept, run, *last + 1);
+          break;
+        }
+        // The stretches only approximated these targets: exclude the lengths.
+        z3::expr_vector same(ctx);
+        for (int j = 0; j < J; ++j) same.push_back(mu.length(j) == ctx.int_val(static_cast<int64_t>(run.lengths[j])));
+        s.add(same.empty() ? ctx.bool_val(false) : !z3::mk_and(same));
+      }
+    }
+  } catch (const z3::exception& e) {
+    checker::stop_if_interrupted(limits);
+    out.reached.clear();
+    out.reason = std::string(checker::to_string(checker::unknown_reason(e.msg(), limits, meter))) + " (held sweep)";
     return out;
   }
-  // Inputs the witness does not need keep their held value: the problem
-  // whose violation is every kept target reached in the last cycle.
-  z3::expr good = ctx.bool_val(false);
-  for (std::size_t i : out.reached) good = good || monitors[i].good;
-  const checker::SafetyProblem problem{&ts, good, assumption};
-  const checker::Trace readable =
-      checker::shrink_trace(problem, *found, held_inputs(*enc, hold), limits.with_work(options.shrink_work));
-  checker::stop_if_interrupted(limits);
-  out.cycles = witness_inputs(readable, *enc, m, hold);
-  return out;
+  return finish(m, options, q, b, hold, limits, found, out);
+}
+
+}  // namespace
+
+SweepAnswer sweep(const model::Matrix& m, const TestgenOptions& options, const SweepQuestion& q) {
+  if (q.targets.empty()) return SweepAnswer{};
+  return q.held ? sweep_held(m, options, q) : sweep_cycles(m, options, q);
 }
 
 }  // namespace cemv::testgen::detail

@@ -5,10 +5,15 @@
 // whether any open target holds there, so the first answer is a shortest
 // extension. At that depth the other targets are tried in catalogue order
 // under assumption literals, and every one that the same run can reach as
-// well is kept: one witness covers several compatible objectives.
+// well is kept: one witness covers several compatible objectives. With
+// `held`, each step is a macro step (checker/engines/macro_unrolling.hpp):
+// one cycle or a stretch of held inputs, so that objectives behind timers are
+// asked together too; every answer is re-simulated cycle by cycle, and one
+// that the stretches only approximated is excluded and asked again.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -26,7 +31,9 @@ struct SweepQuestion {
   std::vector<const properties::Property*> targets;  // catalogue order; all with the same assumptions
   std::vector<model::Node> roots;                     // the union of their cones
   std::vector<model::CycleInput> prefix;              // the test extended (empty: from start-up)
-  int max_depth = 0;                                  // cycles added at most
+  int max_depth = 0;                                  // cycles (held: macro steps) added at most
+  bool held = false;                                  // macro steps of held inputs (timers), else cycles
+  std::int64_t max_cycles = 0;                        // held: cycles added at most
   checker::Work budget = 0;                           // for the whole question
 };
 

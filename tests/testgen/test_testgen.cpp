@@ -308,6 +308,52 @@ TEST(Sweep, OneWitnessCoversSeveralObjectives) {
   for (std::size_t j : second.reached) EXPECT_TRUE(witnessed(run, index[j])) << objs[index[j]].id;
 }
 
+// The held sweep (testgen/sweep.hpp, SweepQuestion::held): tank-overfill's
+// objectives behind cause 1's 2 s on-delay and soft-bypass timers (SIF group
+// 1, horizon of 8 cycles or more), asked together on macro steps of held
+// inputs from start-up: one run, longer than the cycle sweep's 16 cycles and
+// within the question's bound, reaches at least one of them, and every one
+// it claims is confirmed by the runtime and the concrete evaluator in the
+// run's last cycle; the same question gives the same run.
+TEST(Sweep, HeldStepsReachTimerObjectives) {
+  const model::Matrix m = example("tank-overfill");
+  std::vector<testgen::Objective> objs;
+  for (auto& o : testgen::derive_objectives(m))
+    if (o.sif == 1 && !o.simulates && o.horizon >= 8) objs.push_back(o);
+  ASSERT_GE(objs.size(), 3u);
+  const auto file = testgen::objectives_file(objs);
+  testgen::detail::SweepQuestion q;
+  q.file = &file;
+  q.held = true;
+  q.max_depth = 8;
+  q.budget = 20 * checker::kMega;
+  int horizon = 0;
+  for (std::size_t i = 0; i < objs.size(); ++i) {
+    const auto& p = file.properties[i];
+    q.targets.push_back(&p);
+    horizon = std::max(horizon, objs[i].horizon);
+    for (const auto& n : properties::property_roots(p, file.assumptions, m)) q.roots.push_back(n);
+  }
+  q.max_cycles = 2 * horizon + 40;
+  std::sort(q.roots.begin(), q.roots.end());
+  q.roots.erase(std::unique(q.roots.begin(), q.roots.end()), q.roots.end());
+  const testgen::TestgenOptions options;
+  const auto first = testgen::detail::sweep(m, options, q);
+  ASSERT_FALSE(first.cycles.empty()) << first.reason;
+  EXPECT_GT(first.cycles.size(), 16u);
+  EXPECT_LE(static_cast<std::int64_t>(first.cycles.size()), q.max_cycles);
+  const auto t = checker::run_on_runtime(m, first.cycles);
+  properties::Trace trace;
+  for (std::size_t k = 0; k < t.inputs.size(); ++k) trace.push_back({t.inputs[k], t.observables[k]});
+  for (std::size_t i : first.reached) {
+    const auto e = properties::Evaluator(m).evaluate(file.properties[i], file.assumptions, trace);
+    EXPECT_TRUE(e.holds && e.cycle && *e.cycle + 1 == first.cycles.size()) << objs[i].id;
+  }
+  const auto again = testgen::detail::sweep(m, options, q);
+  EXPECT_EQ(again.reached, first.reached);
+  EXPECT_EQ(again.cycles.size(), first.cycles.size());
+}
+
 // A step holds its inputs for as many cycles as nothing changes: 10,000
 // cycles with one input change, one command and a checkpoint are 4 steps
 // (the cycle after a checkpoint starts a step), and the scenario file stays
