@@ -199,6 +199,8 @@ struct ActionSpace::Solvers {
   bool any_made = false;
   std::vector<z3::expr> so_far, base_bad, step_on, step_good, step_bad;
   std::vector<z3::expr> cands, lits;  // initiated invariant candidates and their literals
+  std::vector<z3::expr> cands_next;   // each candidate in cycle 1 of Houdini's unrolling (made once:
+                                      // an unrolling substitutes every variable)
   std::vector<std::size_t> start;     // Houdini's start: what the empty set keeps (its largest fixpoint)
   bool start_known = false;
   int rounds = 0;
@@ -340,6 +342,7 @@ ActionSpace::ActionSpace(const model::Matrix& m, const PathDefeats& pd, const st
     s.lits.push_back(l);
     s.cand_of.emplace(l.id(), j);
     s.houdini.add(z3::implies(l, s.u->at(s.cands[j], 0)));
+    s.cands_next.push_back(s.u->at(s.cands[j], 1));
   }
 }
 
@@ -381,14 +384,15 @@ std::optional<RunDefeat> ActionSpace::run(const Set& allowed) const {
   return run_defeat(m_, pd_, s_->builder, allowed, demand_runs_);
 }
 
-Test ActionSpace::test(const Set& allowed, const checker::Limits& limits) {
+Test ActionSpace::test(const Set& allowed, const checker::Limits& limits, std::optional<int> proof_depth) {
+  const bool search = !proof_depth;
   Test t;
   // The demand runs of the set, then of each set of one action fewer: a
   // subset that defeats shows that the set does (allowing more actions only
   // adds runs), in milliseconds of the runtime where the solver's BMC over
   // a long T costs millions of work units.
   std::optional<RunDefeat> d = run(allowed);
-  for (std::size_t i = 0; !d && allowed.size() > 1 && i < allowed.size(); ++i) {
+  for (std::size_t i = 0; search && !d && allowed.size() > 1 && i < allowed.size(); ++i) {
     Set fewer = allowed;
     fewer.erase(fewer.begin() + static_cast<std::ptrdiff_t>(i));
     d = run(fewer);
@@ -429,7 +433,7 @@ Test ActionSpace::test(const Set& allowed, const checker::Limits& limits) {
     for (;;) {
       z3::expr_vector some_false(s.ctx);
       for (std::size_t j : alive)
-        if (inv[j]) some_false.push_back(!s.u->at(s.cands[j], 1));
+        if (inv[j]) some_false.push_back(!s.cands_next[j]);
       if (some_false.empty()) return true;
       z3::expr round = s.ctx.bool_const(("defeats.houdini.round." + std::to_string(s.rounds++)).c_str());
       s.houdini.add(z3::implies(round, z3::mk_or(some_false)));
@@ -486,7 +490,7 @@ Test ActionSpace::test(const Set& allowed, const checker::Limits& limits) {
       z3::expr_vector some_false(s.ctx);
       for (std::size_t j : alive) {
         a.push_back(s.lits[j]);
-        some_false.push_back(!s.u->at(s.cands[j], 1));
+        some_false.push_back(!s.cands_next[j]);
       }
       z3::expr round = s.ctx.bool_const(("defeats.houdini.round." + std::to_string(s.rounds++)).c_str());
       s.houdini.add(z3::implies(round, z3::mk_or(some_false)));
@@ -500,7 +504,7 @@ Test ActionSpace::test(const Set& allowed, const checker::Limits& limits) {
       z3::model model = s.houdini.get_model();
       std::vector<std::size_t> keep;
       for (std::size_t j : alive)
-        if (model.eval(s.u->at(s.cands[j], 1), true).is_true()) keep.push_back(j);
+        if (model.eval(s.cands_next[j], true).is_true()) keep.push_back(j);
       alive = std::move(keep);
       s.houdini.add(!round);
     }
@@ -509,7 +513,7 @@ Test ActionSpace::test(const Set& allowed, const checker::Limits& limits) {
       s.start_known = true;
     }
     // k-induction relative to the invariant, the base case in the same loop.
-    for (int k = 0; k <= kMaxInductionK; ++k) {
+    for (int k = 0; k <= proof_depth.value_or(kMaxInductionK); ++k) {
       s.base_frames(k);
       z3::expr_vector a = excluded();
       a.push_back(s.base_bad[static_cast<std::size_t>(k)]);
@@ -546,6 +550,12 @@ Test ActionSpace::test(const Set& allowed, const checker::Limits& limits) {
       }
     }
     // Not proved: a counterexample up to T + a margin cycles.
+    if (!search) {
+      t.answer = Test::Answer::Unknown;
+      t.reason = checker::to_string(checker::UnknownReason::BoundReached);
+      t.work = meter.spent();
+      return t;
+    }
     s.base_frames(s.bmc_depth);
     if (!s.any_made) {
       s.any_made = true;
