@@ -64,8 +64,10 @@ class ActionSpace {
   // (checker/check/); throws checker::InternalError when it fails.
   void recheck(const Test& t, const checker::Limits& limits) const;
 
- private:
+  // The path's solvers (defeats/space_solvers.hpp, internal to defeats/).
   struct Solvers;
+
+ private:
   const model::Matrix& m_;
   const PathDefeats& pd_;
   const std::vector<Run>& demand_runs_;
