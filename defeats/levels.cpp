@@ -55,7 +55,7 @@ class Enumerator {
     if (max_size >= 1) singles(all);
     if (max_size >= 2 && !cancelled()) pairs(proved_singles());
     for (int k = 3; k <= max_size && !cancelled(); ++k) level(k);
-    recheck_minimality();
+    recheck_proofs();
     finish();
   }
 
@@ -107,14 +107,11 @@ class Enumerator {
     return pd_.questions.back();
   }
 
-  // Every proof on the encoding that a reported set's minimality cites,
-  // re-proved in a fresh context (the checker re-checked its own answers).
-  void recheck_minimality() {
-    std::vector<std::size_t> cited;
-    for (const auto& d : pd_.sets)
-      for (const auto& sub : d.subsets) cited.push_back(sub.second);
+  // Every proof on the encoding re-proved in a fresh context, as the checker
+  // re-proves its own: those a reported set's minimality cites, and those
+  // the completeness of the path rests on (a group or candidate covered).
+  void recheck_proofs() {
     for (const auto& [question, proof] : proofs_) {
-      if (std::find(cited.begin(), cited.end(), question) == cited.end()) continue;
       try {
         space_->recheck(proof, limits(o_.work));
       } catch (const checker::Interrupted&) {
@@ -298,7 +295,7 @@ class Enumerator {
   std::vector<Run> runs_;
   std::unique_ptr<ActionSpace> space_;               // on one encoding: the path's
   std::vector<std::pair<std::size_t, Test>> proofs_;  // its proofs, by question
-  std::optional<std::size_t> unchecked_;              // a cited proof whose re-check was interrupted
+  std::optional<std::size_t> unchecked_;              // a proof whose re-check was interrupted
   bool complete_ = true;
   std::string reason_;
   int groups_ = 0;
