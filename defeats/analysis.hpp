@@ -18,11 +18,14 @@
 
 namespace cemv::defeats {
 
-// How one path's sets are enumerated (docs/defeats.md, "Enumeration"): every
-// candidate a question to the checker, level by level (the command line's),
-// or MARCO-style on one encoding per path (internal: not yet faster on the
-// examples, docs/performance.md "cemv defeats").
-enum class Enumeration { LevelByLevel, OneEncoding };
+// How one path's sets are enumerated (docs/defeats.md, "Enumeration"):
+// level by level, each candidate first tested on one encoding per path and
+// asked of the checker only where that proof leaves it open or to show a
+// defeat (the command line's); level by level with every candidate a
+// question to the checker (the differential test's oracle); or MARCO-style
+// on one encoding per path (internal: slower on long requirements,
+// docs/performance.md "cemv defeats").
+enum class Enumeration { LevelsOnEncoding, LevelByLevel, OneEncoding };
 
 struct DefeatsOptions {
   std::vector<int> sifs;         // empty = every declared group
@@ -32,7 +35,7 @@ struct DefeatsOptions {
   checker::Work work = 20 * checker::kMega;  // each engine's budget of work per question
   int jobs = 1;                  // paths decided in parallel
   std::string out_dir;           // counterexample scenarios ("" = none written)
-  Enumeration enumeration = Enumeration::LevelByLevel;
+  Enumeration enumeration = Enumeration::LevelsOnEncoding;
   // Progress (serialised): the number of paths, then each path's key as it
   // starts and ends.
   std::function<void(std::size_t paths)> on_plan;

@@ -1,10 +1,23 @@
+// The level-by-level enumeration of one path's minimal defeat sets
+// (docs/defeats.md, "The level-by-level enumeration"): singletons by group
+// testing, pairs by divide and conquer, larger sets from the covered
+// subsets. On one encoding, each group and candidate is first tested on the
+// path's ActionSpace (its demand runs and a proof under assumptions, whose
+// unsat cores grow the set it covers); the checker is asked only for a
+// candidate that proof leaves open or that defeats, whose counterexample is
+// the one reported.
 #include "defeats/enumerate.hpp"
 #include "defeats/ask.hpp"
 
 #include <algorithm>
+#include <chrono>
+#include <memory>
+#include <optional>
 #include <stdexcept>
 
+#include "checker/check/recheck.hpp"
 #include "defeats/runs.hpp"
+#include "defeats/space.hpp"
 #include "response/demand.hpp"
 
 namespace cemv::defeats {
@@ -13,14 +26,22 @@ namespace {
 
 using Set = std::vector<int>;
 
+// The depth of the k-induction a test on the encoding tries: with the
+// invariant candidates Houdini filters, every proof of the four examples'
+// sets is at k <= 1, and a deeper step (with its base cases, a BMC) costs
+// most where the set defeats, which the checker's question then decides
+// anyway (docs/performance.md, "cemv defeats").
+constexpr int kProofDepth = 1;
+
 bool subset_of(const Set& a, const Set& b) { return std::includes(b.begin(), b.end(), a.begin(), a.end()); }
 
 std::string group_name(const PathDefeats& pd, int n) { return "defeat." + pd.path.key() + ".group" + std::to_string(n); }
 
 class Enumerator {
  public:
-  Enumerator(const model::Matrix& m, PathDefeats& pd, const AskOptions& o)
-      : m_(m), pd_(pd), o_(o), runs_(response::demand_runs(m, pd.path, response::Mode::Normal, *pd.requirement)) {}
+  Enumerator(const model::Matrix& m, PathDefeats& pd, const AskOptions& o, bool on_encoding)
+      : m_(m), pd_(pd), o_(o), runs_(response::demand_runs(m, pd.path, response::Mode::Normal, *pd.requirement)),
+        space_(on_encoding ? std::make_unique<ActionSpace>(m, pd, runs_) : nullptr) {}
 
   void run(int max_size) {
     const Question& none = ask({}, true, "");
@@ -34,6 +55,7 @@ class Enumerator {
     if (max_size >= 1) singles(all);
     if (max_size >= 2 && !cancelled()) pairs(proved_singles());
     for (int k = 3; k <= max_size && !cancelled(); ++k) level(k);
+    recheck_proofs();
     finish();
   }
 
@@ -45,9 +67,58 @@ class Enumerator {
   // under the out folder); group questions (named by the caller) are not.
   const Question& ask(const Set& s, bool write, const std::string& name_override) {
     const bool group = !name_override.empty();
-    pd_.questions.push_back(
-        ask_checker(m_, pd_, s, group ? name_override : set_name(pd_, s), group, write, runs_, o_));
+    const std::string name = group ? name_override : set_name(pd_, s);
+    checker::Work spent = 0;
+    if (space_ && !cancelled()) {
+      // A group gets a quarter of the budget, as the checker's group question.
+      const Test t = space_->test(s, limits(group ? o_.work / 4 : o_.work), kProofDepth);
+      spent = t.work;
+      if (t.answer == Test::Answer::Holds || group) return record(s, name, t);
+    }
+    pd_.questions.push_back(ask_checker(m_, pd_, s, name, group, write, runs_, o_));
+    pd_.questions.back().work += spent;
     return pd_.questions.back();
+  }
+
+  checker::Limits limits(checker::Work work) const {
+    checker::Limits l;
+    l.work = work;
+    l.cancel = o_.cancel;
+    if (o_.timeout_s > 0)
+      l.deadline = checker::Clock::now() + std::chrono::duration_cast<checker::Clock::duration>(
+                                               std::chrono::duration<double>(o_.timeout_s));
+    return l;
+  }
+
+  // A test on the path's encoding as a question: one that holds lists the
+  // set its proof covers, and keeps its proof for the re-check.
+  const Question& record(const Set& s, const std::string& name, const Test& t) {
+    Question q;
+    q.property = name;
+    q.actions = t.answer == Test::Answer::Holds ? t.covered : s;
+    q.method = t.method;
+    q.work = t.work;
+    q.reason = t.reason;
+    q.verdict = t.answer == Test::Answer::Holds     ? checker::PropertyVerdict::Proved
+                : t.answer == Test::Answer::Defeats ? checker::PropertyVerdict::Falsified
+                                                    : checker::PropertyVerdict::Unknown;
+    if (t.answer == Test::Answer::Holds) proofs_.emplace_back(pd_.questions.size(), t);
+    pd_.questions.push_back(std::move(q));
+    return pd_.questions.back();
+  }
+
+  // Every proof on the encoding re-proved in a fresh context, as the checker
+  // re-proves its own: those a reported set's minimality cites, and those
+  // the completeness of the path rests on (a group or candidate covered).
+  void recheck_proofs() {
+    for (const auto& [question, proof] : proofs_) {
+      try {
+        space_->recheck(proof, limits(o_.work));
+      } catch (const checker::Interrupted&) {
+        unchecked_ = question;
+        return;
+      }
+    }
   }
 
   void incomplete(const Question& q) {
@@ -211,13 +282,20 @@ class Enumerator {
     for (const auto& q : pd_.questions)
       if (q.verdict == checker::PropertyVerdict::Unknown && q.property.find(".group") == std::string::npos)
         incomplete(q);
+    if (unchecked_) {
+      complete_ = false;
+      if (reason_.empty()) reason_ = pd_.questions[*unchecked_].property + ": its re-check was interrupted";
+    }
     finish_path(pd_, complete_, reason_, cancelled());
   }
 
   const model::Matrix& m_;
   PathDefeats& pd_;
   const AskOptions& o_;
-  std::vector<std::vector<model::CycleInput>> runs_;
+  std::vector<Run> runs_;
+  std::unique_ptr<ActionSpace> space_;               // on one encoding: the path's
+  std::vector<std::pair<std::size_t, Test>> proofs_;  // its proofs, by question
+  std::optional<std::size_t> unchecked_;              // a proof whose re-check was interrupted
   bool complete_ = true;
   std::string reason_;
   int groups_ = 0;
@@ -225,8 +303,9 @@ class Enumerator {
 
 }  // namespace
 
-void enumerate_level_by_level(const model::Matrix& m, PathDefeats& pd, int max_size, const AskOptions& o) {
-  Enumerator(m, pd, o).run(max_size);
+void enumerate_level_by_level(const model::Matrix& m, PathDefeats& pd, int max_size, const AskOptions& o,
+                              bool on_encoding) {
+  Enumerator(m, pd, o, on_encoding).run(max_size);
 }
 
 }  // namespace cemv::defeats

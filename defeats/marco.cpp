@@ -281,7 +281,7 @@ void enumerate_one_encoding(const model::Matrix& m, PathDefeats& pd, int max_siz
 void enumerate_minimal_sets(const model::Matrix& m, PathDefeats& pd, int max_size, const AskOptions& o,
                             Enumeration how) {
   if (how == Enumeration::OneEncoding) return enumerate_one_encoding(m, pd, max_size, o);
-  enumerate_level_by_level(m, pd, max_size, o);
+  enumerate_level_by_level(m, pd, max_size, o, how == Enumeration::LevelsOnEncoding);
 }
 
 }  // namespace cemv::defeats

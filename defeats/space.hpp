@@ -47,8 +47,13 @@ class ActionSpace {
   ActionSpace& operator=(const ActionSpace&) = delete;
 
   // Whether exactly the actions of `allowed` (ascending) may occur defeats the
-  // path, within `limits` (its work is the test's budget).
-  Test test(const std::vector<int>& allowed, const checker::Limits& limits);
+  // path, within `limits` (its work is the test's budget). With a
+  // `proof_depth`: a proof only (the demand runs of the set, Houdini,
+  // k-induction up to that k and its base cases), no demand run of the
+  // subsets and no BMC over T: a set the proof leaves open is Unknown, for
+  // the checker's question to decide.
+  Test test(const std::vector<int>& allowed, const checker::Limits& limits,
+            std::optional<int> proof_depth = std::nullopt);
 
   // The first of the demand runs with the actions of `allowed` taken that
   // violates the requirement on the runtime (judged by the concrete
@@ -59,8 +64,10 @@ class ActionSpace {
   // (checker/check/); throws checker::InternalError when it fails.
   void recheck(const Test& t, const checker::Limits& limits) const;
 
- private:
+  // The path's solvers (defeats/space_solvers.hpp, internal to defeats/).
   struct Solvers;
+
+ private:
   const model::Matrix& m_;
   const PathDefeats& pd_;
   const std::vector<Run>& demand_runs_;

@@ -55,11 +55,13 @@ std::filesystem::path scratch(const std::string& name) {
   return dir;
 }
 
-// The hand-made matrices are enumerated on one encoding per path (the
-// level-by-level enumeration is held to them through the differential test).
-defeats::DefeatsResult run(const model::Matrix& m, const std::filesystem::path& out, int max_size = 2) {
+// The hand-made matrices are enumerated as the command line does (the other
+// enumerations are held to the checker's through the differential test;
+// MARCO also on the degraded 2oo3 below).
+defeats::DefeatsResult run(const model::Matrix& m, const std::filesystem::path& out, int max_size = 2,
+                           defeats::Enumeration how = defeats::DefeatsOptions{}.enumeration) {
   defeats::DefeatsOptions o;
-  o.enumeration = defeats::Enumeration::OneEncoding;
+  o.enumeration = how;
   o.max_size = max_size;
   o.out_dir = out.string();
   return defeats::analyse(m, o);
@@ -123,16 +125,18 @@ void expect_checked(const model::Matrix& m, const defeats::PathDefeats& p, const
 // demand (two inputs beyond, or bad) need not move.
 TEST(Defeats, TwoOfThreeWithDegradedVotingFallsToTwoBadInputs) {
   const auto m = two_of_three(R"("bad_quality": "degrade")", false);
-  const auto out = scratch("degraded");
-  const auto r = run(m, out);
-  const auto& p = only_path(r);
-  EXPECT_EQ(p.status, defeats::PathStatus::Complete) << p.reason;
-  EXPECT_EQ(sets_of(p), (Sets{{"bad_quality[A]", "bad_quality[B]"},
-                              {"bad_quality[A]", "bad_quality[C]"},
-                              {"bad_quality[B]", "bad_quality[C]"}}));
-  for (const auto& s : p.sets) EXPECT_EQ(s.set_class, defeats::SetClass::Indirect);
-  EXPECT_EQ(p.distance, std::optional<int>(2));
-  expect_checked(m, p, out);
+  for (const auto how : {defeats::Enumeration::LevelsOnEncoding, defeats::Enumeration::OneEncoding}) {
+    const auto out = scratch("degraded");
+    const auto r = run(m, out, 2, how);
+    const auto& p = only_path(r);
+    EXPECT_EQ(p.status, defeats::PathStatus::Complete) << p.reason;
+    EXPECT_EQ(sets_of(p), (Sets{{"bad_quality[A]", "bad_quality[B]"},
+                                {"bad_quality[A]", "bad_quality[C]"},
+                                {"bad_quality[B]", "bad_quality[C]"}}));
+    for (const auto& s : p.sets) EXPECT_EQ(s.set_class, defeats::SetClass::Indirect);
+    EXPECT_EQ(p.distance, std::optional<int>(2));
+    expect_checked(m, p, out);
+  }
   // Sizes up to 1 only: none found, and the distance is "> 1".
   const auto one = run(m, scratch("degraded1"), 1);
   EXPECT_TRUE(one.paths.at(0).sets.empty());
@@ -224,16 +228,40 @@ TEST(Defeats, ReportIsReproducible) {
 namespace {
 
 // The differential test of the enumerations (docs/defeats.md,
-// "Enumeration"): on seeded random matrices with SIF groups, the MARCO-style
-// enumeration on one encoding per path finds exactly the minimal sets (and
-// the statuses, distances and counterexample questions) that the
-// level-by-level enumeration, every set a question to the checker, finds.
+// "Enumeration"): on seeded random matrices with SIF groups, the
+// level-by-level enumeration on one encoding per path (the command line's)
+// and the MARCO-style one find exactly the minimal sets (and the statuses,
+// distances and counterexample questions) that the level-by-level
+// enumeration with every set a question to the checker finds.
 // Seeds are tried in order until the sample is large enough (paths decided
 // both ways, with sets, among them a pair), at most CEMV_DEFEATS_SEEDS (40).
-TEST(Defeats, OneEncodingFindsTheSetsOfTheLevelByLevelEnumeration) {
-  const int seeds = std::getenv("CEMV_DEFEATS_SEEDS") ? std::atoi(std::getenv("CEMV_DEFEATS_SEEDS")) : 40;
+// One path of `other` against the oracle's; counts what was compared.
+struct Sample {
   int compared = 0, with_sets = 0, pairs = 0;
-  for (int seed = 1; seed <= seeds && !(compared > 5 && with_sets > 3 && pairs > 0); ++seed) {
+};
+
+void expect_same_sets(const defeats::PathDefeats& a, const defeats::PathDefeats& b, const std::string& where,
+                      Sample& n) {
+  ++n.compared;
+  n.with_sets += !a.sets.empty();
+  EXPECT_EQ(a.status, b.status) << where;
+  EXPECT_EQ(sets_of(a), sets_of(b)) << where;
+  EXPECT_EQ(a.distance, b.distance) << where;
+  for (std::size_t s = 0; s < a.sets.size() && s < b.sets.size(); ++s) {
+    n.pairs += a.sets[s].actions.size() == 2;
+    EXPECT_EQ(a.sets[s].set_class, b.sets[s].set_class) << where;
+    EXPECT_EQ(a.questions[a.sets[s].question].property, b.questions[b.sets[s].question].property) << where;
+    EXPECT_EQ(a.questions[a.sets[s].question].method, b.questions[b.sets[s].question].method) << where;
+    EXPECT_EQ(a.questions[a.sets[s].question].violation_cycle, b.questions[b.sets[s].question].violation_cycle)
+        << where;
+    for (const auto& [sub, proof] : b.sets[s].subsets) EXPECT_TRUE(b.questions.at(proof).holds()) << where;
+  }
+}
+
+TEST(Defeats, EncodingEnumerationsFindTheSetsOfTheCheckerQuestions) {
+  const int seeds = std::getenv("CEMV_DEFEATS_SEEDS") ? std::atoi(std::getenv("CEMV_DEFEATS_SEEDS")) : 40;
+  Sample n;
+  for (int seed = 1; seed <= seeds && !(n.compared > 10 && n.with_sets > 6 && n.pairs > 1); ++seed) {
     const model::Matrix m = testsupport::random_matrix(static_cast<std::uint64_t>(seed));
     if (m.sif_groups.empty()) continue;
     defeats::DefeatsOptions o;
@@ -241,35 +269,26 @@ TEST(Defeats, OneEncodingFindsTheSetsOfTheLevelByLevelEnumeration) {
     o.jobs = 2;
     o.enumeration = defeats::Enumeration::LevelByLevel;
     const auto oracle = defeats::analyse(m, o);
-    o.enumeration = defeats::Enumeration::OneEncoding;
-    const auto marco = defeats::analyse(m, o);
-    ASSERT_EQ(oracle.paths.size(), marco.paths.size());
-    for (std::size_t i = 0; i < oracle.paths.size(); ++i) {
-      const auto& a = oracle.paths[i];
-      const auto& b = marco.paths[i];
-      ASSERT_EQ(a.path.key(), b.path.key());
-      if (a.status == defeats::PathStatus::Unknown || b.status == defeats::PathStatus::Unknown) continue;
-      ++compared;
-      with_sets += !a.sets.empty();
-      const std::string where = "seed " + std::to_string(seed) + " path " + a.path.key();
-      EXPECT_EQ(a.status, b.status) << where;
-      EXPECT_EQ(sets_of(a), sets_of(b)) << where;
-      EXPECT_EQ(a.distance, b.distance) << where;
-      for (std::size_t s = 0; s < a.sets.size() && s < b.sets.size(); ++s) {
-        pairs += a.sets[s].actions.size() == 2;
-        EXPECT_EQ(a.sets[s].set_class, b.sets[s].set_class) << where;
-        EXPECT_EQ(a.questions[a.sets[s].question].property, b.questions[b.sets[s].question].property) << where;
-        EXPECT_EQ(a.questions[a.sets[s].question].method, b.questions[b.sets[s].question].method) << where;
-        EXPECT_EQ(a.questions[a.sets[s].question].violation_cycle, b.questions[b.sets[s].question].violation_cycle)
-            << where;
-        for (const auto& [sub, proof] : b.sets[s].subsets) EXPECT_TRUE(b.questions.at(proof).holds()) << where;
+    for (const auto how : {defeats::Enumeration::LevelsOnEncoding, defeats::Enumeration::OneEncoding}) {
+      o.enumeration = how;
+      const auto other = defeats::analyse(m, o);
+      ASSERT_EQ(oracle.paths.size(), other.paths.size());
+      for (std::size_t i = 0; i < oracle.paths.size(); ++i) {
+        const auto& a = oracle.paths[i];
+        const auto& b = other.paths[i];
+        ASSERT_EQ(a.path.key(), b.path.key());
+        if (a.status == defeats::PathStatus::Unknown || b.status == defeats::PathStatus::Unknown) continue;
+        expect_same_sets(a, b,
+                         "seed " + std::to_string(seed) + " path " + a.path.key() +
+                             (how == defeats::Enumeration::OneEncoding ? " (MARCO)" : " (levels on one encoding)"),
+                         n);
       }
     }
   }
-  // The sample is not empty: paths decided both ways, with sets of two.
-  EXPECT_GT(compared, 5);
-  EXPECT_GT(with_sets, 3);
-  EXPECT_GT(pairs, 0);
+  // The sample is not empty: paths decided both ways by each, with sets of two.
+  EXPECT_GT(n.compared, 10);
+  EXPECT_GT(n.with_sets, 6);
+  EXPECT_GT(n.pairs, 1);
 }
 
 }  // namespace
