@@ -11,7 +11,6 @@
 #include <optional>
 
 #include "checker/cone_group.hpp"
-#include "checker/context_pool.hpp"
 #include "checker/group_support.hpp"
 #include "checker/property_checker.hpp"
 #include "checker/work_queue.hpp"
@@ -181,11 +180,8 @@ CheckResult check_properties(const model::Matrix& m, const std::vector<propertie
     } catch (const Interrupted&) {
       if (cancel.cancelled()) throw;
     }
-    // One fresh context for the members' re-checks on their smaller matrices.
-    PooledContext recheck_ctx;
     for (std::size_t q = 0; q < asked.size(); ++q) {
-      asked[q]->checker->find_support(*asked[q]->result, asked[q]->clock.limits(cancel, options.solvers), cores[q],
-                                      &*recheck_ctx);
+      asked[q]->checker->find_support(*asked[q]->result, asked[q]->clock.limits(cancel, options.solvers), cores[q]);
       report(*asked[q]);
     }
   });

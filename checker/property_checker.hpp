@@ -63,11 +63,8 @@ class PropertyChecker {
   // (docs/checker.md, "Support").
   // `core`: the proof's unsat core found on its cone group's encoding
   // (checker/group_support.hpp); nullopt: asked on the property's own.
-  // `recheck_ctx`: the fresh context in which the support's proof is
-  // re-checked on the smaller matrix, shared by the members of one cone
-  // group (none of them holds an engine's term there); null: one of its own.
   void find_support(PropertyResult& r, const Limits& limits,
-                    const std::optional<SupportCore>& core = std::nullopt, z3::context* recheck_ctx = nullptr) const;
+                    const std::optional<SupportCore>& core = std::nullopt) const;
   // What the support is chosen from (candidate_deletions of the property's roots).
   std::vector<Deletion> support_candidates() const;
   // decide()'s proof, when it proved the property.
@@ -98,7 +95,7 @@ class PropertyChecker {
   // others, on which the proof was re-checked.
   std::vector<SupportElement> core_support(const std::vector<Deletion>& candidates,
                                            const std::optional<SupportCore>& core, model::Matrix& reduced,
-                                           const Limits& limits, z3::context* recheck_ctx) const;
+                                           const Limits& limits) const;
   // The unsat core of the proof's obligations on the property's own guarded
   // encoding; nullopt when there is none within the budget.
   std::optional<SupportCore> own_core(const std::vector<Deletion>& candidates, const Limits& limits) const;

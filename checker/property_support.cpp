@@ -121,8 +121,7 @@ std::optional<SupportCore> PropertyChecker::own_core(const std::vector<Deletion>
 
 std::vector<SupportElement> PropertyChecker::core_support(const std::vector<Deletion>& candidates,
                                                           const std::optional<SupportCore>& given,
-                                                          model::Matrix& reduced, const Limits& limits,
-                                                          z3::context* recheck_ctx) const {
+                                                          model::Matrix& reduced, const Limits& limits) const {
   reduced = m_;
   std::optional<SupportCore> core = given ? given : own_core(candidates, limits);
   if (!core) return all_of(candidates);
@@ -141,12 +140,7 @@ std::vector<SupportElement> PropertyChecker::core_support(const std::vector<Dele
     if (remap_inputs(t->first, t->second, model::InputTable(m_), model::InputTable(reduced))) {
       const ProblemFactory make = reducing(property_problem(reduced, t->first, t->second, o));
       try {
-        if (recheck_ctx) {
-          const OwnedProblem problem = make(*recheck_ctx);
-          check::recheck_proof(problem.problem, *proof_, &limits);
-        } else {
-          check::recheck_proof([make, t](z3::context& ctx) { return make(ctx); }, *proof_, &limits);
-        }
+        check::recheck_proof([make, t](z3::context& ctx) { return make(ctx); }, *proof_, &limits);
         return support;
       } catch (const InternalError&) {
         // The proof's invariant names what the smaller matrix no longer has,
@@ -164,12 +158,12 @@ std::vector<SupportElement> PropertyChecker::core_support(const std::vector<Dele
 std::vector<Deletion> PropertyChecker::support_candidates() const { return candidate_deletions(m_, roots_); }
 
 void PropertyChecker::find_support(PropertyResult& out, const Limits& limits,
-                                   const std::optional<SupportCore>& group_core, z3::context* recheck_ctx) const {
+                                   const std::optional<SupportCore>& group_core) const {
   if (!needs_support(out)) return;
   const auto start = Clock::now();
   const std::vector<Deletion> candidates = support_candidates();
   model::Matrix reduced;
-  out.support = core_support(candidates, group_core, reduced, limits, recheck_ctx);
+  out.support = core_support(candidates, group_core, reduced, limits);
   out.support_minimal = false;
   out.seconds += seconds_since(start);
   if (options_.support_mode != SupportMode::Full) return;
