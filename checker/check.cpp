@@ -6,14 +6,11 @@
 #include "checker/check.hpp"
 
 #include <algorithm>
-#include <map>
-#include <thread>
 #include <memory>
 #include <mutex>
 #include <optional>
 
 #include "checker/cone_group.hpp"
-#include "checker/context_pool.hpp"
 #include "checker/group_support.hpp"
 #include "checker/property_checker.hpp"
 #include "checker/work_queue.hpp"
@@ -106,23 +103,13 @@ CheckResult check_properties(const model::Matrix& m, const std::vector<propertie
   std::vector<GroupMember> members;
   for (const auto& j : jobs) members.push_back({j.file, j.property});
   const std::vector<std::vector<std::size_t>> groups = cone_groups(m, members);
-  // One context per worker for the groups' re-checks (ConeGroup::decide):
-  // making one per group was a tenth of a small group's time.
-  std::mutex recheck_mutex;
-  std::map<std::thread::id, std::unique_ptr<PooledContext>> recheck_contexts;
-  auto recheck_context = [&]() -> z3::context& {
-    std::lock_guard<std::mutex> lock(recheck_mutex);
-    auto& c = recheck_contexts[std::this_thread::get_id()];
-    if (!c) c = std::make_unique<PooledContext>();
-    return **c;
-  };
   queue.run(groups.size(), [&](std::size_t g) {
     std::vector<GroupMember> group;
     for (std::size_t i : groups[g]) group.push_back(members[i]);
     Limits shared;
     shared.cancel = &cancel;
     shared.solvers = options.solvers;
-    std::vector<EarlyAnswer> early = ConeGroup(m, group, options).decide(shared, &recheck_context());
+    std::vector<EarlyAnswer> early = ConeGroup(m, group, options).decide(shared);
     for (std::size_t k = 0; k < groups[g].size(); ++k) {
       Job& j = jobs[groups[g][k]];
       if (options.on_start) {

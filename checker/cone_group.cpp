@@ -106,7 +106,7 @@ GroupEncoding encode_group(z3::context& ctx, const model::Matrix& m, const std::
   return b;
 }
 
-std::vector<EarlyAnswer> ConeGroup::decide(const Limits& limits, z3::context* recheck_ctx) {
+std::vector<EarlyAnswer> ConeGroup::decide(const Limits& limits) {
   std::vector<EarlyAnswer> out(members_.size());
   PooledContext ctx;
   Built b = encode_group(ctx, m_, members_, options_);
@@ -139,7 +139,7 @@ std::vector<EarlyAnswer> ConeGroup::decide(const Limits& limits, z3::context* re
   prove(b, out, limits);
   reach(b, out, limits, /*antecedents=*/small);
   if (small) random_runs(out, limits);
-  recheck(b, out, limits, recheck_ctx);
+  recheck(b, out, limits);
   return out;
 }
 
@@ -267,8 +267,7 @@ void ConeGroup::reach(Built& b, std::vector<EarlyAnswer>& out, const Limits& lim
   }
 }
 
-void ConeGroup::recheck(const Built& b, std::vector<EarlyAnswer>& out, const Limits& limits,
-                        z3::context* shared_ctx) const {
+void ConeGroup::recheck(const Built& b, std::vector<EarlyAnswer>& out, const Limits& limits) const {
   bool any = false;
   for (const auto& a : out) any = any || a.proof.has_value();
   if (!any) return;
@@ -276,9 +275,7 @@ void ConeGroup::recheck(const Built& b, std::vector<EarlyAnswer>& out, const Lim
   // the engines' (the same names: the invariants' text reads there), where
   // each proof's obligations are stated afresh for a new solver
   // (checker/translate.hpp).
-  std::optional<PooledContext> own;
-  if (!shared_ctx) own.emplace();
-  z3::context& ctx = shared_ctx ? *shared_ctx : **own;
+  PooledContext ctx;
   std::vector<z3::expr> goods = b.goods;
   const OwnedProblem copy = translate(b.reduced->problem, ctx, &goods);
   for (std::size_t i = 0; i < out.size(); ++i)

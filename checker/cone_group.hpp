@@ -80,12 +80,8 @@ GroupEncoding encode_group(z3::context& ctx, const model::Matrix& m, const std::
 class ConeGroup {
  public:
   ConeGroup(const model::Matrix& m, std::vector<GroupMember> members, const CheckOptions& options);
-  // One answer per member, in member order. `recheck_ctx`: where the group's
-  // proofs are re-checked, a context no engine uses (the caller's, shared by
-  // the groups one worker decides: a re-check has no budget and returns no
-  // model, so no answer depends on what the context held before); null: a
-  // fresh one.
-  std::vector<EarlyAnswer> decide(const Limits& limits, z3::context* recheck_ctx = nullptr);
+  // One answer per member, in member order.
+  std::vector<EarlyAnswer> decide(const Limits& limits);
 
  private:
   using Built = GroupEncoding;
@@ -94,7 +90,7 @@ class ConeGroup {
   // `antecedents`: also the witnesses that proved members' antecedents can
   // hold (not only the covers').
   void reach(Built& b, std::vector<EarlyAnswer>& out, const Limits& limits, bool antecedents) const;
-  void recheck(const Built& b, std::vector<EarlyAnswer>& out, const Limits& limits, z3::context* ctx) const;
+  void recheck(const Built& b, std::vector<EarlyAnswer>& out, const Limits& limits) const;
 
   const model::Matrix& m_;
   std::vector<GroupMember> members_;
