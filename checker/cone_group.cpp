@@ -11,6 +11,7 @@
 #include "checker/engines/multi.hpp"
 #include "checker/reduce.hpp"
 #include "checker/replay.hpp"
+#include "checker/translate.hpp"
 #include "encoder/encode.hpp"
 #include "model/graph.hpp"
 #include "properties/evaluator.hpp"
@@ -138,7 +139,7 @@ std::vector<EarlyAnswer> ConeGroup::decide(const Limits& limits) {
   prove(b, out, limits);
   reach(b, out, limits, /*antecedents=*/small);
   if (small) random_runs(out, limits);
-  recheck(out, limits);
+  recheck(b, out, limits);
   return out;
 }
 
@@ -266,18 +267,20 @@ void ConeGroup::reach(Built& b, std::vector<EarlyAnswer>& out, const Limits& lim
   }
 }
 
-void ConeGroup::recheck(std::vector<EarlyAnswer>& out, const Limits& limits) const {
+void ConeGroup::recheck(const Built& b, std::vector<EarlyAnswer>& out, const Limits& limits) const {
   bool any = false;
   for (const auto& a : out) any = any || a.proof.has_value();
   if (!any) return;
-  // Built again in a context that holds nothing of the engines' (the same
-  // names in the same order: the invariants' text reads there).
+  // The group's reduced problem copied into a context that holds nothing of
+  // the engines' (the same names: the invariants' text reads there), where
+  // each proof's obligations are stated afresh for a new solver
+  // (checker/translate.hpp).
   PooledContext ctx;
-  Built b = encode_group(ctx, m_, members_, options_);
+  std::vector<z3::expr> goods = b.goods;
+  const OwnedProblem copy = translate(b.reduced->problem, ctx, &goods);
   for (std::size_t i = 0; i < out.size(); ++i)
     if (out[i].proof)
-      check::recheck_proof(SafetyProblem{b.reduced->problem.ts, b.goods[i], b.reduced->problem.assumption},
-                           *out[i].proof, &limits);
+      check::recheck_proof(SafetyProblem{copy.problem.ts, goods[i], copy.problem.assumption}, *out[i].proof, &limits);
 }
 
 std::vector<std::vector<std::size_t>> cone_groups(const model::Matrix& m, const std::vector<GroupMember>& jobs) {

@@ -90,7 +90,7 @@ class ConeGroup {
   // `antecedents`: also the witnesses that proved members' antecedents can
   // hold (not only the covers').
   void reach(Built& b, std::vector<EarlyAnswer>& out, const Limits& limits, bool antecedents) const;
-  void recheck(std::vector<EarlyAnswer>& out, const Limits& limits) const;
+  void recheck(const Built& b, std::vector<EarlyAnswer>& out, const Limits& limits) const;
 
   const model::Matrix& m_;
   std::vector<GroupMember> members_;

@@ -13,6 +13,7 @@
 #include "checker/engines/solving.hpp"
 #include "checker/reduce.hpp"
 #include "checker/shrink.hpp"
+#include "checker/translate.hpp"
 
 namespace cemv::checker {
 
@@ -228,6 +229,12 @@ ProverResult Portfolio::confirmed(OwnedProblem& reduced, ProverResult answer, co
       }
     }
     answer.cex = std::move(lifted);
+  } else if (options_.recheck && answer.verdict == Verdict::Proved) {
+    // The engines' problem copied into a fresh context, where the proof's
+    // obligations are stated afresh for a new solver (checker/translate.hpp).
+    PooledContext ctx;
+    const OwnedProblem copy = translate(reduced.problem, ctx);
+    check::recheck_proof(copy.problem, answer, &limits);
   } else if (options_.recheck) {
     check::recheck(make, answer, &limits);
   }

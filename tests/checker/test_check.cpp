@@ -12,6 +12,7 @@
 #include "checker/engines/bmc.hpp"
 #include "checker/engines/invariants.hpp"
 #include "checker/engines/kinduction.hpp"
+#include "checker/translate.hpp"
 #include "tests/checker/problems.hpp"
 
 using namespace cemv;
@@ -87,6 +88,49 @@ TEST(Recheck, RejectsAProofOfAFalseProperty) {
   forged.method = Method::KInduction;
   forged.k = 2;
   EXPECT_THROW(check::recheck_proof(p.make, forged), InternalError);
+}
+
+// The re-checks of cone groups and of the portfolio state the obligations
+// over a copy of the engines' problem in a fresh context
+// (checker/translate.hpp): the copy must judge a proof as the problem built
+// there by its factory does, accepting the right one and rejecting a wrong one.
+TEST(Recheck, ATranslatedProblemJudgesProofsAsTheOriginal) {
+  auto p = fixtures::override_instance_monitor(18000, Verdict::Proved);
+  ProverResult r = solve(*make_invariant_prover(), p);
+  ASSERT_EQ(r.verdict, Verdict::Proved) << r.reason_text();
+  z3::context engines;
+  OwnedProblem o = p.make(engines);
+  std::vector<z3::expr> extra{!o.problem.good};
+  z3::context fresh;
+  OwnedProblem copy = translate(o.problem, fresh, &extra);
+  ASSERT_EQ(&copy.problem.ts->ctx(), &fresh);
+  EXPECT_EQ(copy.problem.ts->statevars().size(), o.problem.ts->statevars().size());
+  EXPECT_EQ(copy.problem.ts->inputvars().size(), o.problem.ts->inputvars().size());
+  for (std::size_t i = 0; i < copy.problem.ts->statevars().size(); ++i)
+    EXPECT_EQ(copy.problem.ts->statevars()[i].name, o.problem.ts->statevars()[i].name);
+  EXPECT_EQ(&extra.front().ctx(), &fresh);
+  EXPECT_EQ(extra.front().to_string(), (!copy.problem.good).to_string());
+  EXPECT_NO_THROW(check::recheck_proof(copy.problem, r));
+  ProverResult weakened = r;
+  weakened.invariant.clauses.clear();
+  for (const auto& c : r.invariant.clauses)
+    if (c.find("override.elapsed") == std::string::npos || c.find("monitor") == std::string::npos)
+      weakened.invariant.clauses.push_back(c);
+  ASSERT_LT(weakened.invariant.clauses.size(), r.invariant.clauses.size());
+  EXPECT_THROW(check::recheck_proof(copy.problem, weakened), InternalError);
+}
+
+TEST(Recheck, ATranslatedProblemRejectsAProofOfAFalseProperty) {
+  auto p = fixtures::guarded_counter(2);
+  z3::context engines;
+  OwnedProblem o = p.make(engines);
+  z3::context fresh;
+  OwnedProblem copy = translate(o.problem, fresh);
+  ProverResult forged;
+  forged.verdict = Verdict::Proved;
+  forged.method = Method::KInduction;
+  forged.k = 2;
+  EXPECT_THROW(check::recheck_proof(copy.problem, forged), InternalError);
 }
 
 // k-induction needs its lazily added simple-path constraints here, and the
