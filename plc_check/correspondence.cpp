@@ -261,7 +261,8 @@ Correspondence prove_by_correspondence(const checker::SafetyProblem& p, const Sa
       auto add = [&](const z3::expr& e) {
         if (ids.insert(e.id()).second) cands.push_back(e);
       };
-      for (const auto& l : p.ts->lemmas()) add(l.term);
+      if (!supports)
+        for (const auto& l : p.ts->lemmas()) add(l.term);
       checker::MiningOptions mo;
       mo.runs = o.runs;
       mo.cycles_per_run = o.cycles_per_run;
@@ -272,11 +273,31 @@ Correspondence prove_by_correspondence(const checker::SafetyProblem& p, const Sa
         mo.related = [&](std::size_t x, std::size_t y) { return supports->related(x, y); };
         mo.may_guard = [&](std::size_t g, std::size_t x, std::size_t y) { return supports->may_guard(g, x, y); };
       }
-      for (const auto& cone : checker::mine_candidates_within(p, mo, cones))
-        for (const auto& c : cone) add(c);
-      for (const auto& cone : cones)
-        for (const auto& c : correspondence_candidates(p, samples, cone, supports ? &*supports : nullptr)) add(c);
-      std::vector<z3::expr> kept = product_houdini(p, std::move(cands), limits, meter);
+      const auto mined = checker::mine_candidates_within(p, mo, cones);
+      std::vector<z3::expr> kept;
+      if (!supports) {
+        for (const auto& c : mined.front()) add(c);
+        for (const auto& c : correspondence_candidates(p, samples, cones.front())) add(c);
+        kept = product_houdini(p, std::move(cands), limits, meter);
+      } else {
+        // A group: each cone's candidates (the encoder's lemmas in the first
+        // cone that holds their variables), Houdini one cone at a time.
+        std::vector<z3::expr> lemmas;
+        for (const auto& l : p.ts->lemmas()) lemmas.push_back(l.term);
+        const auto lemma_cones = cones_of(*p.ts, lemmas);
+        std::vector<bool> placed(lemmas.size(), false);
+        std::vector<std::vector<z3::expr>> per_cone(cones.size());
+        for (std::size_t i = 0; i < cones.size(); ++i) {
+          for (std::size_t l = 0; l < lemmas.size(); ++l)
+            if (!placed[l] && std::includes(cones[i].begin(), cones[i].end(), lemma_cones[l].begin(), lemma_cones[l].end())) {
+              placed[l] = true;
+              per_cone[i].push_back(lemmas[l]);
+            }
+          per_cone[i].insert(per_cone[i].end(), mined[i].begin(), mined[i].end());
+          for (const auto& c : correspondence_candidates(p, samples, cones[i], &*supports)) per_cone[i].push_back(c);
+        }
+        kept = product_houdini_by_cones(p, per_cone, cones, limits, meter);
+      }
       checker::Watchdog watchdog(ctx, limits);
       z3::expr_vector all(ctx);
       for (const auto& c : kept) all.push_back(c);

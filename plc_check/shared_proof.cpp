@@ -22,6 +22,7 @@ namespace cemv::plc_check {
 namespace {
 
 using Groups = std::vector<std::vector<std::size_t>>;
+using Cones = std::vector<std::vector<std::size_t>>;
 
 // The goods of `qs` in `reduced`'s terms, and `reduced`: the product of
 // `qs` reduced so that each question's relation stays in the cone.
@@ -44,7 +45,8 @@ Groups group_questions(const model::Matrix& m, const plc::Program& program, cons
 // The proof of one group's questions at once, each with the candidates of
 // its own cone.
 SharedProof prove_group(const model::Matrix& m, const plc::Program& program, const plc::Pou& pou,
-                        const ResolvedMap& map, const std::vector<OutputQuestion>& qs, const CheckOptions& o) {
+                        const ResolvedMap& map, const std::vector<OutputQuestion>& qs, const CheckOptions& o,
+                        bool whole = false) {
   SharedProof out;
   if (qs.size() < 2) return out;  // one output: its own decision is the same product
   const checker::ProblemFactory make = product_factory(m, program, pou, map, qs, o.relation);
@@ -55,8 +57,10 @@ SharedProof prove_group(const model::Matrix& m, const plc::Program& program, con
   const Samples s = sample(reduced.problem, so);
   if (s.violation) return out;  // an output differs: each is decided alone, its run replayed
   const checker::Work work = o.work * static_cast<checker::Work>(qs.size());
-  const Correspondence c =
-      prove_by_correspondence(reduced.problem, s, o.limits.with_work(work), so, cones_of(*reduced.problem.ts, goods));
+  // `whole`: every candidate of the product in two rounds, as one output's
+  // cone gets them; else each cone's related candidates.
+  const Correspondence c = prove_by_correspondence(reduced.problem, s, o.limits.with_work(work), so,
+                                                   whole ? Cones{} : cones_of(*reduced.problem.ts, goods));
   if (c.result.verdict != checker::Verdict::Proved) {
     if (c.result.reason == checker::UnknownReason::TimeLimit) throw checker::Interrupted();
     return out;
@@ -115,6 +119,7 @@ class Once {
 // group's proof.
 struct Shared {
   Once<Groups> groups;
+  Once<SharedProof> whole;  // every output at once, every candidate of the product
   std::mutex mutex;
   std::map<std::size_t, std::shared_ptr<Once<SharedProof>>> proofs;  // by the group's first question
   std::shared_ptr<Once<SharedProof>> proof_of(std::size_t first) {
@@ -160,9 +165,15 @@ SharedProof shared_proof(const model::Matrix& m, const plc::Program& program, co
     if (!member) continue;
     std::vector<OutputQuestion> group;
     for (std::size_t i : g) group.push_back(qs[i]);
-    return shared->proof_of(g.front())->get([&] { return prove_group(m, program, pou, map, group, options); });
+    const SharedProof by_cones =
+        shared->proof_of(g.front())->get([&] { return prove_group(m, program, pou, map, group, options); });
+    if (by_cones.proved) return by_cones;
+    break;
   }
-  return {};
+  // The group's cones did not prove it: the whole product with every
+  // candidate, which proves what cones cannot relate (random matrix 1036's
+  // BDV_501A and BDV_501B, unknown when decided alone).
+  return shared->whole.get([&] { return prove_group(m, program, pou, map, qs, options, true); });
 }
 
 SamplingOptions at_rest(const model::Matrix& m) {

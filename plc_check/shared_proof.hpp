@@ -5,9 +5,10 @@
 // output's own cone's candidates, every output's relation following from it,
 // the proof re-checked once in a fresh context. A program that computes the
 // matrix's outputs is proved this way at about the cost of its cones'
-// proofs, each shared cone once; when a group's conjunction does not follow
-// (some output differs, or its proof needs more), each of its outputs is
-// decided alone.
+// proofs, each shared cone once. When a group's conjunction does not follow
+// (some output differs, or its proof needs more), the whole product is
+// tried with every candidate of its variables (found once), and then each
+// output is decided alone.
 #pragma once
 
 #include "model/matrix.hpp"
@@ -24,8 +25,8 @@ struct SharedProof {
 };
 
 // The proof of the questions of `q`'s group at once, within `options.work`
-// per output tag of the group; not proved for a group of one (its own
-// decision is the same product). The groups, and each group's proof, are
+// per output tag of the group (not for a group of one: its own decision is
+// the same product), else of every question at once with every candidate. The groups, and each group's proof, are
 // found once per process for the same matrix, program, POU, map, relation
 // and budgets, by whichever output asks first (the others wait for it): the
 // answer depends on none of them. Throws checker::Interrupted when the
