@@ -194,10 +194,11 @@ OutputResult check_output(const model::Matrix& m, const plc::Program& program, c
                           const ResolvedMap& map, const OutputQuestion& q, const CheckOptions& options) {
   OutputResult out;
   out.question = q;
-  // Every output at once first: most programs that compute the matrix are
-  // proved there, each output's proof is not repeated.
+  // The output's group at once first (the outputs whose cones overlap):
+  // most programs that compute the matrix are proved there, a shared cone's
+  // proof is not repeated.
   try {
-    const SharedProof all = shared_proof(m, program, pou, map, options);
+    const SharedProof all = options.by_groups ? shared_proof(m, program, pou, map, options, q) : SharedProof{};
     if (all.proved) {
       out.verdict = OutputVerdict::Related;
       out.method = "correspondence invariants";

@@ -50,6 +50,7 @@ struct CheckOptions {
   checker::Work work = 20 * checker::kMega;  // per output and engine
   int first_depth = 3;                       // the short search before the proof
   int bmc_depth = 40;                        // the shortest-run search after it, before the engines
+  bool by_groups = true;                     // first the proof of the output's cone group (shared_proof.hpp)
   checker::Limits limits;                    // the user's wall clock, the cancel token
 };
 

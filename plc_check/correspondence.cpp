@@ -11,6 +11,7 @@
 #include "checker/engines/invariants.hpp"
 #include "checker/engines/solving.hpp"
 #include "encoder/unroller.hpp"
+#include "plc_check/cones.hpp"
 #include "plc_check/houdini.hpp"
 #include "plc_check/product.hpp"
 
@@ -26,8 +27,12 @@ using checker::Verdict;
 // The templates of the header comment, tested on the samples.
 class Templates {
  public:
-  Templates(const encoder::TransitionSystem& ts, const std::vector<Sample>& samples) : ts_(ts), samples_(samples) {
-    for (std::size_t i = 0; i < ts.statevars().size(); ++i) {
+  // Over the state variables of `cone` (ascending indices).
+  // With `supports`, only the pairs and guards they accept.
+  Templates(const encoder::TransitionSystem& ts, const std::vector<Sample>& samples, const std::vector<std::size_t>& cone,
+            const Supports* supports)
+      : ts_(ts), samples_(samples), supports_(supports) {
+    for (std::size_t i : cone) {
       const auto& v = ts.statevars()[i];
       const bool program = v.name.rfind(kProgramPrefix, 0) == 0;
       if (v.var.is_int()) (program ? program_ints_ : matrix_ints_).push_back(i);
@@ -55,6 +60,11 @@ class Templates {
     std::size_t var;  // SIZE_MAX: none
     int pol;
   };
+  bool worth(const Guard& g, std::size_t x, std::size_t y) const {
+    if (!supports_) return true;
+    if (y != SIZE_MAX && !supports_->related(x, y, true)) return false;
+    return g.var == SIZE_MAX || supports_->may_guard(g.var, x, y);
+  }
   bool program(std::size_t v) const { return ts_.statevars()[v].name.rfind(kProgramPrefix, 0) == 0; }
   bool holds(const Guard& g, const Sample& s) const { return g.var == SIZE_MAX || s[g.var].i == g.pol; }
   z3::expr var(std::size_t v) const { return ts_.statevars()[v].var; }
@@ -70,6 +80,7 @@ class Templates {
     for (std::size_t x : program_ints_)
       for (std::size_t y : matrix_ints_) {
         if (g.var != SIZE_MAX && unguarded_.count({x, y})) continue;  // holds without the guard
+        if (!worth(g, x, y)) continue;
         const Sample* first = nullptr;
         std::optional<std::int64_t> a, b;
         bool fits = true;
@@ -109,7 +120,7 @@ class Templates {
     for (std::size_t p : bools_) {
       if (!program(p) || p == g.var) continue;
       for (std::size_t q : bools_) {
-        if (program(q) || q == g.var) continue;
+        if (program(q) || q == g.var || !worth(g, p, q)) continue;
         for (int same = 1; same >= 0; --same) {
           auto equal_where = [&](const Guard& w) {
             return std::all_of(samples_.begin(), samples_.end(), [&](const Sample& s) {
@@ -130,6 +141,7 @@ class Templates {
     if (g.var == SIZE_MAX) return;
     for (const auto* side : {&program_ints_, &matrix_ints_})
       for (std::size_t v : *side) {
+        if (!worth(g, v, SIZE_MAX)) continue;
         std::optional<std::int64_t> c;
         bool constant = true, global = true;
         for (const auto& s : samples_) {
@@ -174,6 +186,7 @@ class Templates {
 
   const encoder::TransitionSystem& ts_;
   const std::vector<Sample>& samples_;
+  const Supports* supports_;
   std::vector<std::size_t> program_ints_, matrix_ints_, bools_;
   std::vector<Guard> guards_;
   std::set<std::pair<std::size_t, std::size_t>> unguarded_;  // (x, y) related without a guard
@@ -209,13 +222,25 @@ std::optional<int> good_from(const checker::SafetyProblem& p, const z3::expr& S,
 
 }  // namespace
 
-std::vector<z3::expr> correspondence_candidates(const checker::SafetyProblem& p, const Samples& samples) {
+std::vector<z3::expr> correspondence_candidates(const checker::SafetyProblem& p, const Samples& samples,
+                                                const std::vector<std::size_t>& cone, const Supports* supports) {
   if (samples.states.empty()) return {};
-  return Templates(*p.ts, samples.states).make();
+  return Templates(*p.ts, samples.states, cone, supports).make();
+}
+
+std::vector<std::size_t> every_state_variable(const checker::SafetyProblem& p) {
+  std::vector<std::size_t> all(p.ts->statevars().size());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
+  return all;
 }
 
 Correspondence prove_by_correspondence(const checker::SafetyProblem& p, const Samples& samples,
-                                       const checker::Limits& limits, const SamplingOptions& o) {
+                                       const checker::Limits& limits, const SamplingOptions& o,
+                                       std::vector<std::vector<std::size_t>> cones) {
+  // Cones given: a group's, whose candidates must grow with its cones' sizes.
+  std::optional<Supports> supports;
+  if (!cones.empty()) supports.emplace(*p.ts);
+  if (cones.empty()) cones.push_back(every_state_variable(p));
   const auto start = checker::Clock::now();
   Correspondence out;
   ProverResult& r = out.result;
@@ -227,22 +252,52 @@ Correspondence prove_by_correspondence(const checker::SafetyProblem& p, const Sa
     // Booleans (most of the candidates and of Houdini's rounds), then with
     // them when the output does not follow.
     std::optional<int> k;
-    for (int round = 0; round < 2 && !k; ++round) {
+    // A group's candidates are few enough for the clauses from the start:
+    // with them Houdini needs fewer rounds than without (they strengthen
+    // what is kept), and a group without them rarely proves.
+    for (int round = supports ? 1 : 0; round < 2 && !k; ++round) {
       std::vector<z3::expr> cands;
       std::unordered_set<unsigned> ids;
       auto add = [&](const z3::expr& e) {
         if (ids.insert(e.id()).second) cands.push_back(e);
       };
-      for (const auto& l : p.ts->lemmas()) add(l.term);
+      if (!supports)
+        for (const auto& l : p.ts->lemmas()) add(l.term);
       checker::MiningOptions mo;
       mo.runs = o.runs;
       mo.cycles_per_run = o.cycles_per_run;
       mo.seed = o.seed;
       mo.limits = &limits;
       mo.bool_implications = round == 1;
-      for (const auto& c : checker::mine_candidates(p, mo)) add(c);
-      for (const auto& c : correspondence_candidates(p, samples)) add(c);
-      std::vector<z3::expr> kept = product_houdini(p, std::move(cands), limits, meter);
+      if (supports) {
+        mo.related = [&](std::size_t x, std::size_t y) { return supports->related(x, y); };
+        mo.may_guard = [&](std::size_t g, std::size_t x, std::size_t y) { return supports->may_guard(g, x, y); };
+      }
+      const auto mined = checker::mine_candidates_within(p, mo, cones);
+      std::vector<z3::expr> kept;
+      if (!supports) {
+        for (const auto& c : mined.front()) add(c);
+        for (const auto& c : correspondence_candidates(p, samples, cones.front())) add(c);
+        kept = product_houdini(p, std::move(cands), limits, meter);
+      } else {
+        // A group: each cone's candidates (the encoder's lemmas in the first
+        // cone that holds their variables), Houdini one cone at a time.
+        std::vector<z3::expr> lemmas;
+        for (const auto& l : p.ts->lemmas()) lemmas.push_back(l.term);
+        const auto lemma_cones = cones_of(*p.ts, lemmas);
+        std::vector<bool> placed(lemmas.size(), false);
+        std::vector<std::vector<z3::expr>> per_cone(cones.size());
+        for (std::size_t i = 0; i < cones.size(); ++i) {
+          for (std::size_t l = 0; l < lemmas.size(); ++l)
+            if (!placed[l] && std::includes(cones[i].begin(), cones[i].end(), lemma_cones[l].begin(), lemma_cones[l].end())) {
+              placed[l] = true;
+              per_cone[i].push_back(lemmas[l]);
+            }
+          per_cone[i].insert(per_cone[i].end(), mined[i].begin(), mined[i].end());
+          for (const auto& c : correspondence_candidates(p, samples, cones[i], &*supports)) per_cone[i].push_back(c);
+        }
+        kept = product_houdini_by_cones(p, per_cone, cones, limits, meter);
+      }
       checker::Watchdog watchdog(ctx, limits);
       z3::expr_vector all(ctx);
       for (const auto& c : kept) all.push_back(c);

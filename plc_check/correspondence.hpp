@@ -24,9 +24,14 @@
 
 namespace cemv::plc_check {
 
-// Candidates over the state variables of `p` (a product of plc_check's, best
-// reduced: checker/reduce.hpp), each true in every sampled state.
-std::vector<z3::expr> correspondence_candidates(const checker::SafetyProblem& p, const Samples& samples);
+// Candidates over the state variables of `cone` (ascending indices into the
+// state variables of `p`, a product of plc_check's, best reduced:
+// checker/reduce.hpp), each true in every sampled state.
+class Supports;
+std::vector<z3::expr> correspondence_candidates(const checker::SafetyProblem& p, const Samples& samples,
+                                                const std::vector<std::size_t>& cone,
+                                                const Supports* supports = nullptr);
+std::vector<std::size_t> every_state_variable(const checker::SafetyProblem& p);
 
 struct Correspondence {
   // Proved with the invariant and k (0 or 1), or Unknown: BoundReached when
@@ -43,8 +48,12 @@ struct Correspondence {
 // Houdini over the candidates (those above and the checker's mined ones, with
 // the runs `o` describes), then `good` from what is kept; in two rounds, the
 // second with the checker's clauses over pairs of Booleans, only when `good`
-// does not follow from the first's.
+// does not follow from the first's. With `cones` (plc_check/cones.hpp), the
+// candidates are the union of each cone's, every template and mined pair
+// within one cone whose variables' inputs are related (Supports in
+// plc_check/cones.hpp); without, those of every state variable.
 Correspondence prove_by_correspondence(const checker::SafetyProblem& p, const Samples& samples,
-                                       const checker::Limits& limits, const SamplingOptions& o = {});
+                                       const checker::Limits& limits, const SamplingOptions& o = {},
+                                       std::vector<std::vector<std::size_t>> cones = {});
 
 }  // namespace cemv::plc_check

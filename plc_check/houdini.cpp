@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <string>
+#include <unordered_set>
 
 #include "checker/engines/invariants.hpp"
 #include "encoder/unroller.hpp"
@@ -81,6 +82,57 @@ std::vector<z3::expr> product_houdini(const checker::SafetyProblem& p, std::vect
   drop_until_unsat(s, cands, limits, meter);
   std::vector<z3::expr> kept;
   for (const auto& c : cands) kept.push_back(c.term);
+  return kept;
+}
+
+std::vector<z3::expr> product_houdini_by_cones(const checker::SafetyProblem& p,
+                                               const std::vector<std::vector<z3::expr>>& candidates,
+                                               const std::vector<std::vector<std::size_t>>& cones,
+                                               const checker::Limits& limits, checker::WorkMeter& meter) {
+  const auto& ts = *p.ts;
+  if (has_floats(ts)) {
+    std::vector<z3::expr> all;
+    std::unordered_set<unsigned> ids;
+    for (const auto& cs : candidates)
+      for (const auto& c : cs)
+        if (ids.insert(c.id()).second) all.push_back(c);
+    return checker::houdini(p, std::move(all), limits, meter);
+  }
+  z3::context& ctx = ts.ctx();
+  encoder::Unroller u(ts);
+  checker::Watchdog watchdog(ctx, limits);
+  std::unordered_set<unsigned> asked;  // kept or dropped by an earlier cone
+  std::vector<z3::expr> kept;
+  for (std::size_t i = 0; i < cones.size() && i < candidates.size(); ++i) {
+    std::vector<bool> in(ts.statevars().size(), false);
+    for (std::size_t v : cones[i]) in[v] = true;
+    std::vector<Candidate> cands;
+    for (const auto& c : candidates[i])
+      if (asked.insert(c.id()).second) cands.push_back(Candidate{c, u.at(c, 0), std::nullopt});
+    if (cands.empty()) continue;
+    z3::expr_vector init(ctx), trans(ctx);
+    for (std::size_t v : cones[i]) {
+      const auto& s = ts.statevars()[v];
+      init.push_back(s.var == s.init);
+      trans.push_back(s.next_var == s.next);
+    }
+    {
+      z3::solver s(ctx, "QF_LIA");
+      s.add(u.at(z3::mk_and(init), 0));
+      drop_until_unsat(s, cands, limits, meter);
+    }
+    z3::solver s(ctx, "QF_LIA");
+    s.add(u.at(ts.constraint_formula() && p.assumption && z3::mk_and(trans), 0));
+    for (const auto& k : kept) s.add(u.at(k, 0));  // invariants of the product
+    for (std::size_t j = 0; j < cands.size(); ++j) {
+      const z3::expr l = ctx.bool_const(("plc.houdini.cone." + std::to_string(i) + "." + std::to_string(j)).c_str());
+      s.add(z3::implies(l, cands[j].decided));
+      cands[j].literal = l;
+      cands[j].decided = u.at(cands[j].term, 1);
+    }
+    drop_until_unsat(s, cands, limits, meter);
+    for (const auto& c : cands) kept.push_back(c.term);
+  }
   return kept;
 }
 

@@ -1,6 +1,7 @@
 // The correspondence of the whole product, found once (shared_proof.hpp).
 #include "plc_check/shared_proof.hpp"
 
+#include <algorithm>
 #include <deque>
 #include <future>
 #include <map>
@@ -13,25 +14,53 @@
 #include "formats/plc_map.hpp"
 #include "model/vocabulary.hpp"
 #include "plc/print.hpp"
+#include "plc_check/cones.hpp"
 #include "plc_check/correspondence.hpp"
 
 namespace cemv::plc_check {
 
 namespace {
 
-SharedProof prove_all(const model::Matrix& m, const plc::Program& program, const plc::Pou& pou,
-                      const ResolvedMap& map, const CheckOptions& o) {
+using Groups = std::vector<std::vector<std::size_t>>;
+using Cones = std::vector<std::vector<std::size_t>>;
+
+// The goods of `qs` in `reduced`'s terms, and `reduced`: the product of
+// `qs` reduced so that each question's relation stays in the cone.
+checker::OwnedProblem reduce_product(const checker::ProblemFactory& make, z3::context& ctx, std::vector<z3::expr>& goods) {
+  const checker::OwnedProblem original = make(ctx);
+  goods = std::static_pointer_cast<ProductProblem>(original.owner)->goods;
+  return checker::reduce_with(original, goods);
+}
+
+// The questions in groups whose cones overlap (cones.hpp), on the product of
+// every question reduced.
+Groups group_questions(const model::Matrix& m, const plc::Program& program, const plc::Pou& pou,
+                       const ResolvedMap& map, const std::vector<OutputQuestion>& qs, Relation relation) {
+  z3::context ctx;
+  std::vector<z3::expr> goods;
+  const checker::OwnedProblem reduced = reduce_product(product_factory(m, program, pou, map, qs, relation), ctx, goods);
+  return overlapping(cones_of(*reduced.problem.ts, goods));
+}
+
+// The proof of one group's questions at once, each with the candidates of
+// its own cone.
+SharedProof prove_group(const model::Matrix& m, const plc::Program& program, const plc::Pou& pou,
+                        const ResolvedMap& map, const std::vector<OutputQuestion>& qs, const CheckOptions& o,
+                        bool whole = false) {
   SharedProof out;
-  const std::vector<OutputQuestion> qs = questions(m, map);
   if (qs.size() < 2) return out;  // one output: its own decision is the same product
   const checker::ProblemFactory make = product_factory(m, program, pou, map, qs, o.relation);
   z3::context ctx;
-  const checker::OwnedProblem reduced = checker::reduce(make(ctx));
+  std::vector<z3::expr> goods;
+  const checker::OwnedProblem reduced = reduce_product(make, ctx, goods);
   const SamplingOptions so = at_rest(m);
   const Samples s = sample(reduced.problem, so);
   if (s.violation) return out;  // an output differs: each is decided alone, its run replayed
   const checker::Work work = o.work * static_cast<checker::Work>(qs.size());
-  const Correspondence c = prove_by_correspondence(reduced.problem, s, o.limits.with_work(work), so);
+  // `whole`: every candidate of the product in two rounds, as one output's
+  // cone gets them; else each cone's related candidates.
+  const Correspondence c = prove_by_correspondence(reduced.problem, s, o.limits.with_work(work), so,
+                                                   whole ? Cones{} : cones_of(*reduced.problem.ts, goods));
   if (c.result.verdict != checker::Verdict::Proved) {
     if (c.result.reason == checker::UnknownReason::TimeLimit) throw checker::Interrupted();
     return out;
@@ -42,7 +71,7 @@ SharedProof prove_all(const model::Matrix& m, const plc::Program& program, const
   return out;
 }
 
-// Everything the shared proof depends on, as text.
+// Everything the proofs depend on, as text.
 std::string key_of(const model::Matrix& m, const plc::Program& program, const plc::Pou& pou, const ResolvedMap& map,
                    const CheckOptions& o) {
   return std::string(to_string(o.relation)) + " " + std::to_string(o.work) + " " + formats::signature(m) + " " +
@@ -50,33 +79,31 @@ std::string key_of(const model::Matrix& m, const plc::Program& program, const pl
          plc::print_program(program);
 }
 
-class Memo {
+// An answer found once by whichever asker comes first; the others wait for
+// it. An asker that fails (interrupted) leaves it to the next one.
+template <class T>
+class Once {
  public:
-  SharedProof get(const std::string& key, const std::function<SharedProof()>& prove) {
-    std::promise<SharedProof> promise;
-    std::shared_future<SharedProof> answer;
+  T get(const std::function<T()>& find) {
+    std::promise<T> promise;
+    std::shared_future<T> answer;
     bool mine = false;
     {
       std::lock_guard<std::mutex> lock(mutex_);
-      const auto it = answers_.find(key);
-      if (it != answers_.end()) {
-        answer = it->second;
-      } else {
-        answer = promise.get_future().share();
-        answers_.emplace(key, answer);
-        order_.push_back(key);
-        if (order_.size() > kKept) {
-          answers_.erase(order_.front());
-          order_.pop_front();
-        }
+      if (!answer_.valid()) {
+        answer_ = promise.get_future().share();
         mine = true;
       }
+      answer = answer_;
     }
     if (mine) {
       try {
-        promise.set_value(prove());
+        promise.set_value(find());
       } catch (...) {
-        forget(key);  // interrupted or failed: the next output tries again
+        {
+          std::lock_guard<std::mutex> lock(mutex_);
+          answer_ = {};
+        }
         promise.set_exception(std::current_exception());
       }
     }
@@ -84,27 +111,69 @@ class Memo {
   }
 
  private:
-  static constexpr std::size_t kKept = 4;
-  void forget(const std::string& key) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    answers_.erase(key);
-    for (auto it = order_.begin(); it != order_.end(); ++it)
-      if (*it == key) {
-        order_.erase(it);
-        break;
-      }
-  }
   std::mutex mutex_;
-  std::map<std::string, std::shared_future<SharedProof>> answers_;
-  std::deque<std::string> order_;
+  std::shared_future<T> answer_;
+};
+
+// What one matrix, program, map and options share: the groups, then each
+// group's proof.
+struct Shared {
+  Once<Groups> groups;
+  Once<SharedProof> whole;  // every output at once, every candidate of the product
+  std::mutex mutex;
+  std::map<std::size_t, std::shared_ptr<Once<SharedProof>>> proofs;  // by the group's first question
+  std::shared_ptr<Once<SharedProof>> proof_of(std::size_t first) {
+    std::lock_guard<std::mutex> lock(mutex);
+    auto& p = proofs[first];
+    if (!p) p = std::make_shared<Once<SharedProof>>();
+    return p;
+  }
+};
+
+// The last few runs' shares, by key.
+class Memo {
+ public:
+  std::shared_ptr<Shared> get(const std::string& key) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    for (const auto& [k, s] : kept_)
+      if (k == key) return s;
+    kept_.emplace_back(key, std::make_shared<Shared>());
+    if (kept_.size() > kKept) kept_.pop_front();
+    return kept_.back().second;
+  }
+
+ private:
+  static constexpr std::size_t kKept = 4;
+  std::mutex mutex_;
+  std::deque<std::pair<std::string, std::shared_ptr<Shared>>> kept_;
 };
 
 }  // namespace
 
 SharedProof shared_proof(const model::Matrix& m, const plc::Program& program, const plc::Pou& pou,
-                         const ResolvedMap& map, const CheckOptions& options) {
+                         const ResolvedMap& map, const CheckOptions& options, const OutputQuestion& q) {
   static Memo memo;
-  return memo.get(key_of(m, program, pou, map, options), [&] { return prove_all(m, program, pou, map, options); });
+  const std::shared_ptr<Shared> shared = memo.get(key_of(m, program, pou, map, options));
+  const std::vector<OutputQuestion> qs = questions(m, map);
+  const Groups groups = shared->groups.get([&] {
+    return qs.size() < 2 ? Groups{} : group_questions(m, program, pou, map, qs, options.relation);
+  });
+  for (const auto& g : groups) {
+    const bool member = std::any_of(g.begin(), g.end(), [&](std::size_t i) {
+      return qs[i].effect == q.effect && qs[i].position == q.position;
+    });
+    if (!member) continue;
+    std::vector<OutputQuestion> group;
+    for (std::size_t i : g) group.push_back(qs[i]);
+    const SharedProof by_cones =
+        shared->proof_of(g.front())->get([&] { return prove_group(m, program, pou, map, group, options); });
+    if (by_cones.proved) return by_cones;
+    break;
+  }
+  // The group's cones did not prove it: the whole product with every
+  // candidate, which proves what cones cannot relate (random matrix 1036's
+  // BDV_501A and BDV_501B, unknown when decided alone).
+  return shared->whole.get([&] { return prove_group(m, program, pou, map, qs, options, true); });
 }
 
 SamplingOptions at_rest(const model::Matrix& m) {

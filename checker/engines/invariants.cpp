@@ -114,13 +114,19 @@ std::vector<Sample> simulate(const SafetyProblem& p, const MiningOptions& opt) {
 // templates are few, so each is tested on the samples where it is made.
 class CandidateMiner {
  public:
-  CandidateMiner(const SafetyProblem& p, std::vector<Sample> samples, const MiningOptions& opt)
-      : ts_(*p.ts), samples_(std::move(samples)), opt_(opt), k_(constants_of(p)) {
-    for (std::size_t i = 0; i < ts_.statevars().size(); ++i) {
+  // Over the state variables `only` names (ascending indices), or all.
+  CandidateMiner(const SafetyProblem& p, const std::vector<Sample>& samples, const MiningOptions& opt,
+                 const Constants& k, const std::vector<std::size_t>* only = nullptr)
+      : ts_(*p.ts), samples_(samples), opt_(opt), k_(k) {
+    auto take = [&](std::size_t i) {
       const auto& v = ts_.statevars()[i].var;
       if (v.is_int()) ints_.push_back(i);
       else if (v.is_bool()) bools_.push_back(i);
-    }
+    };
+    if (only)
+      for (std::size_t i : *only) take(i);
+    else
+      for (std::size_t i = 0; i < ts_.statevars().size(); ++i) take(i);
   }
 
   std::vector<z3::expr> mine() {
@@ -181,10 +187,14 @@ class CandidateMiner {
     return d;
   }
 
+  bool related(std::size_t x, std::size_t y) const { return !opt_.related || opt_.related(x, y); }
+  bool may_guard(std::size_t g, std::size_t x, std::size_t y) const { return !opt_.may_guard || opt_.may_guard(g, x, y); }
+
   void pairs() {
     for (std::size_t a = 0; a < ints_.size() && !stop(); ++a)
       for (std::size_t b = a + 1; b < ints_.size(); ++b) {
         std::size_t x = ints_[a], y = ints_[b];
+        if (!related(x, y)) continue;
         if (auto d = constant_difference(x, y, [](const Sample&) { return true; })) {
           add(var(x) == var(y) + num(*d));
           continue;
@@ -208,10 +218,11 @@ class CandidateMiner {
         for (std::size_t a = 0; a < ints_.size(); ++a) {
           std::size_t x = ints_[a];
           bool global = constant_difference(x, SIZE_MAX, [](const Sample&) { return true; }).has_value();
-          if (!global)
+          if (!global && may_guard(g, x, SIZE_MAX))
             if (auto c = constant_difference(x, SIZE_MAX, keep)) add(z3::implies(guard, var(x) == num(*c)));
           for (std::size_t b = a + 1; b < ints_.size(); ++b) {
             std::size_t y = ints_[b];
+            if (!related(x, y) || !may_guard(g, x, y)) continue;
             if (constant_difference(x, y, [](const Sample&) { return true; })) continue;
             if (auto d = constant_difference(x, y, keep)) add(z3::implies(guard, var(x) == var(y) + num(*d)));
           }
@@ -294,7 +305,7 @@ class CandidateMiner {
   void bool_implications() {
     for (std::size_t a = 0; a < bools_.size() && !stop(); ++a)
       for (std::size_t b = a + 1; b < bools_.size(); ++b)
-        for (int pa = 0; pa < 2; ++pa)
+        for (int pa = 0; pa < 2 && related(bools_[a], bools_[b]); ++pa)
           for (int pb = 0; pb < 2; ++pb) {
             // The clause (x == pa) or (y == pb) on every sample.
             bool holds = std::all_of(samples_.begin(), samples_.end(), [&](const Sample& s) {
@@ -308,9 +319,9 @@ class CandidateMiner {
   }
 
   const encoder::TransitionSystem& ts_;
-  std::vector<Sample> samples_;
+  const std::vector<Sample>& samples_;
   const MiningOptions& opt_;
-  Constants k_;
+  const Constants& k_;
   std::vector<std::size_t> ints_, bools_;
   std::vector<z3::expr> out_;
 };
@@ -416,7 +427,24 @@ std::vector<z3::expr> mine_candidates(const SafetyProblem& problem, const Mining
   } catch (const std::logic_error&) {
     return {};  // an operator the Evaluator does not interpret: no samples, no candidates
   }
-  return CandidateMiner(problem, distinct(std::move(samples)), options).mine();
+  const std::vector<Sample> states = distinct(std::move(samples));
+  const Constants k = constants_of(problem);
+  return CandidateMiner(problem, states, options, k).mine();
+}
+
+std::vector<std::vector<z3::expr>> mine_candidates_within(const SafetyProblem& problem, const MiningOptions& options,
+                                                          const std::vector<std::vector<std::size_t>>& subsets) {
+  std::vector<std::vector<z3::expr>> out(subsets.size());
+  std::vector<Sample> samples;
+  try {
+    samples = simulate(problem, options);
+  } catch (const std::logic_error&) {
+    return out;
+  }
+  const std::vector<Sample> states = distinct(std::move(samples));
+  const Constants k = constants_of(problem);
+  for (std::size_t i = 0; i < subsets.size(); ++i) out[i] = CandidateMiner(problem, states, options, k, &subsets[i]).mine();
+  return out;
 }
 
 std::vector<z3::expr> houdini(const SafetyProblem& problem, std::vector<z3::expr> candidates,

@@ -11,6 +11,7 @@
 // bound in one induction step where unrolling cannot.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -35,10 +36,21 @@ struct MiningOptions {
   // Mining stops early when the question is interrupted (the answer is
   // then abandoned anyway); its runs are a fixed number, not a time.
   const Limits* limits = nullptr;
+  // Which pairs of state variables (indices into statevars()) are worth a
+  // relation, and which Bool `g` worth stating one under (y = SIZE_MAX for a
+  // constant of x alone); unset: every pair and guard.
+  std::function<bool(std::size_t x, std::size_t y)> related;
+  std::function<bool(std::size_t g, std::size_t x, std::size_t y)> may_guard;
 };
 
 // Candidate invariants over the state variables, true in every sampled state.
 std::vector<z3::expr> mine_candidates(const SafetyProblem& problem, const MiningOptions& options = {});
+// The same for each subset of the state variables (ascending indices into
+// statevars()), from one simulation: each subset's candidates speak of its
+// variables alone (a cone's, so that many cones cost their sizes, not the
+// size of their union).
+std::vector<std::vector<z3::expr>> mine_candidates_within(const SafetyProblem& problem, const MiningOptions& options,
+                                                          const std::vector<std::vector<std::size_t>>& subsets);
 
 // The largest subset of `candidates` that holds initially and is inductive
 // (under the constraints and the assumption of the cycle). Candidates are

@@ -11,6 +11,12 @@ if(TARGET cemv_plc_encoder)
   target_link_libraries(test_plc_encoder_diff PRIVATE cemv_plc_encoder cemv_plc GTest::gtest_main)
   gtest_discover_tests(test_plc_encoder_diff DISCOVERY_TIMEOUT 60 PROPERTIES TIMEOUT 600)
 endif()
+# The outputs' cones and their groups.
+if(TARGET cemv_plc_check AND TARGET cemv_plc)
+  add_executable(test_plc_cones ${CMAKE_CURRENT_LIST_DIR}/test_plc_cones.cpp)
+  target_link_libraries(test_plc_cones PRIVATE cemv_plc_check GTest::gtest_main)
+  gtest_discover_tests(test_plc_cones DISCOVERY_TIMEOUT 60)
+endif()
 # plc-check on the tank example: the hand-written program and its three seeded errors.
 if(TARGET cemv_plc_check AND TARGET cemv_plc)
   add_executable(test_plc_check ${CMAKE_CURRENT_LIST_DIR}/test_plc_check.cpp)

@@ -1,0 +1,146 @@
+// Cones of a product's outputs and their groups (cones.hpp).
+#include "plc_check/cones.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <unordered_map>
+#include <unordered_set>
+
+namespace cemv::plc_check {
+
+namespace {
+
+// The state variables (indices) a term reads, each DAG node visited once;
+// with `inputs`, the input variables (indices) instead.
+class Reads {
+ public:
+  explicit Reads(const encoder::TransitionSystem& ts, bool inputs = false) {
+    if (inputs)
+      for (std::size_t i = 0; i < ts.inputvars().size(); ++i) index_.emplace(ts.inputvars()[i].var.id(), i);
+    else
+      for (std::size_t i = 0; i < ts.statevars().size(); ++i) index_.emplace(ts.statevars()[i].var.id(), i);
+  }
+  std::vector<std::size_t> of(const z3::expr& e) {
+    seen_.clear();
+    std::vector<std::size_t> out;
+    std::vector<z3::expr> todo{e};
+    while (!todo.empty()) {
+      const z3::expr t = todo.back();
+      todo.pop_back();
+      if (!seen_.insert(t.id()).second) continue;
+      if (const auto it = index_.find(t.id()); it != index_.end()) out.push_back(it->second);
+      if (t.is_app())
+        for (unsigned i = 0; i < t.num_args(); ++i) todo.push_back(t.arg(i));
+    }
+    return out;
+  }
+
+ private:
+  std::unordered_map<unsigned, std::size_t> index_;
+  std::unordered_set<unsigned> seen_;
+};
+
+// What each state variable's next-state and initial functions read.
+std::vector<std::vector<std::size_t>> direct_reads(const encoder::TransitionSystem& ts, bool inputs) {
+  Reads reads(ts, inputs);
+  std::vector<std::vector<std::size_t>> out(ts.statevars().size());
+  for (std::size_t i = 0; i < out.size(); ++i) {
+    out[i] = reads.of(ts.statevars()[i].next);
+    const auto init = reads.of(ts.statevars()[i].init);
+    out[i].insert(out[i].end(), init.begin(), init.end());
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::vector<std::size_t>> cones_of(const encoder::TransitionSystem& ts, const std::vector<z3::expr>& terms) {
+  const auto& vars = ts.statevars();
+  Reads reads(ts);
+  const std::vector<std::vector<std::size_t>> next_reads = direct_reads(ts, false);
+  std::vector<std::vector<std::size_t>> out;
+  for (const auto& t : terms) {
+    std::vector<bool> in(vars.size(), false);
+    std::vector<std::size_t> todo = reads.of(t);
+    while (!todo.empty()) {
+      const std::size_t v = todo.back();
+      todo.pop_back();
+      if (in[v]) continue;
+      in[v] = true;
+      for (std::size_t w : next_reads[v])
+        if (!in[w]) todo.push_back(w);
+    }
+    std::vector<std::size_t> cone;
+    for (std::size_t v = 0; v < vars.size(); ++v)
+      if (in[v]) cone.push_back(v);
+    out.push_back(std::move(cone));
+  }
+  return out;
+}
+
+std::vector<std::vector<std::size_t>> overlapping(const std::vector<std::vector<std::size_t>>& cones) {
+  std::vector<std::size_t> parent(cones.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  auto root = [&](std::size_t i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  };
+  std::unordered_map<std::size_t, std::size_t> owner;  // state variable -> the first cone holding it
+  for (std::size_t c = 0; c < cones.size(); ++c)
+    for (std::size_t v : cones[c]) {
+      const auto [it, fresh] = owner.emplace(v, c);
+      if (fresh) continue;
+      const std::size_t a = root(it->second), b = root(c);
+      if (a != b) parent[std::max(a, b)] = std::min(a, b);
+    }
+  std::vector<std::vector<std::size_t>> groups;
+  std::unordered_map<std::size_t, std::size_t> group_of_root;
+  for (std::size_t c = 0; c < cones.size(); ++c) {
+    const auto [it, fresh] = group_of_root.emplace(root(c), groups.size());
+    if (fresh) groups.emplace_back();
+    groups[it->second].push_back(c);
+  }
+  return groups;
+}
+
+Supports::Supports(const encoder::TransitionSystem& ts) {
+  const std::size_t n = ts.statevars().size();
+  words_ = (ts.inputvars().size() + 63) / 64;
+  bits_.assign(n * words_, 0);
+  const auto inputs = direct_reads(ts, true), states = direct_reads(ts, false);
+  for (std::size_t v = 0; v < n; ++v)
+    for (std::size_t i : inputs[v]) bits_[v * words_ + i / 64] |= std::uint64_t{1} << (i % 64);
+  // The closure over the state variables read, to a fixed point.
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (std::size_t v = 0; v < n; ++v)
+      for (std::size_t w : states[v])
+        for (std::size_t k = 0; k < words_; ++k) {
+          const std::uint64_t before = bits_[v * words_ + k];
+          bits_[v * words_ + k] |= bits_[w * words_ + k];
+          changed = changed || bits_[v * words_ + k] != before;
+        }
+  }
+}
+
+bool Supports::related(std::size_t x, std::size_t y, bool same) const {
+  const std::uint64_t *a = of(x), *b = of(y);
+  bool a_in_b = true, b_in_a = true;
+  for (std::size_t k = 0; k < words_; ++k) {
+    a_in_b = a_in_b && (a[k] & ~b[k]) == 0;
+    b_in_a = b_in_a && (b[k] & ~a[k]) == 0;
+  }
+  return same ? a_in_b && b_in_a : a_in_b || b_in_a;
+}
+
+bool Supports::may_guard(std::size_t g, std::size_t x, std::size_t y) const {
+  const std::uint64_t *s = of(g), *a = of(x), *b = y == SIZE_MAX ? nullptr : of(y);
+  bool none = true, same = true;
+  for (std::size_t k = 0; k < words_; ++k) {
+    none = none && s[k] == 0;
+    same = same && s[k] == (a[k] | (b ? b[k] : 0));
+  }
+  return none || same;
+}
+
+}  // namespace cemv::plc_check

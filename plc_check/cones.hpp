@@ -1,0 +1,53 @@
+// The cones of a product's outputs and the groups they fall into (docs/plc.md
+// "How an equality is proved"). An output's cone is the set of state
+// variables its relation reaches through next-state and initial functions,
+// on the matrix's side and the program's alike: a closed system of its own,
+// so what is inductive on it is inductive on any product that holds it.
+// Outputs whose cones share a state variable are proved together (one
+// sampling, one Houdini, one re-check), each with the candidates of its own
+// cone, so that the candidates grow with the cones, not with their union.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <z3++.h>
+
+#include "encoder/transition_system.hpp"
+
+namespace cemv::plc_check {
+
+// For each term, the indices (into ts.statevars(), ascending) of the state
+// variables it reaches.
+std::vector<std::vector<std::size_t>> cones_of(const encoder::TransitionSystem& ts, const std::vector<z3::expr>& terms);
+
+// The indices of `cones` in groups: two cones share a group when a chain of
+// cones, each sharing a state variable with the next, links them. Groups in
+// the order of their first member, members ascending.
+std::vector<std::vector<std::size_t>> overlapping(const std::vector<std::vector<std::size_t>>& cones);
+
+// The inputs each state variable depends on (through every state variable
+// it reads, transitively): which pairs of a cone's variables are worth a
+// candidate relation. A program variable and the matrix variable it stands
+// for are computed from the same inputs; a guard worth stating a relation
+// under depends on no input its variables do not (a timer's running flag
+// for its elapsed time; not the latch of an effect downstream, under which
+// many of a cause's values are constant by chance in the samples). With
+// these, a group's candidates grow with its cones' sizes, not their squares.
+class Supports {
+ public:
+  explicit Supports(const encoder::TransitionSystem& ts);
+  // The inputs of one include the other's (`same`: are the other's).
+  bool related(std::size_t x, std::size_t y, bool same = false) const;
+  // `g` reads no input, or exactly those of x and y together (y = SIZE_MAX:
+  // x alone).
+  bool may_guard(std::size_t g, std::size_t x, std::size_t y) const;
+
+ private:
+  std::size_t words_ = 0;
+  std::vector<std::uint64_t> bits_;  // words_ per state variable
+  const std::uint64_t* of(std::size_t v) const { return bits_.data() + v * words_; }
+};
+
+}  // namespace cemv::plc_check
