@@ -7,6 +7,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "checker/concrete_judge.hpp"
 #include "checker/engines/solving.hpp"
 #include "checker/reduce.hpp"
 #include "encoder/encode.hpp"
@@ -26,37 +27,6 @@ Value in_kind_of(const Value& v, const Value& rest) {
   else out.i = rest.is_float ? float_key(rest.f) : rest.i;
   return out;
 }
-
-// A trace judged on the encoding's own Evaluator: does it still violate
-// `good` in its last cycle (and in no earlier one), with the constraints and
-// the assumption in every cycle? A replay costs microseconds a cycle, a
-// solver call on the unrolling a good part of a second.
-class ConcreteJudge {
- public:
-  explicit ConcreteJudge(const SafetyProblem& p) : enc_(p.ts->ctx()) {
-    enc_.ts = *p.ts;
-    enc_.ts.name_term("shrink.good", p.good);
-    enc_.ts.name_term("shrink.facts", p.assumption && p.ts->constraint_formula());
-    ev_.emplace(enc_);
-  }
-  bool violates(const Trace& t) {
-    ev_->reset();
-    std::vector<encoder::Evaluator::Value> in;
-    for (std::size_t k = 0; k < t.cycles.size(); ++k) {
-      in.clear();
-      for (const auto& v : t.cycles[k].inputs) in.push_back({v.i, v.f});
-      ev_->step_raw(in);
-      if (!ev_->value("shrink.facts")) return false;
-      const bool good = ev_->value("shrink.good") != 0;
-      if (good != (k + 1 < t.cycles.size())) return false;
-    }
-    return !t.cycles.empty();
-  }
-
- private:
-  encoder::Encoding enc_;
-  std::optional<encoder::Evaluator> ev_;
-};
 
 // The concrete pass: inputs put back at their preferred value wherever the
 // violation still happens, first a whole input over every cycle, then runs

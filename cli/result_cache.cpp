@@ -6,11 +6,11 @@
 #include <iostream>
 
 #include <nlohmann/json.hpp>
-#include <openssl/evp.h>
 
 #include "checker/check.hpp"
 #include "cli/output.hpp"
 #include "formats/diagnostics.hpp"
+#include "formats/matrix_json.hpp"
 #include "model/vocabulary.hpp"
 #include "properties/print.hpp"
 
@@ -23,20 +23,6 @@ using checker::PropertyResult;
 using checker::PropertyVerdict;
 
 constexpr const char* kFormat = "cemv-cache/1";
-
-std::string sha256_hex(const std::string& text) {
-  unsigned char digest[EVP_MAX_MD_SIZE];
-  unsigned int length = 0;
-  if (EVP_Digest(text.data(), text.size(), digest, &length, EVP_sha256(), nullptr) != 1)
-    throw std::runtime_error("SHA-256 failed (OpenSSL EVP_Digest)");
-  static const char* hex = "0123456789abcdef";
-  std::string out;
-  for (unsigned int i = 0; i < length; ++i) {
-    out += hex[digest[i] >> 4];
-    out += hex[digest[i] & 0xF];
-  }
-  return out;
-}
 
 std::optional<PropertyVerdict> verdict_of(const std::string& word) {
   for (auto v : {PropertyVerdict::Proved, PropertyVerdict::Falsified, PropertyVerdict::Reachable,
@@ -148,7 +134,7 @@ std::string ResultCache::key_text(const properties::PropertyFile& f, const prope
 }
 
 std::string ResultCache::entry_path(const std::string& key_text) const {
-  return (std::filesystem::path(dir_) / (sha256_hex(key_text) + ".json")).string();
+  return (std::filesystem::path(dir_) / (formats::sha256_hex(key_text) + ".json")).string();
 }
 
 ResultCache::Split ResultCache::split(const std::vector<properties::PropertyFile>& files, int shard_index,
