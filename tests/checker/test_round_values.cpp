@@ -44,17 +44,21 @@ Trace lifted_run(const OwnedProblem& original) {
   return lift_trace(original.problem, r.cex);
 }
 
+// Every analog value moved to the next float above it: what a run from the
+// reduced problem looks like at its least readable.
+void next_floats_up(Trace& run) {
+  for (auto& cycle : run.cycles)
+    for (auto& v : cycle.inputs)
+      if (v.is_float) v.f = std::nextafter(v.f, std::numeric_limits<float>::max());
+}
+
 TEST(RoundValues, AnalogInputsOfARunFromTheReducedProblemBecomeRoundNumbers) {
   Tank t;
   z3::context ctx;
   const OwnedProblem original = property_problem(t.matrix, t.file, t.file.properties[0])(ctx);
   Trace run = lifted_run(original);
   ASSERT_GT(run.length(), 0u);
-  // The floats next to the values the solver chose: what a run from the
-  // reduced problem looks like at its least readable.
-  for (auto& cycle : run.cycles)
-    for (auto& v : cycle.inputs)
-      if (v.is_float) v.f = std::nextafter(v.f, std::numeric_limits<float>::max());
+  next_floats_up(run);
   replay_counterexample(original.problem, run);  // still a run to the trip
   int ugly = 0;
   for (const auto& cycle : run.cycles)
@@ -82,9 +86,7 @@ TEST(RoundValues, ATraceThatDoesNotViolateIsLeftAlone) {
   Trace run = lifted_run(original);
   ASSERT_GT(run.length(), 0u);
   run.cycles.push_back(run.cycles.back());
-  for (auto& cycle : run.cycles)
-    for (auto& v : cycle.inputs)
-      if (v.is_float) v.f = std::nextafter(v.f, std::numeric_limits<float>::max());
+  next_floats_up(run);
   const Trace same = round_values(original.problem, run);
   for (std::size_t k = 0; k < run.length(); ++k) EXPECT_EQ(same.cycles[k].inputs, run.cycles[k].inputs);
 }
