@@ -1,12 +1,14 @@
-// Inside the ST parser (parser.cpp, parse_expressions.cpp): the token cursor
-// with its nesting guard (P.1.5), the words of the language, and the
-// expression grammar (P.5) that declarations and statements build on.
+// Inside the ST parser (parser.cpp, parse_statements.cpp, parse_expressions.cpp):
+// the token cursor with its nesting guard (P.1.5), the words of the language,
+// the expression grammar (P.5) and the statements (P.4) that the POUs and
+// their declarations build on.
 #pragma once
 
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "model/text.hpp"
 #include "plc/ast.hpp"
@@ -94,6 +96,26 @@ class ExpressionParser : public Cursor {
   Expr literal(Type type, std::int64_t integer, float real, Position pos);
   Expr primary();
   Expr function_call(const std::string& name, Position pos);
+};
+
+// Statements (P.4), each checked for its nesting (P.1.5).
+class StatementParser : public ExpressionParser {
+ public:
+  using ExpressionParser::ExpressionParser;
+
+ protected:
+  std::vector<Statement> statement_list();
+
+ private:
+  Statement statement();
+  void call_args(Statement& s);
+  Statement if_statement();
+  Statement case_statement();
+  std::int64_t case_value();
+  bool label_ahead();
+  std::vector<Statement> case_body();
+  Statement for_statement();
+  Expr bound();
 };
 
 }  // namespace cemv::plc::parse
