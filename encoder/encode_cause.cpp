@@ -9,7 +9,7 @@
 
 namespace cemv::encoder::detail {
 
-void Builder::build_cause(const model::Cause& cz) {
+void CauseEncoder::build_cause(const model::Cause& cz) {
   const CauseSoftBypass sb = cause_soft_bypass(cz);
   const CauseTags tags = cause_tag_values(cz);
   const CauseVote vote = cause_voting(cz, tags);
@@ -17,14 +17,14 @@ void Builder::build_cause(const model::Cause& cz) {
   const expr prewarning = cause_prewarning(cz, tags);
   const CauseTime time = cause_time_function(cz, vote.tr);
   const CauseActive a = cause_latch_and_active(cz, sb.on, vote.tr, time.tm);
-  cause_active_.emplace(cz.id, a.active);
+  reads_.set_cause_active(cz.id, a.active);
   name_cause_terms(cz, sb, vote, delta_alarm, prewarning, time, a);
 }
 
 // C.1: timed soft bypass, expiry checked at the start of the evaluation.
-Builder::CauseSoftBypass Builder::cause_soft_bypass(const model::Cause& cz) {
+CauseEncoder::CauseSoftBypass CauseEncoder::cause_soft_bypass(const model::Cause& cz) {
   const std::string P = cause_prefix(cz.id);
-  CauseCommands& cmds = cause_cmds_.at(cz.id);
+  const CommandStates::CauseCommands& cmds = cmds_.cause_cmds.at(cz.id);
   expr sb = cmds.sb_on;
   expr bypass_timeout = B(false);
   expr bypass_prealarm = B(false);
@@ -52,19 +52,19 @@ Builder::CauseSoftBypass Builder::cause_soft_bypass(const model::Cause& cz) {
 
 // C.2: tag values and qualities: the simulation (O.8), the internal reference
 // (I.3, good quality) or this cycle's input.
-Builder::CauseTags Builder::cause_tag_values(const model::Cause& cz) {
+CauseEncoder::CauseTags CauseEncoder::cause_tag_values(const model::Cause& cz) {
   const Node self{Node::Kind::Cause, cz.id};
   CauseTags out;
   for (const auto& tag : cz.tags) {
     if (auto ref = model::parse_internal_ref(tag.name)) {
-      out.values.push_back(ref_value(*ref, self));
+      out.values.push_back(reads_.ref_value(*ref, self));
       out.bads.push_back(B(false));
       continue;
     }
     std::size_t idx = *enc_.inputs.find(tag.name);
-    expr raw = raw_value(idx);
-    expr bad = raw_bad(idx);
-    const Simulation& s = sims_.at(model::tag_key(tag.name));
+    expr raw = reads_.raw_value(idx);
+    expr bad = reads_.raw_bad(idx);
+    const Simulation& s = cmds_.sims.at(model::tag_key(tag.name));
     out.values.push_back(z3::ite(s.on, s.value, raw));
     out.bads.push_back(bad && !s.on);
   }
@@ -72,13 +72,13 @@ Builder::CauseTags Builder::cause_tag_values(const model::Cause& cz) {
 }
 
 // C.3: trip, taken out. C.4: voting with degraded voting and hysteresis.
-Builder::CauseVote Builder::cause_voting(const model::Cause& cz, const CauseTags& tags) {
+CauseEncoder::CauseVote CauseEncoder::cause_voting(const model::Cause& cz, const CauseTags& tags) {
   const std::string P = cause_prefix(cz.id);
   const int n = static_cast<int>(cz.tags.size());
   const bool analog = cz.input == model::InputKind::Analog && cz.analog.has_value();
   const model::AnalogParams ap = analog ? *cz.analog : model::AnalogParams{};
   const bool high = ap.limit_type == model::LimitType::High;
-  const CauseCommands& cmds = cause_cmds_.at(cz.id);
+  const CommandStates::CauseCommands& cmds = cmds_.cause_cmds.at(cz.id);
   const auto& values = tags.values;
   const auto& bads = tags.bads;
 
@@ -137,7 +137,7 @@ Builder::CauseVote Builder::cause_voting(const model::Cause& cz, const CauseTags
 }
 
 // C.5: delta alarm per pair of tags (status only).
-expr Builder::cause_delta_alarm(const model::Cause& cz, const CauseTags& tags) {
+expr CauseEncoder::cause_delta_alarm(const model::Cause& cz, const CauseTags& tags) {
   const bool analog = cz.input == model::InputKind::Analog && cz.analog.has_value();
   const int n = static_cast<int>(cz.tags.size());
   if (!analog || cz.analog->delta <= 0.0f || n < 2) return B(false);
@@ -159,7 +159,7 @@ expr Builder::cause_delta_alarm(const model::Cause& cz, const CauseTags& tags) {
 }
 
 // C.5: prewarning (status only), when it lies before the limit.
-expr Builder::cause_prewarning(const model::Cause& cz, const CauseTags& tags) {
+expr CauseEncoder::cause_prewarning(const model::Cause& cz, const CauseTags& tags) {
   const bool analog = cz.input == model::InputKind::Analog && cz.analog.has_value();
   if (!analog || !cz.analog->prewarning) return B(false);
   const model::AnalogParams& ap = *cz.analog;
@@ -172,7 +172,7 @@ expr Builder::cause_prewarning(const model::Cause& cz, const CauseTags& tags) {
 }
 
 // C.6: time function, TR -> TM.
-Builder::CauseTime Builder::cause_time_function(const model::Cause& cz, const expr& tr) {
+CauseEncoder::CauseTime CauseEncoder::cause_time_function(const model::Cause& cz, const expr& tr) {
   const std::string P = cause_prefix(cz.id);
   const int d = cycles_of(cz.time.ms, m_.cycle_ms);
   expr tm = tr;
@@ -218,13 +218,13 @@ Builder::CauseTime Builder::cause_time_function(const model::Cause& cz, const ex
 
 // C.8 reads (bypass and inhibit of this cycle), C.7 acknowledgement latch,
 // C.8 active.
-Builder::CauseActive Builder::cause_latch_and_active(const model::Cause& cz, const expr& soft_bypass,
+CauseEncoder::CauseActive CauseEncoder::cause_latch_and_active(const model::Cause& cz, const expr& soft_bypass,
                                                      const expr& tr, const expr& tm) {
   const Node self{Node::Kind::Cause, cz.id};
-  const CauseCommands& cmds = cause_cmds_.at(cz.id);
+  const CommandStates::CauseCommands& cmds = cmds_.cause_cmds.at(cz.id);
   const std::string P = cause_prefix(cz.id);
-  expr hard = cz.bypass_tag ? guarded(P + ".bypass_tag", bool_read(*cz.bypass_tag, self)) : B(false);
-  expr inhibited = cz.inhibit_tag ? guarded(P + ".inhibit_tag", bool_read(*cz.inhibit_tag, self)) : B(false);
+  expr hard = cz.bypass_tag ? guarded(P + ".bypass_tag", reads_.bool_read(*cz.bypass_tag, self)) : B(false);
+  expr inhibited = cz.inhibit_tag ? guarded(P + ".inhibit_tag", reads_.bool_read(*cz.inhibit_tag, self)) : B(false);
   expr bypassed = hard || soft_bypass;
   expr latch_now = B(false);
   bool has_latch = !cz.auto_ack && (cz.time.mode == model::TimeMode::None ||
@@ -241,7 +241,7 @@ Builder::CauseActive Builder::cause_latch_and_active(const model::Cause& cz, con
 
 // C.9: the status fields, each a named term under its observable key; first
 // out (C.11) is named in phase 4 for a cause of a group.
-void Builder::name_cause_terms(const model::Cause& cz, const CauseSoftBypass& sb,
+void CauseEncoder::name_cause_terms(const model::Cause& cz, const CauseSoftBypass& sb,
                                const CauseVote& vote, expr delta_alarm, expr prewarning,
                                const CauseTime& time, const CauseActive& a) {
   const std::string P = cause_prefix(cz.id);
@@ -270,11 +270,11 @@ void Builder::name_cause_terms(const model::Cause& cz, const CauseSoftBypass& sb
 
 // ---- Phase 4: first out (C.11) -------------------------------------------------
 
-void Builder::build_first_out() {
+void CauseEncoder::build_first_out() {
   for (auto& [group, members] : first_out_groups_) {
     std::sort(members.begin(), members.end(),
               [](const auto& a, const auto& b) { return a.first < b.first; });
-    expr clear = clear_first_out_.at(group);
+    expr clear = cmds_.clear_first_out.at(group);
     std::vector<expr> held, became, vars;
     for (auto& [id, active] : members) {
       std::string P = cause_prefix(id);

@@ -9,21 +9,21 @@
 
 namespace cemv::encoder::detail {
 
-void Builder::build_effect(const model::Effect& ef) {
+void EffectEncoder::build_effect(const model::Effect& ef) {
   const EffectRequests req = effect_requests(ef);
   const EffectReads reads = effect_reads(ef);
   const EffectOverride ov = effect_override(ef, req, reads);
   const EffectLatches latches = effect_latches(ef, req, reads, ov);
   // E.6: active.
   const expr active = (req.N || latches.s || ((req.V || latches.r) && !ov.running)) && !reads.bypassed;
-  effect_active_.emplace(ef.id, active);
+  reads_.set_effect_active(ef.id, active);
   const EffectOutputDelay delay = effect_output_delay(ef, active, reads.output_delay_before);
   const EffectOutputs out = effect_outputs(ef, delay.output_state);
   name_effect_terms(ef, req, reads, ov, latches, active, delay, out);
 }
 
 // E.2: the requests per intersection type, an XooN group counted as one.
-Builder::EffectRequests Builder::effect_requests(const model::Effect& ef) {
+EffectEncoder::EffectRequests EffectEncoder::effect_requests(const model::Effect& ef) {
   std::map<model::IntersectionType, std::vector<expr>> direct;
   std::vector<expr> xoon_members;
   std::optional<model::IntersectionType> xoon_type;
@@ -33,18 +33,18 @@ Builder::EffectRequests Builder::effect_requests(const model::Effect& ef) {
     if (!model::is_processed(is->type)) continue;
     const model::Cause* cz = m_.find_cause(is->cause);
     if (!cz || cz->function == model::CauseFunction::Comment) continue;
-    auto it = cause_active_.find(is->cause);
-    if (it == cause_active_.end()) throw std::logic_error("cause read before evaluation");
+    const std::optional<expr> active = reads_.evaluated_cause(is->cause);
+    if (!active) throw std::logic_error("cause read before evaluation");
     if (is->xoon) {
-      linked.emplace_back(is->cause, it->second);
-      xoon_members.push_back(it->second);
+      linked.emplace_back(is->cause, *active);
+      xoon_members.push_back(*active);
       xoon_type = is->type;
       xoon_x = xoon_x == 0 ? *is->xoon : std::min(xoon_x, *is->xoon);
     } else {
       // Guarded (EncodeOptions::guard_cells): without the cell the cause
       // requests nothing of this effect.
       const expr on = guarded("intersection[" + std::to_string(is->cause) + "," + std::to_string(ef.id) + "]",
-                              it->second);
+                              *active);
       linked.emplace_back(is->cause, on);
       direct[is->type].push_back(on);
     }
@@ -63,15 +63,15 @@ Builder::EffectRequests Builder::effect_requests(const model::Effect& ef) {
 
 // E.1: the reads of this cycle: bypass (hard or soft), the override toggle
 // (commands, or the reset tag's rising edge, T.4), prev(output_delay_running).
-Builder::EffectReads Builder::effect_reads(const model::Effect& ef) {
+EffectEncoder::EffectReads EffectEncoder::effect_reads(const model::Effect& ef) {
   const Node self{Node::Kind::Effect, ef.id};
   const std::string P = effect_prefix(ef.id);
-  const EffectCommands& cmds = effect_cmds_.at(ef.id);
-  expr hard = ef.bypass_tag ? guarded(P + ".bypass_tag", bool_read(*ef.bypass_tag, self)) : B(false);
+  const CommandStates::EffectCommands& cmds = cmds_.effect_cmds.at(ef.id);
+  expr hard = ef.bypass_tag ? guarded(P + ".bypass_tag", reads_.bool_read(*ef.bypass_tag, self)) : B(false);
   expr bypassed = hard || cmds.sb_on;
   expr toggle = cmds.toggle;
   if (ef.reset_tag) {
-    const expr edge = edge_of("prev." + P + ".reset_tag", bool_read(*ef.reset_tag, self));
+    const expr edge = reads_.edge_of("prev." + P + ".reset_tag", reads_.bool_read(*ef.reset_tag, self));
     toggle = guard_cells_ ? z3::ite(guard(P + ".reset_tag"), edge, cmds.toggle) : edge;
   }
   expr od_prev = bool_state(P + ".output_delay_running_prev", false);
@@ -80,9 +80,9 @@ Builder::EffectReads Builder::effect_reads(const model::Effect& ef) {
 
 // E.3: the override, its end conditions (step 1), the toggle (step 2) and the
 // prealarm (step 3). Without an override time, a toggle is a reset (E.4).
-Builder::EffectOverride Builder::effect_override(const model::Effect& ef, const EffectRequests& req,
+EffectEncoder::EffectOverride EffectEncoder::effect_override(const model::Effect& ef, const EffectRequests& req,
                                                  const EffectReads& reads) {
-  const EffectCommands& cmds = effect_cmds_.at(ef.id);
+  const CommandStates::EffectCommands& cmds = cmds_.effect_cmds.at(ef.id);
   const expr& toggle = reads.toggle;
   expr ov_now = B(false), fail_t = B(false), fail_c = B(false), prealarm = B(false);
   expr was_running = B(false);
@@ -98,7 +98,7 @@ Builder::EffectOverride Builder::effect_override(const model::Effect& ef, const 
   expr cntv = counter(P + ".override.elapsed", d);
   expr alarm_t = bool_state(P + ".override_failed_timeout", false);
   expr alarm_c = bool_state(P + ".override_failed_cause", false);
-  expr running = ov && !gd_;  // M.2
+  expr running = ov && !reads_.gd();  // M.2
   std::vector<expr> newcomers;
   std::vector<std::pair<expr, expr>> snaps;  // (state, active)
   for (auto& [cid, a] : req.linked) {
@@ -134,7 +134,7 @@ Builder::EffectOverride Builder::effect_override(const model::Effect& ef, const 
 }
 
 // E.4: reset, E.5: the S and R latches.
-Builder::EffectLatches Builder::effect_latches(const model::Effect& ef, const EffectRequests& req,
+EffectEncoder::EffectLatches EffectEncoder::effect_latches(const model::Effect& ef, const EffectRequests& req,
                                                const EffectReads& reads, const EffectOverride& ov) {
   const std::string P = effect_prefix(ef.id);
   const expr& od_prev = reads.output_delay_before;
@@ -151,7 +151,7 @@ Builder::EffectLatches Builder::effect_latches(const model::Effect& ef, const Ef
 }
 
 // E.7: the output delay: OS follows active once it has held for the delay.
-Builder::EffectOutputDelay Builder::effect_output_delay(const model::Effect& ef, const expr& active,
+EffectEncoder::EffectOutputDelay EffectEncoder::effect_output_delay(const model::Effect& ef, const expr& active,
                                                         const expr& output_delay_before) {
   const std::string P = effect_prefix(ef.id);
   expr os = active;
@@ -159,7 +159,7 @@ Builder::EffectOutputDelay Builder::effect_output_delay(const model::Effect& ef,
   if (od > 0) {
     expr os_prev = bool_state(P + ".output_state_prev", false);
     expr held = counter(P + ".output_delay.elapsed", od);  // cycles active before this one
-    os = active && (os_prev || first_ || held >= od);
+    os = active && (os_prev || reads_.first() || held >= od);
     ts_.assign_next(os_prev, os);
     ts_.assign_next(held, z3::ite(active, sat_inc(held, od), I(0)));
   }
@@ -170,17 +170,17 @@ Builder::EffectOutputDelay Builder::effect_output_delay(const model::Effect& ef,
 
 // E.8: pass-through and mask, E.9: the output tags, E.10: output simulation;
 // each output is a named term `effect[ID].tag[k]`.
-Builder::EffectOutputs Builder::effect_outputs(const model::Effect& ef, const expr& os) {
+EffectEncoder::EffectOutputs EffectEncoder::effect_outputs(const model::Effect& ef, const expr& os) {
   const Node self{Node::Kind::Effect, ef.id};
   const std::string P = effect_prefix(ef.id);
   EffectOutputs out{false, false, B(false)};
   expr process = B(false);
   if (ef.process_data && ef.process_data->tag) {
-    process = bool_read(*ef.process_data->tag, self);
+    process = reads_.bool_read(*ef.process_data->tag, self);
     out.pass = ef.process_data->pass_through;
     if (ef.process_data->mask_tag) {
       out.has_mask = true;
-      out.mask = bool_read(*ef.process_data->mask_tag, self);
+      out.mask = reads_.bool_read(*ef.process_data->mask_tag, self);
     }
   }
   for (std::size_t j = 0; j < ef.tags.size(); ++j) {
@@ -192,21 +192,21 @@ Builder::EffectOutputs Builder::effect_outputs(const model::Effect& ef, const ex
     if (out.pass && out.has_mask) value = z3::ite(os, z3::ite(out.mask, pv, safe), pv);
     else if (out.pass) value = z3::ite(os, safe, pv);
     else if (out.has_mask) value = z3::ite(out.mask, pv, logic);
-    const Simulation& s = sims_.at(model::tag_key(tag.name));
+    const Simulation& s = cmds_.sims.at(model::tag_key(tag.name));
     value = z3::ite(s.on, s.value, value);
-    effect_tag_.emplace(std::make_pair(ef.id, static_cast<int>(j + 1)), value);
+    reads_.set_effect_tag(ef.id, static_cast<int>(j + 1), value);
     ts_.name_term(P + ".tag[" + std::to_string(j + 1) + "]", value);
   }
   return out;
 }
 
 // E.11: the status fields, each a named term under its observable key.
-void Builder::name_effect_terms(const model::Effect& ef, const EffectRequests& req,
+void EffectEncoder::name_effect_terms(const model::Effect& ef, const EffectRequests& req,
                                 const EffectReads& reads, const EffectOverride& ov,
                                 const EffectLatches& latches, const expr& active,
                                 const EffectOutputDelay& delay, const EffectOutputs& out) {
   const std::string P = effect_prefix(ef.id);
-  const EffectCommands& cmds = effect_cmds_.at(ef.id);
+  const CommandStates::EffectCommands& cmds = cmds_.effect_cmds.at(ef.id);
   const expr latched = latches.s || latches.r;
   ts_.name_term(P + ".active", active);
   ts_.name_term(P + ".latched", latched);
