@@ -42,26 +42,14 @@ std::string value_text(double v) {
   return s;
 }
 
-class Resolver {
+// The program's variables as the map looks them up: by the exact name, by
+// name key, or as the map names them; each bound to one thing of the matrix.
+class VariableFinder {
  public:
-  Resolver(const model::Matrix& m, const ProgramInterface& p, const formats::PlcMap* given)
-      : m_(m), p_(p), given_(given) {
+  VariableFinder(const ProgramInterface& p, std::vector<std::string>& problems) : p_(p), problems_(problems) {
     for (const auto& v : p.variables) by_key_[name_key(v.name)].push_back(&v);
   }
 
-  ResolvedMap run() {
-    out_.map.pou = p_.pou;
-    scan_time();
-    inputs();
-    outputs();
-    commands();
-    program_inputs();
-    return std::move(out_);
-  }
-
-  std::vector<std::string> problems;
-
- private:
   const ProgramVariable* exact(const std::string& name) const {
     // IEC 61131-3 identifiers are not case-sensitive.
     for (const auto& v : p_.variables)
@@ -81,7 +69,7 @@ class Resolver {
     if (hits.size() > 1) {
       std::vector<std::string> names;
       for (const auto* v : hits) names.push_back(v->name);
-      problems.push_back(what + " matches several program variables by name (" + listing(names) +
+      problems_.push_back(what + " matches several program variables by name (" + listing(names) +
                          "); name the one in the map");
       return nullptr;
     }
@@ -92,15 +80,15 @@ class Resolver {
   const ProgramVariable* named(const std::string& name, const std::string& what, VarType type, bool input) {
     const ProgramVariable* v = exact(name);
     if (!v) {
-      problems.push_back(what + ": the program has no variable " + model::in_quotes(name));
+      problems_.push_back(what + ": the program has no variable " + model::in_quotes(name));
       return nullptr;
     }
     if (v->type != type) {
-      problems.push_back(what + ": " + v->name + " is " + type_name(v->type) + ", not " + type_name(type));
+      problems_.push_back(what + ": " + v->name + " is " + type_name(v->type) + ", not " + type_name(type));
       return nullptr;
     }
     if (input ? !readable_input(v->kind) : !writable_output(v->kind)) {
-      problems.push_back(what + ": " + v->name + " is not a " + (input ? "VAR_INPUT" : "VAR_OUTPUT") +
+      problems_.push_back(what + ": " + v->name + " is not a " + (input ? "VAR_INPUT" : "VAR_OUTPUT") +
                          " of " + p_.pou);
       return nullptr;
     }
@@ -111,9 +99,36 @@ class Resolver {
   // One variable carries one thing: a second binding is a contradiction.
   void use(const ProgramVariable& v) {
     if (!used_.insert(model::tag_key(v.name)).second)
-      problems.push_back("program variable " + v.name + " is bound to two things of the matrix");
+      problems_.push_back("program variable " + v.name + " is bound to two things of the matrix");
   }
 
+  bool is_used(const std::string& name) const { return used_.count(model::tag_key(name)) > 0; }
+
+ private:
+  const ProgramInterface& p_;
+  std::vector<std::string>& problems_;
+  std::map<std::string, std::vector<const ProgramVariable*>> by_key_;
+  std::set<std::string> used_;
+};
+
+class Resolver {
+ public:
+  Resolver(const model::Matrix& m, const ProgramInterface& p, const formats::PlcMap* given)
+      : m_(m), p_(p), given_(given), vars_(p, problems) {}
+
+  ResolvedMap run() {
+    out_.map.pou = p_.pou;
+    scan_time();
+    inputs();
+    outputs();
+    commands();
+    program_inputs();
+    return std::move(out_);
+  }
+
+  std::vector<std::string> problems;
+
+ private:
   void scan_time() {
     if (given_ && given_->scan_ms) out_.scan_ms = *given_->scan_ms;
     else if (p_.task_ms) out_.scan_ms = *p_.task_ms;
@@ -149,15 +164,16 @@ class Resolver {
       b.tag = tag.name;
       const auto* g = given_input(tag.name);
       if (g && !g->variable.empty()) {
-        if (named(g->variable, "input tag " + tag.name, type, true)) b.variable = exact(g->variable)->name;
+        if (const auto* v = vars_.named(g->variable, "input tag " + tag.name, type, true)) b.variable = v->name;
       } else if (g) {
         b.value = g->value;
         out_.assumptions.push_back("input tag " + tag.name + " held at " + value_text(*g->value) +
                                    " with good quality (the map says so)");
-      } else if (const auto* v = by_name(name_key(tag.name), "input tag " + tag.name, [&](const ProgramVariable& x) {
-                   return readable_input(x.kind) && x.type == type;
-                 })) {
-        use(*v);
+      } else if (const auto* v = vars_.by_name(name_key(tag.name), "input tag " + tag.name,
+                                               [&](const ProgramVariable& x) {
+                                                 return readable_input(x.kind) && x.type == type;
+                                               })) {
+        vars_.use(*v);
         b.variable = v->name;
       } else {
         missing.push_back(tag.name);
@@ -178,7 +194,8 @@ class Resolver {
     }
     if (!cause_input) return;
     if (g && !g->bad_quality.empty()) {
-      if (named(g->bad_quality, "bad quality of " + tag, VarType::Bool, true)) b.bad_quality = exact(g->bad_quality)->name;
+      if (const auto* v = vars_.named(g->bad_quality, "bad quality of " + tag, VarType::Bool, true))
+        b.bad_quality = v->name;
       return;
     }
     if (g && g->good_quality) {
@@ -187,10 +204,10 @@ class Resolver {
       return;
     }
     for (const char* suffix : {"bq", "bad"}) {
-      if (const auto* v = by_name(name_key(tag) + suffix, "bad quality of " + tag, [](const ProgramVariable& x) {
+      if (const auto* v = vars_.by_name(name_key(tag) + suffix, "bad quality of " + tag, [](const ProgramVariable& x) {
             return readable_input(x.kind) && x.type == VarType::Bool;
           })) {
-        use(*v);
+        vars_.use(*v);
         b.bad_quality = v->name;
         return;
       }
@@ -220,13 +237,13 @@ class Resolver {
             if (model::tag_key(x.tag) == model::tag_key(t.name) && (x.effect == 0 || x.effect == e.id)) g = &x;
         const std::string what = "output tag " + t.name + " of effect " + std::to_string(e.id);
         if (g) {
-          if (named(g->variable, what, VarType::Bool, false)) b.variable = exact(g->variable)->name;
+          if (const auto* v = vars_.named(g->variable, what, VarType::Bool, false)) b.variable = v->name;
         } else if (b.effect) {
           missing.push_back(t.name + " (effect " + std::to_string(e.id) + ": several effects write it, the map must say)");
-        } else if (const auto* v = by_name(name_key(t.name), what, [](const ProgramVariable& x) {
+        } else if (const auto* v = vars_.by_name(name_key(t.name), what, [](const ProgramVariable& x) {
                      return writable_output(x.kind) && x.type == VarType::Bool;
                    })) {
-          use(*v);
+          vars_.use(*v);
           b.variable = v->name;
         } else {
           missing.push_back(t.name);
@@ -255,14 +272,14 @@ class Resolver {
       const auto& s = slots[i];
       const ProgramVariable* v = nullptr;
       if (s.command.op != model::CommandOp::SimulateTag)
-        v = by_name(name_key(s.default_name), s.label, [](const ProgramVariable& x) {
+        v = vars_.by_name(name_key(s.default_name), s.label, [](const ProgramVariable& x) {
           return readable_input(x.kind) && x.type == VarType::Bool;
         });
       if (!v) {
         missing.push_back(s.label);
         continue;
       }
-      use(*v);
+      vars_.use(*v);
       out_.map.commands.push_back(binding(s.command, v->name));
     }
     if (!missing.empty())
@@ -311,9 +328,9 @@ class Resolver {
                          " commands; give its cause, effect, tag and on");
       return;
     }
-    if (!named(b.variable, slots[hits.front()].label, VarType::Bool, true)) return;
+    if (!vars_.named(b.variable, slots[hits.front()].label, VarType::Bool, true)) return;
     done[hits.front()] = true;
-    out_.map.commands.push_back(binding(slots[hits.front()].command, exact(b.variable)->name));
+    out_.map.commands.push_back(binding(slots[hits.front()].command, vars_.exact(b.variable)->name));
   }
 
   void program_inputs() {
@@ -321,12 +338,12 @@ class Resolver {
     std::set<std::string> held;
     if (given_)
       for (const auto& b : given_->program_inputs) {
-        const ProgramVariable* v = exact(b.variable);
+        const ProgramVariable* v = vars_.exact(b.variable);
         if (!v || !readable_input(v->kind)) {
           problems.push_back("program input " + model::in_quotes(b.variable) + " in the map is no VAR_INPUT of " + p_.pou);
           continue;
         }
-        if (used_.count(model::tag_key(v->name))) {
+        if (vars_.is_used(v->name)) {
           problems.push_back("program input " + v->name + " is bound to the matrix and held at a value");
           continue;
         }
@@ -335,7 +352,7 @@ class Resolver {
         out_.assumptions.push_back("program input " + v->name + " held at " + value_text(b.value) + " (the map says so)");
       }
     for (const auto& v : p_.variables)
-      if (readable_input(v.kind) && !used_.count(model::tag_key(v.name)) && !held.count(model::tag_key(v.name)))
+      if (readable_input(v.kind) && !vars_.is_used(v.name) && !held.count(model::tag_key(v.name)))
         missing.push_back(v.name);
     if (!missing.empty())
       problems.push_back("program inputs without a matrix counterpart (bind them or hold them at a value in the "
@@ -345,8 +362,7 @@ class Resolver {
   const model::Matrix& m_;
   const ProgramInterface& p_;
   const formats::PlcMap* given_;
-  std::map<std::string, std::vector<const ProgramVariable*>> by_key_;
-  std::set<std::string> used_;
+  VariableFinder vars_;
   ResolvedMap out_;
 };
 
