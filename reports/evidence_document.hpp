@@ -69,6 +69,12 @@ bool passed(checker::PropertyVerdict v);
 class Pages;
 void response_section(Pages& pages, const model::Matrix& m, const EvidenceInputs& in, const std::string& number);
 void tests_section(Pages& pages, const EvidenceInputs& in, const std::string& number);
+// The chapters on verdicts (evidence_verdicts.cpp): the user's requirements,
+// the standard set per element, the standard set in full as an appendix.
+void requirements_chapter(Pages& pages, const Document& d, const std::string& number);
+void standard_chapter(Pages& pages, const Document& d, const std::string& number);
+void appendix_chapter(Pages& pages, const Document& d, const std::string& number);
+
 // The chapter on the PLC program (evidence_plc.cpp).
 void plc_chapter(Pages& pages, const PlcFigures& p, const std::string& number);
 // The chapters on the matrix (evidence_grid.cpp): grid with its legend,
