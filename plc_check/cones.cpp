@@ -6,9 +6,19 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "checker/engines/solving.hpp"
+
 namespace cemv::plc_check {
 
 namespace {
+
+// A closed term: no variable (an initial value that is a constant).
+bool variables_free(const z3::expr& e) {
+  if (e.is_const() && !e.is_numeral() && !e.is_true() && !e.is_false()) return false;
+  for (unsigned i = 0; e.is_app() && i < e.num_args(); ++i)
+    if (!variables_free(e.arg(i))) return false;
+  return true;
+}
 
 // The state variables (indices) a term reads, each DAG node visited once;
 // with `inputs`, the input variables (indices) instead.
@@ -40,12 +50,21 @@ class Reads {
   std::unordered_set<unsigned> seen_;
 };
 
-// What each state variable's next-state and initial functions read.
-std::vector<std::vector<std::size_t>> direct_reads(const encoder::TransitionSystem& ts, bool inputs) {
+// What each state variable's next-state and initial functions read; with
+// `constants`, after each of those is replaced by its initial value.
+std::vector<std::vector<std::size_t>> direct_reads(const encoder::TransitionSystem& ts, bool inputs,
+                                                   const std::vector<std::size_t>& constants = {}) {
   Reads reads(ts, inputs);
+  z3::expr_vector from(ts.ctx()), to(ts.ctx());
+  for (std::size_t c : constants) {
+    from.push_back(ts.statevars()[c].var);
+    to.push_back(ts.statevars()[c].init);
+  }
   std::vector<std::vector<std::size_t>> out(ts.statevars().size());
   for (std::size_t i = 0; i < out.size(); ++i) {
-    out[i] = reads.of(ts.statevars()[i].next);
+    z3::expr next = ts.statevars()[i].next;
+    if (!from.empty()) next = next.substitute(from, to).simplify();
+    out[i] = reads.of(next);
     const auto init = reads.of(ts.statevars()[i].init);
     out[i].insert(out[i].end(), init.begin(), init.end());
   }
@@ -103,11 +122,32 @@ std::vector<std::vector<std::size_t>> overlapping(const std::vector<std::vector<
   return groups;
 }
 
-Supports::Supports(const encoder::TransitionSystem& ts) {
+std::vector<std::size_t> constant_states(const checker::SafetyProblem& p, const Samples& samples,
+                                         const checker::Limits& limits, checker::WorkMeter& meter) {
+  const auto& ts = *p.ts;
+  std::vector<std::size_t> out;
+  if (samples.states.empty()) return out;
+  const auto& first = samples.states.front();  // the initial state
+  for (std::size_t v = 0; v < ts.statevars().size(); ++v) {
+    const auto& sv = ts.statevars()[v];
+    if (sv.var.is_fpa() || !variables_free(sv.init)) continue;
+    if (!std::all_of(samples.states.begin(), samples.states.end(),
+                     [&](const auto& s) { return s[v].i == first[v].i; }))
+      continue;
+    z3::solver s(ts.ctx());
+    s.add(ts.constraint_formula() && p.assumption && sv.next != sv.init);
+    const z3::check_result r = checker::check_within(s, meter);
+    if (r == z3::unknown) throw checker::Stopped{checker::unknown_reason(s.reason_unknown(), limits, meter)};
+    if (r == z3::unsat) out.push_back(v);
+  }
+  return out;
+}
+
+Supports::Supports(const encoder::TransitionSystem& ts, const std::vector<std::size_t>& constants) {
   const std::size_t n = ts.statevars().size();
   words_ = (ts.inputvars().size() + 63) / 64;
   bits_.assign(n * words_, 0);
-  const auto inputs = direct_reads(ts, true), states = direct_reads(ts, false);
+  const auto inputs = direct_reads(ts, true, constants), states = direct_reads(ts, false, constants);
   for (std::size_t v = 0; v < n; ++v)
     for (std::size_t i : inputs[v]) bits_[v * words_ + i / 64] |= std::uint64_t{1} << (i % 64);
   // The closure over the state variables read, to a fixed point.

@@ -14,7 +14,10 @@
 
 #include <z3++.h>
 
+#include "checker/limits.hpp"
+#include "checker/prover.hpp"
 #include "encoder/transition_system.hpp"
+#include "plc_check/sampling.hpp"
 
 namespace cemv::plc_check {
 
@@ -27,6 +30,15 @@ std::vector<std::vector<std::size_t>> cones_of(const encoder::TransitionSystem& 
 // the order of their first member, members ascending.
 std::vector<std::vector<std::size_t>> overlapping(const std::vector<std::vector<std::size_t>>& cones);
 
+// The state variables (indices, ascending) whose next-state function gives
+// back their initial value whatever the state and the inputs, among those
+// every sampled state holds at it: what an encoding computes as `x and not
+// x` (the matrix's output delay of an effect without one, E.7, read by its
+// override, E.3) reads every input of x and yet is constant. Each is asked
+// of a solver charged to `meter` (throws checker::Stopped when it ends).
+std::vector<std::size_t> constant_states(const checker::SafetyProblem& p, const Samples& samples,
+                                         const checker::Limits& limits, checker::WorkMeter& meter);
+
 // The inputs each state variable depends on (through every state variable
 // it reads, transitively): which pairs of a cone's variables are worth a
 // candidate relation. A program variable and the matrix variable it stands
@@ -37,7 +49,9 @@ std::vector<std::vector<std::size_t>> overlapping(const std::vector<std::vector<
 // these, a group's candidates grow with its cones' sizes, not their squares.
 class Supports {
  public:
-  explicit Supports(const encoder::TransitionSystem& ts);
+  // `constants`: state variables (indices) that never leave their initial
+  // value; what reads them reads no input through them.
+  explicit Supports(const encoder::TransitionSystem& ts, const std::vector<std::size_t>& constants = {});
   // The inputs of one include the other's (`same`: are the other's).
   bool related(std::size_t x, std::size_t y, bool same = false) const;
   // `g` reads no input, or exactly those of x and y together (y = SIZE_MAX:

@@ -239,7 +239,7 @@ Correspondence prove_by_correspondence(const checker::SafetyProblem& p, const Sa
                                        std::vector<std::vector<std::size_t>> cones) {
   // Cones given: a group's, whose candidates must grow with its cones' sizes.
   std::optional<Supports> supports;
-  if (!cones.empty()) supports.emplace(*p.ts);
+  const bool group = !cones.empty();
   if (cones.empty()) cones.push_back(every_state_variable(p));
   const auto start = checker::Clock::now();
   Correspondence out;
@@ -248,6 +248,7 @@ Correspondence prove_by_correspondence(const checker::SafetyProblem& p, const Sa
   z3::context& ctx = p.ts->ctx();
   checker::WorkMeter meter(ctx, limits.work);
   try {
+    if (group) supports.emplace(*p.ts, constant_states(p, samples, limits, meter));
     // Two rounds, cheaper first: without the checker's clauses over pairs of
     // Booleans (most of the candidates and of Houdini's rounds), then with
     // them when the output does not follow.

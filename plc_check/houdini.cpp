@@ -103,6 +103,7 @@ std::vector<z3::expr> product_houdini_by_cones(const checker::SafetyProblem& p,
   checker::Watchdog watchdog(ctx, limits);
   std::unordered_set<unsigned> asked;  // kept or dropped by an earlier cone
   std::vector<z3::expr> kept;
+  std::vector<z3::expr> kept_at_0;  // each unrolled once, not once per later cone
   for (std::size_t i = 0; i < cones.size() && i < candidates.size(); ++i) {
     std::vector<bool> in(ts.statevars().size(), false);
     for (std::size_t v : cones[i]) in[v] = true;
@@ -123,7 +124,7 @@ std::vector<z3::expr> product_houdini_by_cones(const checker::SafetyProblem& p,
     }
     z3::solver s(ctx, "QF_LIA");
     s.add(u.at(ts.constraint_formula() && p.assumption && z3::mk_and(trans), 0));
-    for (const auto& k : kept) s.add(u.at(k, 0));  // invariants of the product
+    for (const auto& k : kept_at_0) s.add(k);  // invariants of the product
     for (std::size_t j = 0; j < cands.size(); ++j) {
       const z3::expr l = ctx.bool_const(("plc.houdini.cone." + std::to_string(i) + "." + std::to_string(j)).c_str());
       s.add(z3::implies(l, cands[j].decided));
@@ -131,7 +132,10 @@ std::vector<z3::expr> product_houdini_by_cones(const checker::SafetyProblem& p,
       cands[j].decided = u.at(cands[j].term, 1);
     }
     drop_until_unsat(s, cands, limits, meter);
-    for (const auto& c : cands) kept.push_back(c.term);
+    for (const auto& c : cands) {
+      kept.push_back(c.term);
+      kept_at_0.push_back(u.at(c.term, 0));
+    }
   }
   return kept;
 }

@@ -6,6 +6,7 @@
 #include <set>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 #include <unordered_set>
 
 #include "checker/reduce.hpp"
@@ -23,6 +24,37 @@ void int_numerals(const z3::expr& e, std::set<std::int64_t>& out, std::unordered
   std::int64_t v = 0;
   if (e.num_args() == 0 && e.is_int() && e.is_numeral() && e.is_numeral_i64(v)) out.insert(v);
   for (unsigned i = 0; i < e.num_args(); ++i) int_numerals(e.arg(i), out, seen);
+}
+
+// For each integer input, the numerals it is compared with (`input <= c`,
+// an analog limit as an ordered integer once reduced): drawn from these and
+// one either side, an input is as often on either side of its own limits,
+// where a draw among every numeral of the product (most of them other tags'
+// limits, far away) leaves a low limit tripped in nearly every scan and its
+// off-delay never run.
+std::vector<std::set<std::int64_t>> compared_numerals(const encoder::TransitionSystem& ts,
+                                                      const std::vector<z3::expr>& roots) {
+  std::unordered_map<unsigned, std::size_t> index;
+  for (std::size_t i = 0; i < ts.inputvars().size(); ++i)
+    if (ts.inputvars()[i].var.is_int()) index.emplace(ts.inputvars()[i].var.id(), i);
+  std::vector<std::set<std::int64_t>> out(ts.inputvars().size());
+  std::unordered_set<unsigned> seen;
+  std::vector<z3::expr> todo = roots;
+  while (!todo.empty()) {
+    const z3::expr e = todo.back();
+    todo.pop_back();
+    if (!e.is_app() || !seen.insert(e.id()).second) continue;
+    const Z3_decl_kind k = e.decl().decl_kind();
+    if (e.num_args() == 2 && (k == Z3_OP_LE || k == Z3_OP_GE || k == Z3_OP_LT || k == Z3_OP_GT || k == Z3_OP_EQ))
+      for (int side = 0; side < 2; ++side) {
+        const z3::expr v = e.arg(side), c = e.arg(1 - side);
+        std::int64_t n = 0;
+        if (const auto it = index.find(v.id()); it != index.end() && c.is_numeral() && c.is_numeral_i64(n))
+          out[it->second].insert(n);
+      }
+    for (unsigned i = 0; i < e.num_args(); ++i) todo.push_back(e.arg(i));
+  }
+  return out;
 }
 
 const std::string kAllowed = std::string(kProgramPrefix) + "sample.allowed";
@@ -130,11 +162,20 @@ Samples sample(const checker::SafetyProblem& p, const SamplingOptions& o) {
     int_numerals(p.assumption, k, seen);
     std::vector<std::int64_t> values;
     for (std::int64_t c : k) values.insert(values.end(), {c - 1, c, c + 1});
+    std::vector<z3::expr> roots{p.good};  // not the constraints' range bounds
+    for (const auto& s : ts.statevars()) roots.push_back(s.next);
+    std::vector<std::vector<std::int64_t>> near;
+    for (const auto& cs : compared_numerals(ts, roots)) {
+      near.emplace_back();
+      for (std::int64_t c : cs) near.back().insert(near.back().end(), {c - 1, c, c + 1});
+    }
     std::vector<int> holds{1, 2, 3};
     for (std::int64_t c : k)
       if (c >= 2 && c <= 2000) holds.insert(holds.end(), {static_cast<int>(c), static_cast<int>(c) + 1, static_cast<int>(c) + 2});
     std::mt19937 rng(o.seed);
     auto pick = [&](std::size_t n) { return std::uniform_int_distribution<std::size_t>(0, n - 1)(rng); };
+    std::mt19937 near_rng(o.seed + 1);
+    auto pick_near = [&](std::size_t n) { return std::uniform_int_distribution<std::size_t>(0, n - 1)(near_rng); };
     const auto& ins = ts.inputvars();
     std::vector<std::vector<encoder::Evaluator::Value>> states{runner.ev().state()};
     Inputs rest(ins.size());
@@ -143,15 +184,21 @@ Samples sample(const checker::SafetyProblem& p, const SamplingOptions& o) {
         if (ins[i].var.is_int() && v->is_float) rest[i].i = checker::float_key(v->f);  // reduced: ordered integers
         else rest[i] = {v->i, v->f};
       }
+    bool near_limits = false;  // this run draws an input near its own limits
     auto draw = [&](Inputs& in, std::size_t i) {
       if (ins[i].var.is_bool()) in[i].i = static_cast<std::int64_t>(pick(2));
-      else if (ins[i].var.is_int()) in[i].i = values[pick(values.size())];
+      else if (ins[i].var.is_int()) {
+        in[i].i = values[pick(values.size())];
+        // Its own stream: the runs from rest draw as they would without it.
+        if (near_limits && !near[i].empty() && pick_near(4) != 0) in[i].i = near[i][pick_near(near[i].size())];
+      }
       else in[i].f = static_cast<float>(values[pick(values.size())]);
     };
     for (int r = 0; r < o.runs; ++r) {
       runner.ev().reset();
       std::vector<Inputs> run;
       const bool from_rest = o.rest && r % 2 == 1;
+      near_limits = !from_rest;
       Inputs in = rest;
       int refused = 0;  // draws that broke the constraints or the assumption
       while (refused < 8 && static_cast<int>(run.size()) < o.cycles_per_run) {

@@ -42,8 +42,11 @@ struct Samples {
 // integers once reduced) and one either side, changed at the start of a
 // stretch (each with probability 1/2, or one to three from rest), held for as
 // many scans as a numeral or one or two more (a timer runs out, or stops one
-// scan short). A draw that breaks the constraints or the assumption is
-// drawn again.
+// scan short). In the random runs (not those from rest) an integer input
+// is drawn three times in four among the numerals it is itself compared
+// with, and one either side, from a stream of its own (the runs from rest
+// draw as without it). A draw that breaks the constraints or the assumption
+// is drawn again.
 Samples sample(const checker::SafetyProblem& p, const SamplingOptions& o = {});
 
 }  // namespace cemv::plc_check

@@ -47,12 +47,12 @@ if(TARGET cemv_plc_check AND TARGET cemv_plc)
   cemv_cli_test(NAME cli_plc_check_one_of_three_exit1 EXIT 1
     MATCH "XV_101 \\(effect 1 CLOSE_XV101\\) = XV_101: differs in scan 21: matrix 1, program 0.*P_101_RUN \\(effect 2 STOP_P101\\) = P_101_RUN: differs in scan 21: matrix 1, program 0"
     COMMAND bash -c "${PLC_RUN}" plc $<TARGET_FILE:cemv> ${PLC_TANK} tank_t100_one_of_three "")
-  # The 1oo3 copy's P_101_RUN run holds LT_100C at its limit from the first
+  # The 1oo3 copy's P_101_RUN run holds LT_100B at its limit from the first
   # scan without changing it: the diagram draws it all the same, and not
   # LT_102, which the run leaves at rest (the reduction left it out).
   cemv_cli_test(NAME cli_plc_check_diagram_draws_held_inputs EXIT 0
     MATCH "held inputs drawn"
-    COMMAND bash -c "\"$1\" plc-check \"$2\"/matrix.json \"$2\"/plc/tank_t100_one_of_three.st --map \"$2\"/plc/tank_t100.map.json --out \"$3\" -q 2>/dev/null && exit 9 || test $? -eq 1 && grep -q '>LT_100C<' \"$3\"/plc.P_101_RUN.svg && grep -q '>LT_100B<' \"$3\"/plc.P_101_RUN.svg && ! grep -q '>LT_102<' \"$3\"/plc.P_101_RUN.svg && echo held inputs drawn"
+    COMMAND bash -c "\"$1\" plc-check \"$2\"/matrix.json \"$2\"/plc/tank_t100_one_of_three.st --map \"$2\"/plc/tank_t100.map.json --out \"$3\" -q 2>/dev/null && exit 9 || test $? -eq 1 && grep -q '>LT_100B<' \"$3\"/plc.P_101_RUN.svg && ! grep -q '>LT_102<' \"$3\"/plc.P_101_RUN.svg && echo held inputs drawn"
             plc $<TARGET_FILE:cemv> ${PLC_TANK} ${CMAKE_BINARY_DIR}/plc_check/diagram_1oo3)
   cemv_cli_test(NAME cli_plc_check_no_map_exit2 EXIT 2
     MATCH "tank_t100.st: error: operator commands the matrix accepts without a program variable"

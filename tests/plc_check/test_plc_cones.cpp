@@ -4,8 +4,12 @@
 // depends on decide which pairs and guards get a candidate.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
+#include "checker/limits.hpp"
 #include "encoder/transition_system.hpp"
 #include "plc_check/cones.hpp"
+#include "plc_check/sampling.hpp"
 
 namespace {
 
@@ -66,6 +70,77 @@ TEST(PlcCones, SupportsRelateVariablesOfTheSameInputs) {
   EXPECT_FALSE(sup.may_guard(b, a, c));   // reads i2, which neither does
   EXPECT_FALSE(sup.may_guard(b, a, b));   // i2 alone, not the pair's i1 and i2
   EXPECT_TRUE(sup.may_guard(c, a, a));    // exactly the pair's i1
+}
+
+// z' = (a or i2) and not (a or i2): constant FALSE, as the matrix encodes an
+// effect's output delay of 0 ms (E.7), and o' = ite(z, i2, a) reads i2 only
+// through it. y' = y or i2 stays FALSE in the samples below without being
+// constant.
+struct WithConstant {
+  z3::context ctx;
+  TransitionSystem ts{ctx};
+  z3::expr i1 = ts.make_inputvar("i1", ctx.bool_sort());
+  z3::expr i2 = ts.make_inputvar("i2", ctx.bool_sort());
+  z3::expr a = ts.make_statevar("a", ctx.bool_sort());
+  z3::expr z = ts.make_statevar("z", ctx.bool_sort());
+  z3::expr o = ts.make_statevar("o", ctx.bool_sort());
+  z3::expr y = ts.make_statevar("y", ctx.bool_sort());
+  WithConstant() {
+    for (const auto& v : {a, z, o, y}) ts.set_init(v, ctx.bool_val(false));
+    ts.assign_next(a, a || i1);
+    ts.assign_next(z, (a || i2) && !(a || i2));
+    ts.assign_next(o, z3::ite(z, i2, a));
+    ts.assign_next(y, y || i2);
+    ts.check_complete();
+  }
+};
+
+TEST(PlcCones, ConstantStatesAreNoDependency) {
+  WithConstant s;
+  const cemv::checker::SafetyProblem p{&s.ts, s.ctx.bool_val(true), s.ctx.bool_val(true)};
+  const std::size_t a = 0, z = 1, o = 2;
+  EXPECT_FALSE(Supports(s.ts).related(a, o, true));  // o reads i2 through z
+  cemv::plc_check::Samples samples;
+  using V = cemv::encoder::Evaluator::Value;
+  samples.states = {{V{0, 0}, V{0, 0}, V{0, 0}, V{0, 0}}, {V{1, 0}, V{0, 0}, V{1, 0}, V{0, 0}}};
+  cemv::checker::Limits limits;
+  cemv::checker::WorkMeter meter(s.ctx, limits);
+  // z is constant; y is FALSE in every sample but not constant.
+  const auto constants = cemv::plc_check::constant_states(p, samples, limits, meter);
+  EXPECT_EQ(constants, (std::vector<std::size_t>{z}));
+  EXPECT_TRUE(Supports(s.ts, constants).related(a, o, true));
+}
+
+// A 2oo3 low limit of three analog inputs (ordered integers) at 1,000,000,
+// beside a fourth input compared with 60 small numerals: the seeded runs
+// draw each input near its own limit, so that the trip falls after it rose
+// (an off-delay runs); drawn among every numeral, two of the three inputs
+// are above the limit together about once in 10,000 scans.
+TEST(PlcCones, SeededRunsDrawInputsNearTheirOwnLimits) {
+  z3::context ctx;
+  TransitionSystem ts{ctx};
+  std::vector<z3::expr> x;
+  for (const char* n : {"x1", "x2", "x3"}) x.push_back(ts.make_inputvar(n, ctx.int_sort()));
+  const z3::expr w = ts.make_inputvar("w", ctx.int_sort());
+  const z3::expr prev = ts.make_statevar("trip_prev", ctx.bool_sort());
+  const z3::expr fell = ts.make_statevar("fell", ctx.bool_sort());
+  const z3::expr level = ts.make_statevar("level", ctx.int_sort());
+  auto one = [&](const z3::expr& v) { return z3::ite(v <= 1000000, ctx.int_val(1), ctx.int_val(0)); };
+  const z3::expr trip = one(x[0]) + one(x[1]) + one(x[2]) >= 2;
+  z3::expr lvl = ctx.int_val(0);
+  for (int c = 0; c < 60; ++c) lvl = z3::ite(w >= c, ctx.int_val(c), lvl);
+  ts.set_init(prev, ctx.bool_val(false));
+  ts.set_init(fell, ctx.bool_val(false));
+  ts.set_init(level, ctx.int_val(0));
+  ts.assign_next(prev, trip);
+  ts.assign_next(fell, fell || (prev && !trip));
+  ts.assign_next(level, lvl);
+  ts.check_complete();
+  const cemv::checker::SafetyProblem p{&ts, ctx.bool_val(true), ctx.bool_val(true)};
+  const auto samples = cemv::plc_check::sample(p);
+  ASSERT_FALSE(samples.states.empty());
+  EXPECT_TRUE(std::any_of(samples.states.begin(), samples.states.end(), [](const auto& st) { return st[1].i == 1; }))
+      << "no sampled run lets the 2oo3 trip fall";
 }
 
 }  // namespace
