@@ -586,6 +586,11 @@ Runtime::Runtime(const model::Matrix& m) : impl_(std::make_unique<Impl>(m)) {}
 Runtime::~Runtime() = default;
 Runtime::Runtime(Runtime&&) noexcept = default;
 Runtime& Runtime::operator=(Runtime&&) noexcept = default;
+Runtime::Runtime(const Runtime& other) : impl_(std::make_unique<Impl>(*other.impl_)) {}
+Runtime& Runtime::operator=(const Runtime& other) {
+  if (this != &other) impl_ = std::make_unique<Impl>(*other.impl_);
+  return *this;
+}
 
 const model::Matrix& Runtime::matrix() const { return impl_->matrix; }
 const model::InputTable& Runtime::inputs() const { return impl_->inputs; }

@@ -11,6 +11,7 @@
 #include <chrono>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <set>
 
 #include "checker/engines/accelerated_bmc.hpp"
@@ -21,6 +22,7 @@
 #include "formats/scenario.hpp"
 #include "properties/evaluator.hpp"
 #include "properties/monitor.hpp"
+#include "runtime/runtime.hpp"
 #include "testgen/explore.hpp"
 #include "testgen/scenario_writer.hpp"
 #include "testgen/search.hpp"
@@ -180,7 +182,7 @@ class GroupRun {
       const std::string method = held ? "accelerated-bmc" : "bmc";
       if (room(pending.front())) {
         Draft& d = drafts_.back();
-        q.prefix = d.inputs;
+        q.prefix = &d.inputs;
         q.roots = merge(std::move(q.roots), d.roots);
         q.max_cycles = std::min<std::int64_t>(longest, static_cast<std::int64_t>(options_.max_test_cycles) -
                                                            static_cast<std::int64_t>(d.inputs.size()));
@@ -194,7 +196,7 @@ class GroupRun {
             continue;
           }
         }
-        q.prefix.clear();
+        q.prefix = nullptr;
       }
       q.max_cycles = longest;
       detail::SweepAnswer a = detail::sweep(m_, options_, q);
@@ -270,14 +272,17 @@ class GroupRun {
   // of a stretch, one checklist step per cycle. The run without the repeats
   // is adopted when it still witnesses the objective.
   bool adopt(Draft& d, std::vector<model::CycleInput> inputs, std::size_t target, const std::string& method) {
-    std::vector<model::CycleInput> once = inputs;
-    bool changed = false;
-    for (std::size_t k = once.size(); k-- > 1;) {
-      if (once[k].commands.empty() || !same_commands(inputs[k].commands, inputs[k - 1].commands)) continue;
-      once[k].commands.clear();
-      changed = true;
+    bool repeats = false;
+    for (std::size_t k = inputs.size(); k-- > 1 && !repeats;)
+      repeats = !inputs[k].commands.empty() && same_commands(inputs[k].commands, inputs[k - 1].commands);
+    if (repeats) {
+      // A copy only then: an 8 h test's inputs are 576,000 cycles.
+      std::vector<model::CycleInput> once = inputs;
+      for (std::size_t k = once.size(); k-- > 1;)
+        if (!once[k].commands.empty() && same_commands(inputs[k].commands, inputs[k - 1].commands))
+          once[k].commands.clear();
+      if (adopt_run(d, std::move(once), target, method)) return true;
     }
-    if (changed && adopt_run(d, std::move(once), target, method)) return true;
     return adopt_run(d, std::move(inputs), target, method);
   }
 
@@ -290,32 +295,49 @@ class GroupRun {
     return true;
   }
 
-  // Replays `inputs` and marks what they witness; false when `target` is not witnessed.
+  // Replays `inputs` and marks what they witness; false when `target` is not
+  // witnessed. The run is judged as the runtime steps it, each objective of
+  // the group still open by the concrete evaluator streamed cycle by cycle
+  // (properties::StreamEvaluator): a test keeps its inputs only, never a
+  // trace, so what generating it holds is its inputs (an 8 h test: 576,000
+  // cycles), not their observables as well.
   bool adopt_run(Draft& d, std::vector<model::CycleInput> inputs, std::size_t target, const std::string& method) {
     if (!fits(inputs.size())) return false;
-    checker::ConcreteTrace t = checker::run_on_runtime(m_, inputs);
-    properties::Trace trace;
-    trace.reserve(t.inputs.size());
-    // The run is judged and dropped: a test keeps its inputs only, so what
-    // generating it holds is bounded by one test (its run is made again
-    // when the suite is written).
-    for (std::size_t k = 0; k < t.inputs.size(); ++k)
-      trace.push_back({std::move(t.inputs[k]), std::move(t.observables[k])});
-    t = checker::ConcreteTrace{};
-    properties::Evaluator ev(m_);
-    auto witness = [&](std::size_t i) -> std::optional<std::size_t> {
-      auto e = ev.evaluate(file_.properties[i], file_.assumptions, trace);
+    std::vector<std::size_t> open;
+    std::vector<properties::StreamEvaluator> judges;
+    for (std::size_t i : members_) {
+      const ObjectiveStatus st = results_[i].status;
+      if (i != target && (st == ObjectiveStatus::Covered || st == ObjectiveStatus::Infeasible)) continue;
+      open.push_back(i);
+      judges.emplace_back(m_, file_.properties[i], file_.assumptions);
+    }
+    runtime::Runtime rt(m_);
+    std::vector<int> obs;
+    for (const auto& in : inputs) {
+      rt.step(in);
+      rt.snapshot(obs);
+      bool all_final = true;
+      for (auto& j : judges)
+        if (!j.final()) {
+          j.step(in, obs);
+          all_final = all_final && j.final();
+        }
+      if (all_final) break;
+    }
+    auto witness = [&](std::size_t k) -> std::optional<std::size_t> {
+      const properties::Evaluation& e = judges[k].result();
       if (e.holds && e.cycle) return *e.cycle;
       return std::nullopt;
     };
-    auto w = witness(target);
-    if (!w) return false;
+    const std::size_t t = static_cast<std::size_t>(std::find(open.begin(), open.end(), target) - open.begin());
+    if (!witness(t)) return false;
     d.simulates = forces(inputs);
     d.inputs = std::move(inputs);
-    for (std::size_t i : members_) {
+    for (std::size_t k = 0; k < open.size(); ++k) {
+      const std::size_t i = open[k];
       ObjectiveResult& r = results_[i];
       if (r.status == ObjectiveStatus::Covered || r.status == ObjectiveStatus::Infeasible) continue;
-      auto c = i == target ? w : witness(i);
+      auto c = witness(k);
       if (!c) continue;
       r.status = ObjectiveStatus::Covered;
       r.test = -1;  // numbered when the suite is assembled
@@ -490,9 +512,9 @@ TestSuite generate_tests(const model::Matrix& m, const TestgenOptions& options) 
     std::vector<detail::Checkpoint> cps{{last, {g.description}, {g.key}}};
     t.checkpoints = {last};
     t.inputs = g.inputs;
-    const checker::ConcreteTrace run = checker::run_on_runtime(m, g.inputs);
-    t.scenario_json = detail::test_scenario_json(m, options.matrix_ref, t.description, g.inputs, run.observables,
-                                                 cps, t.steps, t.field_steps);
+    t.scenario_json = detail::test_scenario_json(m, options.matrix_ref, t.description, g.inputs,
+                                                 detail::snapshots_at(m, g.inputs, t.checkpoints), cps, t.steps,
+                                                 t.field_steps);
     suite.total_steps += t.steps;
     suite.total_cycles += t.inputs.size();
     suite.tests.push_back(std::move(t));
@@ -530,9 +552,9 @@ TestSuite generate_tests(const model::Matrix& m, const TestgenOptions& options) 
         t.objectives.push_back(r.objective.id);
       }
       for (const auto& c : cps) t.checkpoints.push_back(c.cycle);
-      const checker::ConcreteTrace run = checker::run_on_runtime(m, dr.inputs);
       t.scenario_json = detail::test_scenario_json(m, options.matrix_ref, t.description, dr.inputs,
-                                                   run.observables, cps, t.steps, t.field_steps);
+                                                   detail::snapshots_at(m, dr.inputs, t.checkpoints), cps, t.steps,
+                                                   t.field_steps);
       t.inputs = std::move(dr.inputs);
       suite.total_steps += t.steps;
       suite.total_cycles += t.inputs.size();
