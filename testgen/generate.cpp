@@ -9,6 +9,8 @@
 // and the result does not depend on the number of jobs.
 #include <algorithm>
 #include <chrono>
+#include <functional>
+#include <iterator>
 #include <map>
 #include <mutex>
 #include <optional>
@@ -56,6 +58,16 @@ std::vector<model::Node> merge(std::vector<model::Node> a, const std::vector<mod
   std::sort(a.begin(), a.end());
   a.erase(std::unique(a.begin(), a.end()), a.end());
   return a;
+}
+
+// A test's inputs and what extends them, allocated once at their size (a
+// vector grown by insert may keep twice the capacity of an 8 h test).
+std::vector<model::CycleInput> joined(const std::vector<model::CycleInput>& test, std::vector<model::CycleInput> more) {
+  std::vector<model::CycleInput> all;
+  all.reserve(test.size() + more.size());
+  all.insert(all.end(), test.begin(), test.end());
+  all.insert(all.end(), std::make_move_iterator(more.begin()), std::make_move_iterator(more.end()));
+  return all;
 }
 
 // Cycles a sweep adds to a test at most (testgen/sweep.hpp); objectives
@@ -189,8 +201,7 @@ class GroupRun {
         detail::SweepAnswer a = q.max_cycles > 0 ? detail::sweep(m_, options_, q) : detail::SweepAnswer{};
         if (!a.cycles.empty()) {
           const std::size_t target = pending[a.reached.front()];
-          std::vector<model::CycleInput> all = d.inputs;
-          all.insert(all.end(), a.cycles.begin(), a.cycles.end());
+          std::vector<model::CycleInput> all = joined(d.inputs, std::move(a.cycles));
           if (adopt(d, std::move(all), target, method)) {
             d.roots = q.roots;
             continue;
@@ -356,8 +367,7 @@ class GroupRun {
     eg.roots = merge(d.roots, g.roots);
     SearchResult r = search_.find(eg, d.inputs, options_.objective_work / 2);
     if (r.kind != SearchResult::Kind::Found) return false;
-    std::vector<model::CycleInput> all = d.inputs;
-    all.insert(all.end(), r.cycles.begin(), r.cycles.end());
+    std::vector<model::CycleInput> all = joined(d.inputs, std::move(r.cycles));
     if (!adopt(d, std::move(all), i, r.method)) return false;
     d.roots = eg.roots;
     return true;
@@ -373,45 +383,49 @@ class GroupRun {
     if (room(i)) {
       Draft& d = drafts_.back();
       SearchResult r = detail::explore(m_, g, d.inputs, seed);
-      if (r.kind == SearchResult::Kind::Found) {
-        for (auto& [cycles, method] : completions(g, d.inputs, r)) {
-          std::vector<model::CycleInput> all = d.inputs;
-          all.insert(all.end(), cycles.begin(), cycles.end());
-          if (adopt(d, std::move(all), i, method)) return true;
-        }
-      }
+      if (r.kind == SearchResult::Kind::Found &&
+          complete(g, d.inputs, r, [&](std::vector<model::CycleInput> cycles, const std::string& method) {
+            return adopt(d, joined(d.inputs, std::move(cycles)), i, method);
+          }))
+        return true;
     }
     SearchResult r = detail::explore(m_, g, {}, seed + 1);
     if (r.kind != SearchResult::Kind::Found) return false;
-    for (auto& [cycles, method] : completions(g, {}, r)) {
+    return complete(g, {}, r, [&](std::vector<model::CycleInput> cycles, const std::string& method) {
       SearchResult s;
       s.kind = SearchResult::Kind::Found;
       s.cycles = std::move(cycles);
       s.method = method;
-      if (start(i, g, s)) return true;
-    }
-    return false;
+      return start(i, g, s);
+    });
   }
 
-  // The simulated run with its last cycles found again by BMC from the state
-  // shortly before the witness, then the simulated run itself.
-  std::vector<std::pair<std::vector<model::CycleInput>, std::string>> completions(
-      const Goal& g, const std::vector<model::CycleInput>& prefix, const SearchResult& r) {
+  // Offers `take` the simulated run with its last cycles found again by BMC
+  // from the state shortly before the witness, then the simulated run
+  // itself, until it takes one. One candidate at a time: a run of an 8 h
+  // test is 576,000 cycles of inputs.
+  bool complete(const Goal& g, const std::vector<model::CycleInput>& prefix, SearchResult& r,
+                const std::function<bool(std::vector<model::CycleInput>, const std::string&)>& take) {
     constexpr std::size_t kTail = 3;
-    std::vector<std::pair<std::vector<model::CycleInput>, std::string>> out;
     const std::size_t keep = r.cycles.size() > kTail ? r.cycles.size() - kTail : 0;
     if (!prefix.empty() || keep > 0) {
-      std::vector<model::CycleInput> head = prefix;
-      head.insert(head.end(), r.cycles.begin(), r.cycles.begin() + static_cast<long>(keep));
-      SearchResult b = search_.find(g, head, options_.objective_work / 4);
+      SearchResult b;
+      {
+        std::vector<model::CycleInput> head;
+        head.reserve(prefix.size() + keep);
+        head = prefix;
+        head.insert(head.end(), r.cycles.begin(), r.cycles.begin() + static_cast<long>(keep));
+        b = search_.find(g, head, options_.objective_work / 4);
+      }
       if (b.kind == SearchResult::Kind::Found) {
-        std::vector<model::CycleInput> cycles(r.cycles.begin(), r.cycles.begin() + static_cast<long>(keep));
+        std::vector<model::CycleInput> cycles;
+        cycles.reserve(keep + b.cycles.size());
+        cycles.assign(r.cycles.begin(), r.cycles.begin() + static_cast<long>(keep));
         cycles.insert(cycles.end(), b.cycles.begin(), b.cycles.end());
-        out.push_back({std::move(cycles), "simulation+" + b.method});
+        if (take(std::move(cycles), "simulation+" + b.method)) return true;
       }
     }
-    out.push_back({r.cycles, "simulation"});
-    return out;
+    return take(std::move(r.cycles), "simulation");
   }
 
   bool start(std::size_t i, const Goal& g, const SearchResult& r) {
