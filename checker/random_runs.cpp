@@ -267,13 +267,12 @@ Run RandomRuns::next(std::size_t segments, std::size_t max_cycles) {
   return run;
 }
 
-std::vector<model::CycleInput> expand(const model::Matrix& m, const Run& run, const model::CycleInput& start) {
+void for_each_cycle(const model::Matrix& m, const Run& run, const model::CycleInput& start,
+                    const std::function<bool(const model::CycleInput&)>& each) {
   const model::InputTable table(m);
   const model::CommandOrder order(m);
   model::CycleInput held = start;
   held.commands.clear();
-  std::vector<model::CycleInput> out;
-  out.reserve(run_cycles(run));
   for (const auto& seg : run) {
     for (const auto& ch : seg.changes)
       if (auto i = table.find(ch.tag)) {
@@ -285,9 +284,19 @@ std::vector<model::CycleInput> expand(const model::Matrix& m, const Run& run, co
       if ((c.cause == 0 || m.find_cause(c.cause)) && (c.effect == 0 || m.find_effect(c.effect)))
         first.commands.push_back(c);
     first.commands = order.canonical(first.commands);
-    out.push_back(std::move(first));
-    for (std::size_t k = 1; k < seg.cycles; ++k) out.push_back(held);
+    if (!each(first)) return;
+    for (std::size_t k = 1; k < seg.cycles; ++k)
+      if (!each(held)) return;
   }
+}
+
+std::vector<model::CycleInput> expand(const model::Matrix& m, const Run& run, const model::CycleInput& start) {
+  std::vector<model::CycleInput> out;
+  out.reserve(run_cycles(run));
+  for_each_cycle(m, run, start, [&](const model::CycleInput& in) {
+    out.push_back(in);
+    return true;
+  });
   return out;
 }
 

@@ -105,6 +105,10 @@ class RandomRuns {
 // skipped; the commands of a cycle go in the matrix's processing order
 // (model::CommandOrder), without those naming an element `m` lacks.
 std::vector<model::CycleInput> expand(const model::Matrix& m, const Run& run, const model::CycleInput& start);
+// The same cycle inputs one at a time, each given to `each` until it returns
+// false: a run of a million cycles judged without holding them.
+void for_each_cycle(const model::Matrix& m, const Run& run, const model::CycleInput& start,
+                    const std::function<bool(const model::CycleInput&)>& each);
 
 // The number of cycles a run lasts.
 std::size_t run_cycles(const Run& run);

@@ -1,11 +1,15 @@
 // Every expression is evaluated to one column of values over the whole trace,
 // children first; past-time operators look back over the columns of their
 // operands exactly as their definitions read (docs/properties.md, "Semantics").
-// Deliberately no state machines: the symbolic monitor uses those.
+// Deliberately no state machines: the symbolic monitor uses those, and so
+// does the evaluator's streamed form (evaluator_stream.cpp), which is held
+// to this one by tests/properties/test_stream_evaluator.cpp.
 #include "properties/evaluator.hpp"
 
 #include <algorithm>
 #include <stdexcept>
+
+#include "properties/evaluator_atoms.hpp"
 
 namespace cemv::properties {
 
@@ -20,29 +24,8 @@ struct Value {
 };
 using Column = std::vector<Value>;
 
-bool matches(const CommandPattern& p, const model::Command& c) {
-  if (c.op != p.op) return false;
-  if (p.cause && c.cause != *p.cause) return false;
-  if (p.effect && c.effect != *p.effect) return false;
-  if (p.tag && c.tag != *p.tag) return false;
-  if (p.group && c.group != *p.group) return false;
-  if (p.on && c.on != *p.on) return false;
-  if (p.tag_name && model::tag_key(c.tag_name) != model::tag_key(*p.tag_name)) return false;
-  return true;
-}
-
-template <class T>
-bool compare(CompareOp op, T a, T b) {
-  switch (op) {
-    case CompareOp::Eq: return a == b;
-    case CompareOp::Ne: return a != b;
-    case CompareOp::Lt: return a < b;
-    case CompareOp::Le: return a <= b;
-    case CompareOp::Gt: return a > b;
-    case CompareOp::Ge: return a >= b;
-  }
-  return false;
-}
+using detail::compare;
+using detail::matches;
 
 class ColumnEvaluator {
  public:
@@ -181,13 +164,7 @@ std::vector<bool> to_bools(const Column& c) {
   return out;
 }
 
-// The antecedent that vacuity is judged on (docs/properties.md, "Vacuity").
-const Expr* antecedent(const Property& p) {
-  if (p.kind == PropertyKind::Response) return &p.trigger;
-  if (p.kind == PropertyKind::Invariant && p.body.kind == Kind::Implies) return &p.body.args[0];
-  if (p.kind == PropertyKind::Never && p.body.kind == Kind::And && !p.body.args.empty()) return &p.body.args[0];
-  return nullptr;
-}
+using detail::antecedent;
 
 }  // namespace
 

@@ -6,6 +6,8 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -46,6 +48,58 @@ struct Evaluation {
   // and Never of `a and b`: a) held in some judged cycle. A property that holds
   // with an antecedent never met says nothing about this trace.
   bool antecedent_met = false;
+};
+
+// The same meaning one cycle at a time, for the runs test generation judges
+// (testgen/explore.cpp: seeded simulation's many runs; testgen/generate.cpp:
+// every run a test is made of): each past-time operator keeps its memory (a
+// previous value, a run length, a distance, a since flag) instead of the
+// trace, so judging a run of a million cycles holds one cycle, and a copy
+// taken after a prefix judges every run from there without the prefix.
+// result() after the steps of a trace is what Evaluator::evaluate says on
+// that trace, at every cut (tests/properties/test_stream_evaluator.cpp holds
+// the two to each other); like it, it shares no code with the monitor.
+class StreamEvaluator {
+ public:
+  // `p` and `file_assumptions` must outlive the evaluator and its copies.
+  StreamEvaluator(const model::Matrix& m, const Property& p, const std::vector<Assumption>& file_assumptions);
+
+  // One more cycle of the trace (TraceCycle's input and observables).
+  void step(const model::CycleInput& input, const std::vector<int>& observables);
+  // The evaluation of the cycles stepped so far.
+  const Evaluation& result() const { return result_; }
+  // Whether `holds` and `cycle` are decided whatever cycles follow: a
+  // violation or witness found, or an assumption failed.
+  bool final() const { return result_.cycle.has_value() || frozen_; }
+
+  // A compiled expression node; its children come before it.
+  struct Node {
+    const Expr* expr = nullptr;
+    std::size_t observable = 0;       // Observable: index in the snapshot
+    std::vector<std::size_t> args;    // node indices
+    bool floats = false;              // Compare: in single precision
+  };
+  struct Program {
+    std::vector<Node> nodes;
+    std::vector<std::size_t> assumptions;  // roots
+    std::size_t antecedent = 0, body = 0, trigger = 0, response = 0;
+    bool has_antecedent = false;
+  };
+  struct Value {
+    std::int64_t i = 0;
+    float f = 0.0f;
+  };
+
+ private:
+  void evaluate_all(const model::CycleInput& input, const std::vector<int>& observables);
+
+  std::shared_ptr<const Program> program_;  // shared by copies
+  std::vector<std::int64_t> memory_;        // per node: what its operator remembers
+  std::vector<Value> now_;                  // per node: its value this cycle
+  const Property* property_;
+  std::optional<std::size_t> pending_;      // Response: the oldest trigger not answered yet
+  bool frozen_ = false;                     // an assumption failed: nothing later is judged
+  Evaluation result_;
 };
 
 class Evaluator {

@@ -37,7 +37,6 @@ struct Runtime::Impl {
   std::vector<CauseBlock> causes;  // by slot
   std::vector<EffectBlock> effects;
   Signals signals;
-  OperatorCommands commands{layout, causes, effects, signals};
   std::vector<CompiledObservable> observables;
 
   bool gdm_set_before = false;
@@ -131,6 +130,9 @@ void Runtime::Impl::step(const model::CycleInput& in) {
 
   // Phase 2: operator commands, in order, gated by secure write (M.3).
   const bool secure_write_open = !layout.secure_write_enable || signals.read_bool(*layout.secure_write_enable);
+  // Made here, not kept: it refers to this Impl's members, and a copied
+  // runtime must not act on the original's.
+  OperatorCommands commands(layout, causes, effects, signals);
   for (const model::Command& c : in.commands) {
     const bool ok = secure_write_open && commands.apply(c, cycle);
     if (!ok) ++refused;
@@ -201,6 +203,11 @@ Runtime::Runtime(const model::Matrix& m) : impl_(std::make_unique<Impl>(m)) {}
 Runtime::~Runtime() = default;
 Runtime::Runtime(Runtime&&) noexcept = default;
 Runtime& Runtime::operator=(Runtime&&) noexcept = default;
+Runtime::Runtime(const Runtime& other) : impl_(std::make_unique<Impl>(*other.impl_)) {}
+Runtime& Runtime::operator=(const Runtime& other) {
+  if (this != &other) impl_ = std::make_unique<Impl>(*other.impl_);
+  return *this;
+}
 
 const model::Matrix& Runtime::matrix() const { return impl_->matrix; }
 const model::InputTable& Runtime::inputs() const { return impl_->inputs; }

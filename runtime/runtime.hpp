@@ -23,6 +23,10 @@ class Runtime {
   ~Runtime();
   Runtime(Runtime&&) noexcept;
   Runtime& operator=(Runtime&&) noexcept;
+  // The runtime in its present state: the same cycles give both the same
+  // observables (a search that runs many continuations of one prefix).
+  Runtime(const Runtime& other);
+  Runtime& operator=(const Runtime& other);
 
   const model::Matrix& matrix() const;
   // The input tags, in the order of CycleInput::tags.

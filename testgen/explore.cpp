@@ -27,16 +27,21 @@ checker::RunSpace cone_space(const model::Matrix& m, const Goal& g) {
   return s;
 }
 
+// Judges runs after the prefix cycle by cycle (properties::StreamEvaluator):
+// the runtime and the evaluator are stepped through the prefix once and
+// copied for every run, so neither the prefix (hours of a soft bypass:
+// 576,000 cycles) nor a run (up to 4 x a timer's horizon) is ever held as a
+// trace, and a run is judged only up to its witness. Only the run that
+// becomes a test is expanded (explore below), and it is judged again on its
+// whole trace when it is adopted (testgen/generate.cpp).
 class Judge {
  public:
   Judge(const model::Matrix& m, const Goal& g, const std::vector<model::CycleInput>& prefix)
-      : m_(m), g_(g), prefix_(prefix), eval_(m) {
-    runtime::Runtime rt(m);
-    std::vector<int> obs;
+      : m_(m), rt_(m), eval_(m, *g.property, g.file->assumptions), prefix_cycles_(prefix.size()) {
     for (const auto& in : prefix) {
-      rt.step(in);
-      rt.snapshot(obs);
-      trace_.push_back({in, obs});
+      rt_.step(in);
+      rt_.snapshot(obs_);
+      eval_.step(in, obs_);
     }
     start_ = prefix.empty() ? model::default_cycle_input(m) : prefix.back();
     start_.commands.clear();
@@ -44,33 +49,29 @@ class Judge {
 
   // The cycle after the prefix where the run witnesses the goal, or -1.
   long witness(const checker::Run& run) {
-    const std::vector<model::CycleInput> cycles = checker::expand(m_, run, start_);
-    runtime::Runtime rt(m_);
-    for (const auto& in : prefix_) rt.step(in);
-    // The run's cycles are judged after the prefix's and dropped again: the
-    // prefix (hours of a soft bypass: 576,000 cycles) is held once, not
-    // copied for every run.
-    const std::size_t base = trace_.size();
-    std::vector<int> obs;
-    for (const auto& in : cycles) {
+    // Decided within the prefix: a witness there, or an assumption failed.
+    if (eval_.final()) return -1;
+    runtime::Runtime rt = rt_;
+    properties::StreamEvaluator ev = eval_;
+    checker::for_each_cycle(m_, run, start_, [&](const model::CycleInput& in) {
       rt.step(in);
-      rt.snapshot(obs);
-      trace_.push_back({in, obs});
-    }
-    const auto e = eval_.evaluate(*g_.property, g_.file->assumptions, trace_);
-    trace_.erase(trace_.begin() + static_cast<long>(base), trace_.end());
-    if (!e.holds || !e.cycle || *e.cycle < prefix_.size()) return -1;
-    return static_cast<long>(*e.cycle - prefix_.size());
+      rt.snapshot(obs_);
+      ev.step(in, obs_);
+      return !ev.final();
+    });
+    const properties::Evaluation& e = ev.result();
+    if (!e.holds || !e.cycle || *e.cycle < prefix_cycles_) return -1;
+    return static_cast<long>(*e.cycle - prefix_cycles_);
   }
 
   const model::CycleInput& start() const { return start_; }
 
  private:
   const model::Matrix& m_;
-  const Goal& g_;
-  const std::vector<model::CycleInput>& prefix_;
-  properties::Evaluator eval_;
-  properties::Trace trace_;
+  runtime::Runtime rt_;                // after the prefix
+  properties::StreamEvaluator eval_;   // after the prefix
+  std::size_t prefix_cycles_;
+  std::vector<int> obs_;
   model::CycleInput start_;
 };
 
@@ -101,8 +102,11 @@ SearchResult explore(const model::Matrix& m, const Goal& g, const std::vector<mo
     run = checker::minimise_run(std::move(run), [&](const checker::Run& x) { return judge.witness(x); });
     const long w = judge.witness(run);
     if (w < 0) break;  // cannot happen: minimise_run keeps a witness
-    out.cycles = checker::expand(m, run, judge.start());
-    out.cycles.resize(static_cast<std::size_t>(w) + 1);
+    out.cycles.reserve(static_cast<std::size_t>(w) + 1);
+    checker::for_each_cycle(m, run, judge.start(), [&](const model::CycleInput& in) {
+      out.cycles.push_back(in);
+      return out.cycles.size() <= static_cast<std::size_t>(w);
+    });
     out.kind = SearchResult::Kind::Found;
     out.method = "simulation";
     return out;

@@ -3,7 +3,8 @@
 // whose witness BMC does not reach within its budget: a 100-cycle output
 // delay behind a 2oo3 analog cause, a 5 s pulse that must end before a latch
 // shows. Only the inputs of the objective's cone vary, held for the matrix's
-// own durations; the concrete evaluator judges every run, and the first run
+// own durations; the concrete evaluator judges every run cycle by cycle
+// (properties::StreamEvaluator, from the state the prefix leaves), and the first run
 // that witnesses the objective is made short (checker::minimise_run). The
 // caller then lets BMC find the last cycles from a state shortly before the
 // witness, and replays the result on the runtime like every other test.

@@ -9,8 +9,11 @@
 // and the result does not depend on the number of jobs.
 #include <algorithm>
 #include <chrono>
+#include <functional>
+#include <iterator>
 #include <map>
 #include <mutex>
+#include <optional>
 #include <set>
 
 #include "checker/engines/accelerated_bmc.hpp"
@@ -21,6 +24,7 @@
 #include "formats/scenario.hpp"
 #include "properties/evaluator.hpp"
 #include "properties/monitor.hpp"
+#include "runtime/runtime.hpp"
 #include "testgen/explore.hpp"
 #include "testgen/scenario_writer.hpp"
 #include "testgen/search.hpp"
@@ -54,6 +58,16 @@ std::vector<model::Node> merge(std::vector<model::Node> a, const std::vector<mod
   std::sort(a.begin(), a.end());
   a.erase(std::unique(a.begin(), a.end()), a.end());
   return a;
+}
+
+// A test's inputs and what extends them, allocated once at their size (a
+// vector grown by insert may keep twice the capacity of an 8 h test).
+std::vector<model::CycleInput> joined(const std::vector<model::CycleInput>& test, std::vector<model::CycleInput> more) {
+  std::vector<model::CycleInput> all;
+  all.reserve(test.size() + more.size());
+  all.insert(all.end(), test.begin(), test.end());
+  all.insert(all.end(), std::make_move_iterator(more.begin()), std::make_move_iterator(more.end()));
+  return all;
 }
 
 // Cycles a sweep adds to a test at most (testgen/sweep.hpp); objectives
@@ -180,21 +194,20 @@ class GroupRun {
       const std::string method = held ? "accelerated-bmc" : "bmc";
       if (room(pending.front())) {
         Draft& d = drafts_.back();
-        q.prefix = d.inputs;
+        q.prefix = &d.inputs;
         q.roots = merge(std::move(q.roots), d.roots);
         q.max_cycles = std::min<std::int64_t>(longest, static_cast<std::int64_t>(options_.max_test_cycles) -
                                                            static_cast<std::int64_t>(d.inputs.size()));
         detail::SweepAnswer a = q.max_cycles > 0 ? detail::sweep(m_, options_, q) : detail::SweepAnswer{};
         if (!a.cycles.empty()) {
           const std::size_t target = pending[a.reached.front()];
-          std::vector<model::CycleInput> all = d.inputs;
-          all.insert(all.end(), a.cycles.begin(), a.cycles.end());
+          std::vector<model::CycleInput> all = joined(d.inputs, std::move(a.cycles));
           if (adopt(d, std::move(all), target, method)) {
             d.roots = q.roots;
             continue;
           }
         }
-        q.prefix.clear();
+        q.prefix = nullptr;
       }
       q.max_cycles = longest;
       detail::SweepAnswer a = detail::sweep(m_, options_, q);
@@ -270,14 +283,17 @@ class GroupRun {
   // of a stretch, one checklist step per cycle. The run without the repeats
   // is adopted when it still witnesses the objective.
   bool adopt(Draft& d, std::vector<model::CycleInput> inputs, std::size_t target, const std::string& method) {
-    std::vector<model::CycleInput> once = inputs;
-    bool changed = false;
-    for (std::size_t k = once.size(); k-- > 1;) {
-      if (once[k].commands.empty() || !same_commands(inputs[k].commands, inputs[k - 1].commands)) continue;
-      once[k].commands.clear();
-      changed = true;
+    bool repeats = false;
+    for (std::size_t k = inputs.size(); k-- > 1 && !repeats;)
+      repeats = !inputs[k].commands.empty() && same_commands(inputs[k].commands, inputs[k - 1].commands);
+    if (repeats) {
+      // A copy only then: an 8 h test's inputs are 576,000 cycles.
+      std::vector<model::CycleInput> once = inputs;
+      for (std::size_t k = once.size(); k-- > 1;)
+        if (!once[k].commands.empty() && same_commands(inputs[k].commands, inputs[k - 1].commands))
+          once[k].commands.clear();
+      if (adopt_run(d, std::move(once), target, method)) return true;
     }
-    if (changed && adopt_run(d, std::move(once), target, method)) return true;
     return adopt_run(d, std::move(inputs), target, method);
   }
 
@@ -290,32 +306,49 @@ class GroupRun {
     return true;
   }
 
-  // Replays `inputs` and marks what they witness; false when `target` is not witnessed.
+  // Replays `inputs` and marks what they witness; false when `target` is not
+  // witnessed. The run is judged as the runtime steps it, each objective of
+  // the group still open by the concrete evaluator streamed cycle by cycle
+  // (properties::StreamEvaluator): a test keeps its inputs only, never a
+  // trace, so what generating it holds is its inputs (an 8 h test: 576,000
+  // cycles), not their observables as well.
   bool adopt_run(Draft& d, std::vector<model::CycleInput> inputs, std::size_t target, const std::string& method) {
     if (!fits(inputs.size())) return false;
-    checker::ConcreteTrace t = checker::run_on_runtime(m_, inputs);
-    properties::Trace trace;
-    trace.reserve(t.inputs.size());
-    // The run is judged and dropped: a test keeps its inputs only, so what
-    // generating it holds is bounded by one test (its run is made again
-    // when the suite is written).
-    for (std::size_t k = 0; k < t.inputs.size(); ++k)
-      trace.push_back({std::move(t.inputs[k]), std::move(t.observables[k])});
-    t = checker::ConcreteTrace{};
-    properties::Evaluator ev(m_);
-    auto witness = [&](std::size_t i) -> std::optional<std::size_t> {
-      auto e = ev.evaluate(file_.properties[i], file_.assumptions, trace);
+    std::vector<std::size_t> open;
+    std::vector<properties::StreamEvaluator> judges;
+    for (std::size_t i : members_) {
+      const ObjectiveStatus st = results_[i].status;
+      if (i != target && (st == ObjectiveStatus::Covered || st == ObjectiveStatus::Infeasible)) continue;
+      open.push_back(i);
+      judges.emplace_back(m_, file_.properties[i], file_.assumptions);
+    }
+    runtime::Runtime rt(m_);
+    std::vector<int> obs;
+    for (const auto& in : inputs) {
+      rt.step(in);
+      rt.snapshot(obs);
+      bool all_final = true;
+      for (auto& j : judges)
+        if (!j.final()) {
+          j.step(in, obs);
+          all_final = all_final && j.final();
+        }
+      if (all_final) break;
+    }
+    auto witness = [&](std::size_t k) -> std::optional<std::size_t> {
+      const properties::Evaluation& e = judges[k].result();
       if (e.holds && e.cycle) return *e.cycle;
       return std::nullopt;
     };
-    auto w = witness(target);
-    if (!w) return false;
+    const std::size_t t = static_cast<std::size_t>(std::find(open.begin(), open.end(), target) - open.begin());
+    if (!witness(t)) return false;
     d.simulates = forces(inputs);
     d.inputs = std::move(inputs);
-    for (std::size_t i : members_) {
+    for (std::size_t k = 0; k < open.size(); ++k) {
+      const std::size_t i = open[k];
       ObjectiveResult& r = results_[i];
       if (r.status == ObjectiveStatus::Covered || r.status == ObjectiveStatus::Infeasible) continue;
-      auto c = i == target ? w : witness(i);
+      auto c = witness(k);
       if (!c) continue;
       r.status = ObjectiveStatus::Covered;
       r.test = -1;  // numbered when the suite is assembled
@@ -334,8 +367,7 @@ class GroupRun {
     eg.roots = merge(d.roots, g.roots);
     SearchResult r = search_.find(eg, d.inputs, options_.objective_work / 2);
     if (r.kind != SearchResult::Kind::Found) return false;
-    std::vector<model::CycleInput> all = d.inputs;
-    all.insert(all.end(), r.cycles.begin(), r.cycles.end());
+    std::vector<model::CycleInput> all = joined(d.inputs, std::move(r.cycles));
     if (!adopt(d, std::move(all), i, r.method)) return false;
     d.roots = eg.roots;
     return true;
@@ -351,45 +383,49 @@ class GroupRun {
     if (room(i)) {
       Draft& d = drafts_.back();
       SearchResult r = detail::explore(m_, g, d.inputs, seed);
-      if (r.kind == SearchResult::Kind::Found) {
-        for (auto& [cycles, method] : completions(g, d.inputs, r)) {
-          std::vector<model::CycleInput> all = d.inputs;
-          all.insert(all.end(), cycles.begin(), cycles.end());
-          if (adopt(d, std::move(all), i, method)) return true;
-        }
-      }
+      if (r.kind == SearchResult::Kind::Found &&
+          complete(g, d.inputs, r, [&](std::vector<model::CycleInput> cycles, const std::string& method) {
+            return adopt(d, joined(d.inputs, std::move(cycles)), i, method);
+          }))
+        return true;
     }
     SearchResult r = detail::explore(m_, g, {}, seed + 1);
     if (r.kind != SearchResult::Kind::Found) return false;
-    for (auto& [cycles, method] : completions(g, {}, r)) {
+    return complete(g, {}, r, [&](std::vector<model::CycleInput> cycles, const std::string& method) {
       SearchResult s;
       s.kind = SearchResult::Kind::Found;
       s.cycles = std::move(cycles);
       s.method = method;
-      if (start(i, g, s)) return true;
-    }
-    return false;
+      return start(i, g, s);
+    });
   }
 
-  // The simulated run with its last cycles found again by BMC from the state
-  // shortly before the witness, then the simulated run itself.
-  std::vector<std::pair<std::vector<model::CycleInput>, std::string>> completions(
-      const Goal& g, const std::vector<model::CycleInput>& prefix, const SearchResult& r) {
+  // Offers `take` the simulated run with its last cycles found again by BMC
+  // from the state shortly before the witness, then the simulated run
+  // itself, until it takes one. One candidate at a time: a run of an 8 h
+  // test is 576,000 cycles of inputs.
+  bool complete(const Goal& g, const std::vector<model::CycleInput>& prefix, SearchResult& r,
+                const std::function<bool(std::vector<model::CycleInput>, const std::string&)>& take) {
     constexpr std::size_t kTail = 3;
-    std::vector<std::pair<std::vector<model::CycleInput>, std::string>> out;
     const std::size_t keep = r.cycles.size() > kTail ? r.cycles.size() - kTail : 0;
     if (!prefix.empty() || keep > 0) {
-      std::vector<model::CycleInput> head = prefix;
-      head.insert(head.end(), r.cycles.begin(), r.cycles.begin() + static_cast<long>(keep));
-      SearchResult b = search_.find(g, head, options_.objective_work / 4);
+      SearchResult b;
+      {
+        std::vector<model::CycleInput> head;
+        head.reserve(prefix.size() + keep);
+        head = prefix;
+        head.insert(head.end(), r.cycles.begin(), r.cycles.begin() + static_cast<long>(keep));
+        b = search_.find(g, head, options_.objective_work / 4);
+      }
       if (b.kind == SearchResult::Kind::Found) {
-        std::vector<model::CycleInput> cycles(r.cycles.begin(), r.cycles.begin() + static_cast<long>(keep));
+        std::vector<model::CycleInput> cycles;
+        cycles.reserve(keep + b.cycles.size());
+        cycles.assign(r.cycles.begin(), r.cycles.begin() + static_cast<long>(keep));
         cycles.insert(cycles.end(), b.cycles.begin(), b.cycles.end());
-        out.push_back({std::move(cycles), "simulation+" + b.method});
+        if (take(std::move(cycles), "simulation+" + b.method)) return true;
       }
     }
-    out.push_back({r.cycles, "simulation"});
-    return out;
+    return take(std::move(r.cycles), "simulation");
   }
 
   bool start(std::size_t i, const Goal& g, const SearchResult& r) {
@@ -490,9 +526,9 @@ TestSuite generate_tests(const model::Matrix& m, const TestgenOptions& options) 
     std::vector<detail::Checkpoint> cps{{last, {g.description}, {g.key}}};
     t.checkpoints = {last};
     t.inputs = g.inputs;
-    const checker::ConcreteTrace run = checker::run_on_runtime(m, g.inputs);
-    t.scenario_json = detail::test_scenario_json(m, options.matrix_ref, t.description, g.inputs, run.observables,
-                                                 cps, t.steps, t.field_steps);
+    t.scenario_json = detail::test_scenario_json(m, options.matrix_ref, t.description, g.inputs,
+                                                 detail::snapshots_at(m, g.inputs, t.checkpoints), cps, t.steps,
+                                                 t.field_steps);
     suite.total_steps += t.steps;
     suite.total_cycles += t.inputs.size();
     suite.tests.push_back(std::move(t));
@@ -530,9 +566,9 @@ TestSuite generate_tests(const model::Matrix& m, const TestgenOptions& options) 
         t.objectives.push_back(r.objective.id);
       }
       for (const auto& c : cps) t.checkpoints.push_back(c.cycle);
-      const checker::ConcreteTrace run = checker::run_on_runtime(m, dr.inputs);
       t.scenario_json = detail::test_scenario_json(m, options.matrix_ref, t.description, dr.inputs,
-                                                   run.observables, cps, t.steps, t.field_steps);
+                                                   detail::snapshots_at(m, dr.inputs, t.checkpoints), cps, t.steps,
+                                                   t.field_steps);
       t.inputs = std::move(dr.inputs);
       suite.total_steps += t.steps;
       suite.total_cycles += t.inputs.size();

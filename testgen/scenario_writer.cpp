@@ -5,6 +5,7 @@
 
 #include "formats/scenario_writer.hpp"
 #include "model/text.hpp"
+#include "runtime/runtime.hpp"
 #include "testgen/phrases.hpp"
 
 namespace cemv::testgen::detail {
@@ -41,9 +42,21 @@ std::vector<model::Observable> field_observables(const model::Matrix& m) {
   return out;
 }
 
+std::map<std::size_t, std::vector<int>> snapshots_at(const model::Matrix& m, const std::vector<model::CycleInput>& inputs,
+                                                     const std::vector<std::size_t>& cycles) {
+  std::map<std::size_t, std::vector<int>> out;
+  for (std::size_t c : cycles) out[c];
+  runtime::Runtime rt(m);
+  for (std::size_t k = 0; k < inputs.size() && !out.empty() && k <= out.rbegin()->first; ++k) {
+    rt.step(inputs[k]);
+    if (auto it = out.find(k); it != out.end()) rt.snapshot(it->second);
+  }
+  return out;
+}
+
 std::string test_scenario_json(const model::Matrix& m, const std::string& matrix_ref, const std::string& description,
                                const std::vector<model::CycleInput>& inputs,
-                               const std::vector<std::vector<int>>& observables,
+                               const std::map<std::size_t, std::vector<int>>& snapshots,
                                const std::vector<Checkpoint>& checkpoints, std::size_t& steps,
                                std::vector<FieldStep>& field) {
   const model::InputTable table(m);
@@ -90,17 +103,18 @@ std::string test_scenario_json(const model::Matrix& m, const std::string& matrix
     const std::size_t last = k + n - 1;
     fs.ms = static_cast<std::uint64_t>(n) * m.cycle_ms;
     if (auto cp = at.find(last); cp != at.end()) {
+      const std::vector<int>& after = snapshots.at(last);
       std::set<std::string> phrased;
       auto say = [&](std::size_t i) {
-        if (phrased.insert(all[i].key).second) fs.expected.push_back(phrase_observation(m, all[i], observables[last][i]));
+        if (phrased.insert(all[i].key).second) fs.expected.push_back(phrase_observation(m, all[i], after[i]));
       };
       for (const auto& key : cp->second->observe)
         if (index.count(key)) say(index.at(key));
       for (const auto& o : shown) {
         std::size_t i = index.at(o.key);
-        if (observables[last][i] != seen[i]) say(i);
+        if (after[i] != seen[i]) say(i);
       }
-      seen = observables[last];
+      seen = after;
       std::string d;
       for (const auto& x : cp->second->descriptions) d += (d.empty() ? "" : "; ") + x;
       fs.covers = d;
@@ -108,7 +122,7 @@ std::string test_scenario_json(const model::Matrix& m, const std::string& matrix
       std::vector<formats::ExpectedValue> e;
       std::set<std::string> done;
       auto put = [&](const model::Observable& o) {
-        if (done.insert(o.key).second) e.push_back({key_of(o), o.type, observables[last][index.at(o.key)]});
+        if (done.insert(o.key).second) e.push_back({key_of(o), o.type, after[index.at(o.key)]});
       };
       for (const auto& key : cp->second->observe)
         if (index.count(key)) put(all[index.at(key)]);

@@ -7,6 +7,7 @@
 // objectives witnessed. Durations are written in ms.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -33,11 +34,16 @@ std::vector<model::Observable> field_observables(const model::Matrix& m);
 // hours is one step ("Wait 8 h"), however many cycles it spans.
 std::size_t count_steps(const std::vector<model::CycleInput>& inputs, const std::vector<std::size_t>& checkpoints);
 
-// `observables`: the runtime's snapshot (model::observables order) per cycle.
-// Returns the file text and the number of steps.
+// The runtime's snapshots (model::observables order) after the given cycles
+// of a run: what a test's checkpoints expect, without the run's trace.
+std::map<std::size_t, std::vector<int>> snapshots_at(const model::Matrix& m, const std::vector<model::CycleInput>& inputs,
+                                                     const std::vector<std::size_t>& cycles);
+
+// `snapshots`: snapshots_at the checkpoints' cycles. Returns the file text
+// and the number of steps.
 std::string test_scenario_json(const model::Matrix& m, const std::string& matrix_ref, const std::string& description,
                                const std::vector<model::CycleInput>& inputs,
-                               const std::vector<std::vector<int>>& observables,
+                               const std::map<std::size_t, std::vector<int>>& snapshots,
                                const std::vector<Checkpoint>& checkpoints, std::size_t& steps,
                                std::vector<FieldStep>& field);
 

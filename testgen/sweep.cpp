@@ -91,7 +91,7 @@ Built build(z3::context& ctx, const model::Matrix& m, const SweepQuestion& q, co
   std::vector<properties::Monitor> monitors;
   for (const properties::Property* p : q.targets) monitors.push_back(properties::compile_monitor(*enc, *p, q.file->assumptions));
   const z3::expr assumption = monitors.front().assumption && input_ranges(m, *enc, hold);
-  checker::start_after(*enc, q.prefix);
+  checker::start_after(*enc, q.prefix ? *q.prefix : std::vector<model::CycleInput>{});
   // Only the targets that share the first one's assumptions are asked: one
   // unrolling assumes one thing in every cycle.
   std::vector<bool> open(monitors.size());
@@ -129,7 +129,7 @@ SweepAnswer sweep_cycles(const model::Matrix& m, const TestgenOptions& options, 
   SweepAnswer out;
   checker::PooledContext pooled;
   z3::context& ctx = pooled;
-  const model::CycleInput hold = q.prefix.empty() ? model::default_cycle_input(m) : q.prefix.back();
+  const model::CycleInput hold = !q.prefix || q.prefix->empty() ? model::default_cycle_input(m) : q.prefix->back();
   const Built b = build(ctx, m, q, hold);
   const std::shared_ptr<encoder::Encoding>& enc = b.enc;
   const std::vector<properties::Monitor>& monitors = b.monitors;
@@ -195,7 +195,7 @@ SweepAnswer sweep_held(const model::Matrix& m, const TestgenOptions& options, co
   SweepAnswer out;
   checker::PooledContext pooled;
   z3::context& ctx = pooled;
-  const model::CycleInput hold = q.prefix.empty() ? model::default_cycle_input(m) : q.prefix.back();
+  const model::CycleInput hold = !q.prefix || q.prefix->empty() ? model::default_cycle_input(m) : q.prefix->back();
   const Built b = build(ctx, m, q, hold);
   const encoder::TransitionSystem& ts = b.enc->ts;
   // The stretches' facts: the cycle's constraints and the question's assumption.

@@ -30,7 +30,7 @@ struct SweepQuestion {
   const properties::PropertyFile* file = nullptr;
   std::vector<const properties::Property*> targets;  // catalogue order; all with the same assumptions
   std::vector<model::Node> roots;                     // the union of their cones
-  std::vector<model::CycleInput> prefix;              // the test extended (empty: from start-up)
+  const std::vector<model::CycleInput>* prefix = nullptr;  // the test extended (none: from start-up)
   int max_depth = 0;                                  // cycles (held: macro steps) added at most
   bool held = false;                                  // macro steps of held inputs (timers), else cycles
   std::int64_t max_cycles = 0;                        // held: cycles added at most

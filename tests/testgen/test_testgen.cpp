@@ -242,14 +242,22 @@ TEST(Explore, FindsLongDelayWitnesses) {
     const auto file = testgen::objectives_file(objs);
     const auto& p = file.properties[0];
     testgen::detail::Goal g{&file, &p, properties::property_roots(p, file.assumptions, m), objs[0].horizon};
-    const auto r = testgen::detail::explore(m, g, {}, 42);
-    ASSERT_EQ(r.kind, testgen::detail::SearchResult::Kind::Found) << id << ": " << r.reason;
-    const auto t = checker::run_on_runtime(m, r.cycles);
-    properties::Trace trace;
-    for (std::size_t k = 0; k < t.inputs.size(); ++k) trace.push_back({t.inputs[k], t.observables[k]});
-    const auto e = properties::Evaluator(m).evaluate(p, file.assumptions, trace);
-    ASSERT_TRUE(e.holds && e.cycle) << id;
-    EXPECT_EQ(*e.cycle + 1, r.cycles.size()) << id;
+    // From start-up, and after a prefix (the runtime and the evaluator
+    // continued from their copies after it): the witness is the run's last
+    // cycle on the whole trace, as the evaluator over whole traces judges it.
+    for (std::size_t prefix_cycles : {std::size_t{0}, std::size_t{37}}) {
+      const std::vector<model::CycleInput> prefix(prefix_cycles, model::default_cycle_input(m));
+      const auto r = testgen::detail::explore(m, g, prefix, 42);
+      ASSERT_EQ(r.kind, testgen::detail::SearchResult::Kind::Found) << id << ": " << r.reason;
+      std::vector<model::CycleInput> all = prefix;
+      all.insert(all.end(), r.cycles.begin(), r.cycles.end());
+      const auto t = checker::run_on_runtime(m, all);
+      properties::Trace trace;
+      for (std::size_t k = 0; k < t.inputs.size(); ++k) trace.push_back({t.inputs[k], t.observables[k]});
+      const auto e = properties::Evaluator(m).evaluate(p, file.assumptions, trace);
+      ASSERT_TRUE(e.holds && e.cycle) << id;
+      EXPECT_EQ(*e.cycle + 1, all.size()) << id << " after " << prefix_cycles;
+    }
   }
 }
 
@@ -293,7 +301,7 @@ TEST(Sweep, OneWitnessCoversSeveralObjectives) {
   EXPECT_EQ(again.cycles.size(), first.cycles.size());
   // Continued: the objectives the first run reached are no longer asked.
   testgen::detail::SweepQuestion next = q;
-  next.prefix = first.cycles;
+  next.prefix = &first.cycles;
   next.targets.clear();
   std::vector<std::size_t> index;
   for (std::size_t i = 0; i < file.properties.size(); ++i)
@@ -370,11 +378,15 @@ TEST(Generate, LongHoldsAreOneStep) {
   EXPECT_EQ(testgen::detail::count_steps(inputs, checkpoints), 3u + 1u);
   EXPECT_EQ(testgen::detail::count_steps(inputs, {}), 3u);
   const auto run = checker::run_on_runtime(m, inputs);
+  // The snapshots at the checkpoints are the runtime's after those cycles.
+  const auto snapshots = testgen::detail::snapshots_at(m, inputs, checkpoints);
+  ASSERT_EQ(snapshots.size(), 2u);
+  EXPECT_EQ(snapshots.at(5999), run.observables[5999]);
+  EXPECT_EQ(snapshots.at(9999), run.observables[9999]);
   std::vector<testgen::detail::Checkpoint> cps{{5999, {"a"}, {}}, {9999, {"b"}, {}}};
   std::size_t steps = 0;
   std::vector<testgen::FieldStep> field;
-  const std::string text =
-      testgen::detail::test_scenario_json(m, "", "hold", inputs, run.observables, cps, steps, field);
+  const std::string text = testgen::detail::test_scenario_json(m, "", "hold", inputs, snapshots, cps, steps, field);
   EXPECT_EQ(steps, 4u);
   EXPECT_EQ(field.size(), 4u);
   EXPECT_LT(text.size(), 20000u);
