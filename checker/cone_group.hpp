@@ -74,8 +74,11 @@ struct GroupEncoding {
 };
 // `guard_cells`: each removable cell behind an activation literal
 // (encoder::EncodeOptions::guard_cells), for the support's core query.
+// `reduce` false: no reduction (`reduced` and `goods` empty, `antecedents`
+// the unreduced terms), for a caller that needs only what the encoding
+// says of the cone.
 GroupEncoding encode_group(z3::context& ctx, const model::Matrix& m, const std::vector<GroupMember>& members,
-                           const CheckOptions& options, bool guard_cells = false);
+                           const CheckOptions& options, bool guard_cells = false, bool reduce = true);
 
 class ConeGroup {
  public:

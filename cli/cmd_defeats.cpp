@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cli/commands.hpp"
+#include "cli/evidence_inputs.hpp"
 #include "cli/matrix_input.hpp"
 #include "cli/output.hpp"
 #include "cli/path_analysis.hpp"
@@ -28,6 +29,7 @@ struct DefeatsArgs {
   std::string format = "text";
   std::string output = "-";
   std::string out_dir;
+  std::string response_file;
   double timeout_s = 0.0;
   double total_timeout_s = 0.0;
   int jobs = 1;
@@ -61,6 +63,7 @@ int run_defeats(const DefeatsArgs& a) {
   o.total_timeout_s = a.total_timeout_s;
   o.jobs = a.jobs;
   o.out_dir = a.out_dir;
+  if (!a.response_file.empty()) o.known_figures = read_response_figures(a.response_file, m);
   std::optional<defeats::DefeatsResult> analysed;
   try {
     analysed = run_path_analysis("cemv defeats", o, a.quiet, [&] { return defeats::analyse(m, o); });
@@ -95,6 +98,10 @@ void add_defeats_commands(CLI::App& app, Context& ctx) {
   cmd->add_option("-o,--output", a.output, "write the report to FILE ('-' = standard output)")->type_name("FILE");
   cmd->add_option("--out", a.out_dir, "folder for the counterexample scenarios of the sets (created if missing)")
       ->type_name("DIR");
+  cmd->add_option("--response", a.response_file,
+                  "take each path's trip requirement T from this `cemv response --format json` report of the "
+                  "same matrix instead of proving it again")
+      ->type_name("FILE");
   cmd->add_option("--timeout", a.timeout_s, "wall-clock limit per decided property, seconds (0 = none)")
       ->type_name("S");
   cmd->add_option("--total-timeout", a.total_timeout_s, "wall-clock limit of the whole run, seconds (0 = none)")

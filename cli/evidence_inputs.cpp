@@ -6,6 +6,7 @@
 #include "cli/matrix_input.hpp"
 #include "formats/diagnostics.hpp"
 #include "formats/matrix_json.hpp"
+#include "response/paths.hpp"
 
 namespace cemv::cli {
 
@@ -187,6 +188,47 @@ reports::DefeatFigures read_defeats(const std::string& file, const model::Matrix
     f.paths.push_back(std::move(row));
   }
   return f;
+}
+
+std::map<std::string, response::Figure> read_response_figures(const std::string& file, const model::Matrix& m) {
+  Doc d(file, "cemv-response/1", m, "schema", "matrix_signature");
+  std::map<std::string, std::string> keys;  // "1,2>3" -> the path's key
+  for (const auto& p : response::response_paths(m, {})) {
+    std::string k;
+    for (int c : p.causes) k += std::to_string(c) + ",";
+    keys[k + ">" + std::to_string(p.effect)] = p.key();
+  }
+  std::map<std::string, response::Figure> out;
+  const auto& paths = d.array(d.root(), "paths", "");
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    const std::string at = formats::element_path("paths", i);
+    const auto& p = d.object(paths[i], at);
+    std::string k;
+    for (const auto& c : d.array(p, "causes", at)) {
+      if (!c.is_number_integer()) d.fail(at + ".causes", "expected whole numbers");
+      k += std::to_string(c.get<long long>()) + ",";
+    }
+    k += ">" + std::to_string(d.num(p, "effect", at));
+    const auto key = keys.find(k);
+    if (key == keys.end()) d.fail(at, "no path of the matrix has these causes and this effect");
+    const auto& t = d.member(p, "logic_cycles", at);
+    const std::string verdict = d.str(p, "verdict", at);
+    response::Figure f;
+    if (t.is_number_integer() && t.get<long long>() >= 0) {
+      f.kind = response::Figure::Kind::Exact;
+      f.cycles = t.get<long long>();
+    } else if (!t.is_null()) {
+      d.fail(formats::member_path(at, "logic_cycles"), "expected a whole number of cycles or null");
+    } else if (verdict == "unbounded") {
+      f.kind = response::Figure::Kind::Unbounded;
+    } else {
+      continue;  // unknown there: decided again
+    }
+    f.counterexample = d.text(p, "counterexample");
+    f.method = "cemv response (" + input_name(file) + ")";
+    out[key->second] = f;
+  }
+  return out;
 }
 
 }  // namespace cemv::cli

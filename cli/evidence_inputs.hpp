@@ -6,10 +6,12 @@
 // refused: the report ties every figure to the one matrix it names.
 #pragma once
 
+#include <map>
 #include <string>
 
 #include "model/matrix.hpp"
 #include "reports/evidence.hpp"
+#include "response/search.hpp"
 
 namespace cemv::cli {
 
@@ -19,5 +21,11 @@ reports::CoverageFigures read_coverage(const std::string& file, const model::Mat
 reports::MutationFigures read_mutation(const std::string& file, const model::Matrix& m);
 // The minimal defeat sets of `cemv defeats --format json` (cemv-defeats/1, docs/defeats.md).
 reports::DefeatFigures read_defeats(const std::string& file, const model::Matrix& m);
+
+// The logic figures of `cemv response --format json` (cemv-response/1,
+// docs/response-time.md) by path key, for `cemv defeats --response`: the
+// exact and unbounded ones (an unknown figure is left out, to be decided
+// again). A path the matrix does not have is refused.
+std::map<std::string, response::Figure> read_response_figures(const std::string& file, const model::Matrix& m);
 
 }  // namespace cemv::cli

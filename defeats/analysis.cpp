@@ -50,6 +50,7 @@ DefeatsResult analyse(const model::Matrix& m, const DefeatsOptions& o) {
   ro.total_timeout_s = o.total_timeout_s;
   ro.work = o.work;
   ro.jobs = o.jobs;
+  ro.known = o.known_figures;
   ro.degraded = false;  // the requirement is the normal figure T; the degraded one is never read here
   const response::ResponseResult times = response::analyse(m, ro);
 

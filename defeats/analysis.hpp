@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -15,6 +16,7 @@
 #include "defeats/actions.hpp"
 #include "model/matrix.hpp"
 #include "response/paths.hpp"
+#include "response/search.hpp"
 
 namespace cemv::defeats {
 
@@ -36,6 +38,10 @@ struct DefeatsOptions {
   int jobs = 1;                  // paths decided in parallel
   std::string out_dir;           // counterexample scenarios ("" = none written)
   Enumeration enumeration = Enumeration::LevelsOnEncoding;
+  // The logic figures of an earlier `cemv response` of the same matrix
+  // (--response FILE), by path key: each path's requirement T is taken from
+  // them instead of being proved again (response::ResponseOptions::known).
+  std::map<std::string, response::Figure> known_figures;
   // Progress (serialised): the number of paths, then each path's key as it
   // starts and ends.
   std::function<void(std::size_t paths)> on_plan;

@@ -104,7 +104,8 @@ ResponseResult analyse(const model::Matrix& m, const ResponseOptions& o) {
   };
   checker::WorkQueue(o.jobs, cancel).run(unique.size(), [&](std::size_t i) {
     report(o.on_start, i);
-    figures[i].logic = least_response(m, *unique[i], Mode::Normal, so);
+    const auto given = o.known.find(unique[i]->key());
+    figures[i].logic = given != o.known.end() ? given->second : least_response(m, *unique[i], Mode::Normal, so);
     if (o.degraded && !unique[i]->voted.empty())
       figures[i].degraded = least_response(m, *unique[i], Mode::Degraded, so);
     if (cancel.cancelled()) {

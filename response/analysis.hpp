@@ -5,6 +5,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,6 +28,11 @@ struct ResponseOptions {
   // T (cemv defeats); PathResult::degraded is then empty.
   bool degraded = true;
   std::string out_dir;        // counterexample scenarios ("" = none written)
+  // Normal figures the caller already has, by path key (Path::key): the
+  // exact or unbounded figures of an earlier `cemv response` of the same
+  // matrix (cemv defeats --response). Those paths' normal figures are taken
+  // as given, not decided again; every other figure is decided.
+  std::map<std::string, Figure> known;
   // The command line's progress line (serialised, from any worker thread):
   // once with the number of paths to decide (a path in several groups is
   // decided once), then when each path's figures start and are done, with

@@ -45,3 +45,13 @@ if(TARGET cemv_defeats)
   cemv_cli_test(NAME defeats_cli_evidence_refuses_other_matrix EXIT 2 MATCH "regenerate them"
     COMMAND $<TARGET_FILE:cemv> evidence examples/tank-overfill/matrix.json --defeats examples/compressor/defeats.json --out ${CMAKE_CURRENT_BINARY_DIR}/refused.html)
 endif()
+# --response: each path's T taken from cemv response's report of the same
+# matrix gives the same report, byte for byte, as proving it again; a report
+# of another matrix is refused (exit 2).
+if(TARGET cemv_defeats AND TARGET cemv_response)
+  set(_r ${CMAKE_CURRENT_BINARY_DIR}/defeats_cli_response)
+  cemv_cli_test(NAME defeats_cli_response_same_report EXIT 0 MATCH "same report"
+    COMMAND bash -c "mkdir -p ${_r} && $<TARGET_FILE:cemv> response tests/defeats/through_override.json --format json -o ${_r}/r.json && $<TARGET_FILE:cemv> defeats tests/defeats/through_override.json --format json -o ${_r}/again.json && $<TARGET_FILE:cemv> defeats tests/defeats/through_override.json --response ${_r}/r.json --format json -o ${_r}/given.json && cmp ${_r}/again.json ${_r}/given.json && echo same report")
+  cemv_cli_test(NAME defeats_cli_response_other_matrix EXIT 2 MATCH "matrix_signature: these results are for the matrix with signature"
+    COMMAND bash -c "mkdir -p ${_r} && ($<TARGET_FILE:cemv> response examples/tank-overfill/matrix.json --sif 1 --format json -o ${_r}/tank.json || true) && $<TARGET_FILE:cemv> defeats tests/defeats/through_override.json --response ${_r}/tank.json")
+endif()

@@ -886,3 +886,38 @@ TEST(ResponseProperty, PrintsAsItsTree) {
   }
   EXPECT_GT(paths, 40);
 }
+
+namespace {
+// ResponseOptions::known (cemv defeats --response): the figures a caller
+// gives are taken as given, with no probe, and the others are decided as
+// without them; given the figures of an earlier run, every path's figures
+// and verdict are that run's.
+TEST(Response, KnownFiguresAreTakenAsGiven) {
+  auto m = formats::load_matrix(std::filesystem::path(CEMV_SOURCE_DIR) / "examples/tank-overfill/matrix.json");
+  response::ResponseOptions o;
+  o.degraded = false;
+  const auto first = response::analyse(m, o);
+  ASSERT_GT(first.paths.size(), 1u);
+  response::ResponseOptions again = o;
+  for (const auto& p : first.paths) again.known[p.path.key()] = p.logic;
+  const auto second = response::analyse(m, again);
+  ASSERT_EQ(second.paths.size(), first.paths.size());
+  for (std::size_t i = 0; i < first.paths.size(); ++i) {
+    EXPECT_EQ(second.paths[i].logic.kind, first.paths[i].logic.kind) << first.paths[i].path.key();
+    EXPECT_EQ(second.paths[i].logic.cycles, first.paths[i].logic.cycles) << first.paths[i].path.key();
+    EXPECT_EQ(second.paths[i].verdict, first.paths[i].verdict) << first.paths[i].path.key();
+  }
+  // One path given a figure no probe would find: it is reported as given,
+  // and the path beside it is decided as before.
+  response::ResponseOptions one = o;
+  Figure given;
+  given.kind = Figure::Kind::Exact;
+  given.cycles = 12345;
+  one.known[first.paths[0].path.key()] = given;
+  const auto third = response::analyse(m, one);
+  EXPECT_EQ(third.paths[0].logic.cycles, 12345);
+  EXPECT_EQ(third.paths[0].logic.probes, 0);
+  EXPECT_EQ(third.paths[1].logic.cycles, first.paths[1].logic.cycles);
+  EXPECT_GT(third.paths[1].logic.probes, 0);
+}
+}  // namespace
