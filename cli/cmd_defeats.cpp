@@ -5,6 +5,7 @@
 // --require-distance gate, 2 bad input, 3 some path incomplete, 4 internal
 // error.
 #include <iostream>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -15,6 +16,7 @@
 #include "cli/output.hpp"
 #include "cli/path_analysis.hpp"
 #include "defeats/analysis.hpp"
+#include "response/paths.hpp"
 #include "defeats/report.hpp"
 
 namespace cemv::cli {
@@ -63,7 +65,15 @@ int run_defeats(const DefeatsArgs& a) {
   o.total_timeout_s = a.total_timeout_s;
   o.jobs = a.jobs;
   o.out_dir = a.out_dir;
-  if (!a.response_file.empty()) o.known_figures = read_response_figures(a.response_file, m);
+  if (!a.response_file.empty()) {
+    std::map<std::string, std::string> keys;  // "1,2>3" -> the path's key
+    for (const auto& p : response::response_paths(m, {})) {
+      std::string k;
+      for (int c : p.causes) k += std::to_string(c) + ",";
+      keys[k + ">" + std::to_string(p.effect)] = p.key();
+    }
+    o.known_figures = read_response_figures(a.response_file, m, keys);
+  }
   std::optional<defeats::DefeatsResult> analysed;
   try {
     analysed = run_path_analysis("cemv defeats", o, a.quiet, [&] { return defeats::analyse(m, o); });

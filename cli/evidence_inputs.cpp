@@ -190,14 +190,9 @@ reports::DefeatFigures read_defeats(const std::string& file, const model::Matrix
   return f;
 }
 
-std::map<std::string, response::Figure> read_response_figures(const std::string& file, const model::Matrix& m) {
+std::map<std::string, response::Figure> read_response_figures(const std::string& file, const model::Matrix& m,
+                                                              const std::map<std::string, std::string>& keys) {
   Doc d(file, "cemv-response/1", m, "schema", "matrix_signature");
-  std::map<std::string, std::string> keys;  // "1,2>3" -> the path's key
-  for (const auto& p : response::response_paths(m, {})) {
-    std::string k;
-    for (int c : p.causes) k += std::to_string(c) + ",";
-    keys[k + ">" + std::to_string(p.effect)] = p.key();
-  }
   std::map<std::string, response::Figure> out;
   const auto& paths = d.array(d.root(), "paths", "");
   for (std::size_t i = 0; i < paths.size(); ++i) {

@@ -25,7 +25,9 @@ reports::DefeatFigures read_defeats(const std::string& file, const model::Matrix
 // The logic figures of `cemv response --format json` (cemv-response/1,
 // docs/response-time.md) by path key, for `cemv defeats --response`: the
 // exact and unbounded ones (an unknown figure is left out, to be decided
-// again). A path the matrix does not have is refused.
-std::map<std::string, response::Figure> read_response_figures(const std::string& file, const model::Matrix& m);
+// again). `keys` names the matrix's paths: "1,2>3" (trigger causes, effect)
+// to the path's key; a path not among them is refused.
+std::map<std::string, response::Figure> read_response_figures(const std::string& file, const model::Matrix& m,
+                                                              const std::map<std::string, std::string>& keys);
 
 }  // namespace cemv::cli
