@@ -12,6 +12,19 @@ namespace cemv::formats::csv_records {
 using namespace csv_text;
 using model::in_quotes;
 
+namespace {
+
+// Sets a time of the element with `id`; false when the matrix has none.
+template <typename Element>
+bool set_time(std::vector<Element>& elements, int id, std::uint32_t Element::*time, std::uint32_t ms) {
+  bool found = false;
+  for (auto& x : elements)
+    if (x.id == id) x.*time = ms, found = true;
+  return found;
+}
+
+}  // namespace
+
 void PropertyRecords::read(const Row& row) {
   auto key_field = fields_.cell(row, "key");
   const std::string key = std::string(trim(key_field.text));
@@ -98,20 +111,14 @@ void PropertyRecords::finish_timing() {
         else if (t.ms == 0) fields_.error(t.line, t.column, "a process safety time must be positive");
         else m_.process_safety_time_ms[t.id] = t.ms;
         break;
-      case TimingKey::SensorTime: {
-        bool found = false;
-        for (auto& c : m_.causes)
-          if (c.id == t.id) c.sensor_ms = t.ms, found = true;
-        if (!found) fields_.error(t.line, t.column, "no cause " + std::to_string(t.id));
+      case TimingKey::SensorTime:
+        if (!set_time(m_.causes, t.id, &model::Cause::sensor_ms, t.ms))
+          fields_.error(t.line, t.column, "no cause " + std::to_string(t.id));
         break;
-      }
-      case TimingKey::ActuatorTime: {
-        bool found = false;
-        for (auto& e : m_.effects)
-          if (e.id == t.id) e.actuator_ms = t.ms, found = true;
-        if (!found) fields_.error(t.line, t.column, "no effect " + std::to_string(t.id));
+      case TimingKey::ActuatorTime:
+        if (!set_time(m_.effects, t.id, &model::Effect::actuator_ms, t.ms))
+          fields_.error(t.line, t.column, "no effect " + std::to_string(t.id));
         break;
-      }
     }
   }
 }
