@@ -185,6 +185,123 @@ reports::PlcFigures plc_figures(const PlcProgram& p, const plc_check::PlcCheckRe
 }
 #endif
 
+// The property files (parsed only for a valid matrix) and the standard set;
+// the report lists each file with its hash.
+std::vector<properties::PropertyFile> read_property_files(const EvidenceArgs& a, const model::Matrix& m, bool valid,
+                                                          reports::EvidenceInputs& in) {
+  std::vector<properties::PropertyFile> files;
+  const model::InputTable inputs(m);
+  for (const auto& f : a.property_files) {
+    const std::string text = read_input(f);
+    reports::PropertyFileInfo info{input_name(f), formats::sha256_hex(text), 0, {}, {}};
+    if (valid) {
+      files.push_back(properties::parse_properties(text, m, input_name(f)));
+      info.properties = files.back().properties.size();
+      for (const auto& as : files.back().assumptions) info.assumptions.push_back("assume " + properties::to_text(as.expr, inputs));
+      info.warnings = files.back().warnings;
+    }
+    in.property_files.push_back(std::move(info));
+  }
+  if (valid && a.standard) files.push_back(properties::standard_properties(m));
+  properties::check_distinct_names(files);  // reports and counterexample files are named after them
+  if (!a.quiet)
+    for (const auto& f : files)
+      for (const auto& w : f.warnings) std::cerr << w << "\n";
+  return files;
+}
+
+// The formal text of every property, as the report prints it.
+void add_property_texts(const model::Matrix& m, const std::vector<properties::PropertyFile>& files,
+                        reports::EvidenceInputs& in) {
+  const model::InputTable inputs(m);
+  for (const auto& f : files)
+    for (const auto& p : f.properties) {
+      reports::PropertyText t{f.file_name, p.name, properties::statement_text(p, inputs), {}};
+      for (const auto& as : f.assumptions)
+        t.assumptions.push_back("assume " + properties::to_text(as.expr, inputs) + " (every property of the file)");
+      for (const auto& as : p.assumptions) t.assumptions.push_back("assume " + properties::to_text(as.expr, inputs));
+      in.texts.push_back(std::move(t));
+    }
+}
+
+// The records other commands wrote: coverage, the signed acceptance record
+// (of this matrix version only), mutation and defeat sets.
+void read_records(const EvidenceArgs& a, const model::Matrix& m, bool valid, reports::EvidenceInputs& in) {
+  if (!a.coverage_file.empty()) in.coverage = read_coverage(a.coverage_file, m);
+  if (!a.acceptance_file.empty()) {
+    in.acceptance = formats::read_acceptance(read_input(a.acceptance_file), input_name(a.acceptance_file));
+    in.acceptance_file = input_name(a.acceptance_file);
+    if (in.acceptance->signature != formats::signature(m))
+      throw formats::LoadError({{input_name(a.acceptance_file),
+                                 "the acceptance record is for the matrix with signature " + in.acceptance->signature +
+                                     ", not " + formats::signature(m) + " (record the checklists of this version)"}});
+  }
+  if (!a.mutation_file.empty()) in.mutation = read_mutation(a.mutation_file, m);
+  if (!a.defeats_file.empty() && valid) in.defeats = read_defeats(a.defeats_file, m);
+}
+
+checker::CheckOptions check_options(const EvidenceArgs& a, checker::CancelToken& cancel) {
+  checker::CheckOptions options;
+  options.property_timeout_s = a.timeout_s;
+  options.cancel = &cancel;
+  options.support_mode = a.support == "full"  ? checker::SupportMode::Full
+                         : a.support == "off" ? checker::SupportMode::Off
+                                              : checker::SupportMode::Core;
+  options.jobs = a.jobs;
+  options.standard = a.standard;
+  return options;
+}
+
+// What is left of --total-timeout, for a later phase (0: no bound).
+double seconds_left(const EvidenceArgs& a, checker::Clock::time_point deadline) {
+  if (a.total_timeout_s <= 0) return 0.0;
+  return std::max(1e-3, std::chrono::duration<double>(deadline - checker::Clock::now()).count());
+}
+
+#ifdef CEMV_WITH_RESPONSE
+// The response time of every SIF path; true when the time limit cut it short.
+bool add_response(const EvidenceArgs& a, const model::Matrix& m, checker::Clock::time_point deadline,
+                  Progress& progress, reports::EvidenceInputs& in) {
+  progress.phase("cemv evidence: response time", response::response_paths(m, {}).size(), "paths");
+  progress.started("every SIF path");
+  response::ResponseOptions ro;
+  ro.timeout_s = a.timeout_s;
+  ro.total_timeout_s = seconds_left(a, deadline);
+  ro.jobs = a.jobs;
+  const response::ResponseResult rr = response::analyse(m, ro);
+  in.response = response_figures(m, rr);
+  return rr.interrupted;
+}
+#endif
+
+#ifdef CEMV_WITH_PLC
+// The PLC program's chapter: every output decided as `cemv plc-check` does;
+// true when the time limit cut it short.
+bool add_plc(const EvidenceArgs& a, const model::Matrix& m, const PlcProgram& program,
+             checker::Clock::time_point deadline, Progress& progress, reports::EvidenceInputs& in) {
+  progress.phase("cemv evidence: PLC program", 1, "programs");
+  progress.started(program.pou);
+  plc_check::PlcCheckReport r;
+  r.program_file = program.file;
+  r.program_sha256 = program.sha256;
+  r.pou = program.pou;
+  r.map = program.map;
+  r.map_source = program.map_source;
+  const plc::Pou& pou = *plc::find_pou(program.program, program.pou);
+  decide_outputs(m, program.program, pou, r, a.timeout_s, seconds_left(a, deadline), a.jobs);
+  in.plc = plc_figures(program, r);
+  return r.interrupted;
+}
+#endif
+
+void print_summary(const EvidenceArgs& a, const model::Matrix& m, bool valid, const reports::EvidenceInputs& in) {
+  std::cout << "cemv evidence: " << m.name << ": "
+            << (valid ? std::to_string(in.check.properties.size()) +
+                            (in.check.properties.size() == 1 ? " property" : " properties")
+                      : std::string("validation errors, nothing checked"))
+            << "; wrote " << a.out_file << (a.json_file.empty() ? "" : " and " + a.json_file) << "\n";
+}
+
 int run_evidence(const EvidenceArgs& a) {
   if (a.jobs < 1) throw BadArguments("--jobs must be at least 1");
   if (a.timeout_s < 0 || a.total_timeout_s < 0) throw BadArguments("time limits must not be negative");
@@ -209,44 +326,9 @@ int run_evidence(const EvidenceArgs& a) {
   in.validation = model::validate(m);
   in.date = date;
   const bool valid = !model::has_errors(in.validation);
-  std::vector<properties::PropertyFile> files;
-  const model::InputTable inputs(m);
-  for (const auto& f : a.property_files) {
-    const std::string text = read_input(f);
-    reports::PropertyFileInfo info{input_name(f), formats::sha256_hex(text), 0, {}, {}};
-    if (valid) {
-      files.push_back(properties::parse_properties(text, m, input_name(f)));
-      info.properties = files.back().properties.size();
-      for (const auto& as : files.back().assumptions) info.assumptions.push_back("assume " + properties::to_text(as.expr, inputs));
-      info.warnings = files.back().warnings;
-    }
-    in.property_files.push_back(std::move(info));
-  }
-  if (valid && a.standard) files.push_back(properties::standard_properties(m));
-  properties::check_distinct_names(files);  // reports and counterexample files are named after them
-  if (!a.quiet)
-    for (const auto& f : files)
-      for (const auto& w : f.warnings) std::cerr << w << "\n";
-  // The formal text of every property, as the report prints it.
-  for (const auto& f : files)
-    for (const auto& p : f.properties) {
-      reports::PropertyText t{f.file_name, p.name, properties::statement_text(p, inputs), {}};
-      for (const auto& as : f.assumptions)
-        t.assumptions.push_back("assume " + properties::to_text(as.expr, inputs) + " (every property of the file)");
-      for (const auto& as : p.assumptions) t.assumptions.push_back("assume " + properties::to_text(as.expr, inputs));
-      in.texts.push_back(std::move(t));
-    }
-  if (!a.coverage_file.empty()) in.coverage = read_coverage(a.coverage_file, m);
-  if (!a.acceptance_file.empty()) {
-    in.acceptance = formats::read_acceptance(read_input(a.acceptance_file), input_name(a.acceptance_file));
-    in.acceptance_file = input_name(a.acceptance_file);
-    if (in.acceptance->signature != formats::signature(m))
-      throw formats::LoadError({{input_name(a.acceptance_file),
-                                 "the acceptance record is for the matrix with signature " + in.acceptance->signature +
-                                     ", not " + formats::signature(m) + " (record the checklists of this version)"}});
-  }
-  if (!a.mutation_file.empty()) in.mutation = read_mutation(a.mutation_file, m);
-  if (!a.defeats_file.empty() && valid) in.defeats = read_defeats(a.defeats_file, m);
+  const std::vector<properties::PropertyFile> files = read_property_files(a, m, valid, in);
+  add_property_texts(m, files, in);
+  read_records(a, m, valid, in);
   if (a.plc.empty() && (!a.map.empty() || !a.pou.empty())) throw BadArguments("--map and --pou apply to --plc PROGRAM");
 #ifdef CEMV_WITH_PLC
   std::unique_ptr<PlcProgram> program;
@@ -254,59 +336,24 @@ int run_evidence(const EvidenceArgs& a) {
 #else
   if (!a.plc.empty()) throw BadArguments("--plc: this cemv is built without the PLC front end");
 #endif
-  checker::CheckOptions options;
-  options.property_timeout_s = a.timeout_s;
-  options.cancel = &cancel;
-  options.support_mode = a.support == "full" ? checker::SupportMode::Full
-                         : a.support == "off" ? checker::SupportMode::Off
-                                              : checker::SupportMode::Core;
-  options.jobs = a.jobs;
-  options.standard = a.standard;
+  checker::CheckOptions options = check_options(a, cancel);
   std::size_t total = 0;
   for (const auto& f : files) total += f.properties.size();
   // On a terminal (and not --quiet): properties, then paths, done / total.
   Progress progress("cemv evidence", total, "properties", !a.quiet && Progress::terminal(), std::cerr);
   options.on_start = [&](const std::string& name) { progress.started(name); };
   options.on_result = [&](const checker::PropertyResult& r) { progress.finished(r.name); };
-  bool response_interrupted = false;
-  bool plc_interrupted = false;
+  bool interrupted = false;
   try {
     if (!files.empty()) {
       in.check = checker::check_properties(m, files, options);
       explain_results(m, files, in.check);  // "why, per step" of every counterexample and witness
     }
 #ifdef CEMV_WITH_RESPONSE
-    if (a.response && valid) {
-      progress.phase("cemv evidence: response time", response::response_paths(m, {}).size(), "paths");
-      progress.started("every SIF path");
-      response::ResponseOptions ro;
-      ro.timeout_s = a.timeout_s;
-      if (a.total_timeout_s > 0)  // what is left of the run's bound (a positive bound: 0 means none)
-        ro.total_timeout_s = std::max(1e-3, std::chrono::duration<double>(deadline - checker::Clock::now()).count());
-      ro.jobs = a.jobs;
-      const response::ResponseResult rr = response::analyse(m, ro);
-      response_interrupted = rr.interrupted;
-      in.response = response_figures(m, rr);
-    }
+    if (a.response && valid) interrupted = add_response(a, m, deadline, progress, in) || interrupted;
 #endif
 #ifdef CEMV_WITH_PLC
-    if (program) {
-      progress.phase("cemv evidence: PLC program", 1, "programs");
-      progress.started(program->pou);
-      plc_check::PlcCheckReport r;
-      r.program_file = program->file;
-      r.program_sha256 = program->sha256;
-      r.pou = program->pou;
-      r.map = program->map;
-      r.map_source = program->map_source;
-      const plc::Pou& pou = *plc::find_pou(program->program, program->pou);
-      const double left = a.total_timeout_s > 0
-                              ? std::max(1e-3, std::chrono::duration<double>(deadline - checker::Clock::now()).count())
-                              : 0.0;
-      decide_outputs(m, program->program, pou, r, a.timeout_s, left, a.jobs);
-      plc_interrupted = r.interrupted;
-      in.plc = plc_figures(*program, r);
-    }
+    if (program) interrupted = add_plc(a, m, *program, deadline, progress, in) || interrupted;
 #endif
   } catch (const std::exception& e) {
     progress.stop();
@@ -324,15 +371,10 @@ int run_evidence(const EvidenceArgs& a) {
   in.check.standard = a.standard;
   write_output(a.out_file, reports::evidence_html(m, in));
   if (!a.json_file.empty()) write_output(a.json_file, reports::evidence_json(m, in));
-  if (!a.quiet)
-    std::cout << "cemv evidence: " << m.name << ": "
-              << (valid ? std::to_string(in.check.properties.size()) +
-                              (in.check.properties.size() == 1 ? " property" : " properties")
-                        : std::string("validation errors, nothing checked"))
-              << "; wrote " << a.out_file << (a.json_file.empty() ? "" : " and " + a.json_file) << "\n";
+  if (!a.quiet) print_summary(a, m, valid, in);
   if (!valid) return 1;
   // The report is complete but for what the time limit left unknown.
-  const bool interrupted = in.check.interrupted || response_interrupted || plc_interrupted;
+  interrupted = interrupted || in.check.interrupted;
   if (interrupted && !a.quiet)
     std::cerr << "cemv evidence: the overall time limit of " << a.total_timeout_s
               << " s is up; what was not decided is reported unknown\n";
