@@ -171,9 +171,14 @@ void publish(const checker::CheckResult& r, const CheckArgs& a, const std::vecto
   write_output("-", line);
 }
 
-int run_check(const CheckArgs& a) {
-  // Arguments and destinations first: a mistake fails in milliseconds.
-  const std::vector<Destination> outputs = destinations(a);
+struct CheckedArguments {
+  std::vector<Destination> outputs;
+  std::pair<int, int> shard;  // index, count
+};
+
+// Arguments and destinations first: a mistake fails in milliseconds.
+CheckedArguments checked_arguments(const CheckArgs& a) {
+  std::vector<Destination> outputs = destinations(a);
   if (a.property_files.empty() && !a.standard)
     throw BadArguments("nothing to check: give property files, --standard, or both");
   if (a.jobs < 1) throw BadArguments("--jobs must be at least 1");
@@ -181,13 +186,14 @@ int run_check(const CheckArgs& a) {
   int stdin_uses = (a.matrix_file == "-");
   for (const auto& f : a.property_files) stdin_uses += (f == "-");
   if (stdin_uses > 1) throw BadArguments("'-' (standard input) can be given only once");
-  auto [shard_index, shard_count] = a.shard.empty() ? std::pair{1, 1} : parse_shard(a.shard);
+  const std::pair<int, int> shard = a.shard.empty() ? std::pair{1, 1} : parse_shard(a.shard);
   for (const auto& d : outputs) check_writable(d.file);
   if (!a.out_dir.empty()) check_writable_directory(a.out_dir);
   if (!a.vcd_file.empty()) check_writable(a.vcd_file);
+  return {std::move(outputs), shard};
+}
 
-  reports::CheckReportInputs report_inputs{input_name(a.matrix_file), read_input(a.matrix_file)};
-  const model::Matrix m = formats::parse_valid_matrix(report_inputs.matrix_text, report_inputs.matrix_file, "checked");
+std::vector<properties::PropertyFile> read_property_files(const CheckArgs& a, const model::Matrix& m) {
   std::vector<properties::PropertyFile> files;
   for (const auto& f : a.property_files)
     files.push_back(properties::parse_properties(read_input(f), m, input_name(f)));
@@ -196,16 +202,24 @@ int run_check(const CheckArgs& a) {
   if (!a.quiet)
     for (const auto& f : files)
       for (const auto& w : f.warnings) std::cerr << w << "\n";
-  const CheckGate gate(a.expect, a.baseline_file, files);  // a bad baseline fails before the work
+  return files;
+}
 
-  checker::CheckResult skeleton;
-  skeleton.matrix_name = m.name;
-  skeleton.matrix_signature = formats::signature(m);
-  skeleton.tool_version = CEMV_VERSION;
-  for (const auto& f : a.property_files) skeleton.property_files.push_back(input_name(f));
-  skeleton.standard = a.standard;
-  if (shard_count > 1) skeleton.shard = a.shard;
+// What the report says of the run whatever the checker found: the files as
+// given and the version of this binary.
+checker::CheckResult run_description(const CheckArgs& a, const model::Matrix& m, int shard_count) {
+  checker::CheckResult d;
+  d.matrix_name = m.name;
+  d.matrix_signature = formats::signature(m);
+  d.tool_version = CEMV_VERSION;
+  for (const auto& f : a.property_files) d.property_files.push_back(input_name(f));
+  d.standard = a.standard;
+  if (shard_count > 1) d.shard = a.shard;
+  return d;
+}
 
+checker::CheckOptions check_options(const CheckArgs& a, std::pair<int, int> shard, checker::CancelToken& cancel) {
+  const auto [shard_index, shard_count] = shard;
   checker::CheckOptions options;
   options.property_timeout_s = a.timeout_s;
   options.jobs = a.jobs;
@@ -214,6 +228,56 @@ int run_check(const CheckArgs& a) {
   options.out_dir = a.out_dir;
   options.standard = a.standard;
   options.support_mode = support_mode(a.support);
+  options.cancel = &cancel;
+  return options;
+}
+
+std::optional<ResultCache> result_cache(const CheckArgs& a, const model::Matrix& m, const std::string& signature) {
+  if (a.cache_dir.empty()) return std::nullopt;
+  ResultCache::Confirm confirm;
+#ifdef CEMV_WITH_VERIFICATION
+  confirm = [&m](const properties::PropertyFile& f, const properties::Property& p, const PropertyResult& r) {
+    return confirms(m, f, p, r);
+  };
+#endif
+  // A result depends on the build and on how its support was found.
+  return std::optional<ResultCache>(std::in_place, a.cache_dir, std::string(build_version()) + " --support " + a.support,
+                                    m, signature, a.out_dir, confirm);
+}
+
+int internal_error(const std::string& what) {
+  std::cerr << "internal error: " << what << "\n(a bug in cemv: please report it with the matrix and property files)\n";
+  return 4;
+}
+
+// Counterexample files never overwrite each other: names are unique across
+// the files (check_distinct_names), and each file is one property's.
+std::optional<std::string> shared_scenario_file(const checker::CheckResult& result) {
+  std::map<std::string, std::string> written;  // scenario file -> property
+  for (const auto& p : result.properties)
+    if (!p.scenario_file.empty())
+      if (auto [it, fresh] = written.emplace(p.scenario_file, p.name); !fresh)
+        return "properties " + it->second + " and " + p.name + " wrote one file " + p.scenario_file;
+  return std::nullopt;
+}
+
+// --vcd: every counterexample and witness, a scope each; returns how many.
+std::size_t write_waveforms(const CheckArgs& a, const model::Matrix& m, const checker::CheckResult& result) {
+  std::vector<reports::VcdRun> runs;
+  for (const auto& p : result.properties)
+    if (p.trace) runs.push_back({p.name, &*p.trace});
+  write_output(a.vcd_file, reports::vcd_runs(m, runs, {"", CEMV_VERSION, "counterexamples and witnesses of cemv check"}));
+  return runs.size();
+}
+
+int run_check(const CheckArgs& a) {
+  const auto [outputs, shard] = checked_arguments(a);
+  reports::CheckReportInputs report_inputs{input_name(a.matrix_file), read_input(a.matrix_file)};
+  const model::Matrix m = formats::parse_valid_matrix(report_inputs.matrix_text, report_inputs.matrix_file, "checked");
+  const std::vector<properties::PropertyFile> files = read_property_files(a, m);
+  const CheckGate gate(a.expect, a.baseline_file, files);  // a bad baseline fails before the work
+  const checker::CheckResult description = run_description(a, m, shard.second);
+
   // --total-timeout cancels through the run's one token: every engine polls
   // it, the work queue starts nothing after it, and the checker returns with
   // what it decided; the rest is reported unknown ("time limit").
@@ -221,26 +285,13 @@ int run_check(const CheckArgs& a) {
                                   ? checker::Clock::now() + std::chrono::duration_cast<checker::Clock::duration>(
                                                                 std::chrono::duration<double>(a.total_timeout_s))
                                   : checker::Clock::time_point::max());
-  options.cancel = &cancel;
-
+  checker::CheckOptions options = check_options(a, shard, cancel);
   // On a terminal (and not --quiet): properties done / total, elapsed, the running ones.
-  Progress progress("cemv check", planned_count(files, shard_index, shard_count), "properties",
+  Progress progress("cemv check", planned_count(files, options.shard_index, options.shard_count), "properties",
                     !a.quiet && Progress::terminal(), std::cerr);
   options.on_start = [&](const std::string& name) { progress.started(name); };
   options.on_result = [&](const PropertyResult& r) { progress.finished(r.name); };
-
-  std::optional<ResultCache> cache;
-  if (!a.cache_dir.empty()) {
-    ResultCache::Confirm confirm;
-#ifdef CEMV_WITH_VERIFICATION
-    confirm = [&m](const properties::PropertyFile& f, const properties::Property& p, const PropertyResult& r) {
-      return confirms(m, f, p, r);
-    };
-#endif
-    // A result depends on the build and on how its support was found.
-    cache.emplace(a.cache_dir, std::string(build_version()) + " --support " + a.support, m, skeleton.matrix_signature, a.out_dir,
-                  confirm);
-  }
+  std::optional<ResultCache> cache = result_cache(a, m, description.matrix_signature);
 
   checker::CheckResult result;
   try {
@@ -254,56 +305,39 @@ int run_check(const CheckArgs& a) {
     // fault: a re-check that refuted an answer (InternalError, whose message
     // carries both sides), or a failure of the engines themselves.
     bool refuted = dynamic_cast<const checker::InternalError*>(&e) != nullptr;
-    std::cerr << "internal error: " << (refuted ? "" : "the checker failed: ") << e.what()
-              << "\n(a bug in cemv: please report it with the matrix and property files)\n";
-    return 4;
+    return internal_error((refuted ? "" : "the checker failed: ") + std::string(e.what()));
   }
   progress.stop();
   if (result.interrupted && !a.quiet)
     std::cerr << "cemv check: the overall time limit of " << a.total_timeout_s
               << " s is up; properties not decided are reported unknown\n";
 
-  // The checker fills these too; the CLI's values name the files as given and
-  // carry the version of this binary.
-  result.matrix_name = skeleton.matrix_name;
-  result.matrix_signature = skeleton.matrix_signature;
-  result.tool_version = skeleton.tool_version;
-  result.property_files = skeleton.property_files;
-  result.standard = skeleton.standard;
-  result.shard = skeleton.shard;
+  // The checker fills these too; the CLI's values name the files as given.
+  result.matrix_name = description.matrix_name;
+  result.matrix_signature = description.matrix_signature;
+  result.tool_version = description.tool_version;
+  result.property_files = description.property_files;
+  result.standard = description.standard;
+  result.shard = description.shard;
   if (cache) cache->store(files, result);
 #ifdef CEMV_WITH_VERIFICATION
   add_counterexample_cells(m, files, result);
 #endif
   gate.annotate(result);
-  // Counterexample files never overwrite each other: names are unique across
-  // the files (check_distinct_names), and each file is one property's.
-  std::map<std::string, std::string> written;  // scenario file -> property
-  for (const auto& p : result.properties)
-    if (!p.scenario_file.empty())
-      if (auto [it, fresh] = written.emplace(p.scenario_file, p.name); !fresh) {
-        std::cerr << "internal error: properties " << it->second << " and " << p.name << " wrote one file "
-                  << p.scenario_file << "\n(a bug in cemv: please report it with the matrix and property files)\n";
-        return 4;
-      }
+  if (auto shared = shared_scenario_file(result)) return internal_error(*shared);
   try {
     explain_results(m, files, result);  // "why, per step": the traces re-run with explanations
   } catch (const std::logic_error& e) {
-    std::cerr << "internal error: " << e.what() << "\n(a bug in cemv: please report it with the matrix and property files)\n";
-    return 4;
+    return internal_error(e.what());
   }
   write_pictures(m, result);
-  std::vector<reports::VcdRun> runs;  // --vcd: every counterexample and witness, a scope each
-  for (const auto& p : result.properties)
-    if (p.trace) runs.push_back({p.name, &*p.trace});
-  if (!a.vcd_file.empty())
-    write_output(a.vcd_file, reports::vcd_runs(m, runs, {"", CEMV_VERSION, "counterexamples and witnesses of cemv check"}));
+  const std::size_t runs = a.vcd_file.empty() ? 0 : write_waveforms(a, m, result);
   publish(result, a, outputs, report_inputs);
   bool machine_stdout = false;  // a JSON/JUnit/SARIF report on standard output takes no extra line
   for (const auto& d : outputs) machine_stdout |= d.file == "-" && d.format != reports::CheckFormat::Text;
   if (!a.vcd_file.empty() && !a.quiet && !machine_stdout)
-    write_output("-", "waveforms: " + a.vcd_file + " (" + std::to_string(runs.size()) +
-                          (runs.size() == 1 ? " run" : " runs") + ": every counterexample and witness)\n");
+    write_output("-", "waveforms: " + a.vcd_file + " (" + std::to_string(runs) + (runs == 1 ? " run" : " runs") +
+                          ": every counterexample and witness)\n");
   if (gate.active() && !a.quiet) {
     if (machine_stdout) std::cerr << gate.summary(result) << std::flush;
     else write_output("-", gate.summary(result));
