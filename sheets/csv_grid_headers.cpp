@@ -162,150 +162,209 @@ bool action_word(std::string_view text) {
   return verbs.count(letters_upper(t)) > 0;
 }
 
-std::vector<Slot> classify_headers(const std::vector<HeaderCandidate>& candidates, bool header_rows) {
-  const std::string line = header_rows ? "row" : "column";
-  const std::string lines = header_rows ? "header rows" : "label columns";
-  const std::string elements = header_rows ? "elements on the columns" : "elements on the rows";
-  const std::string layout_hint = "give their places in the layout (\"effects\" or \"causes\", with the "
-                                  "orientation; docs/csv.md \"Stacked effect header\")";
-  std::vector<Slot> read;
-  std::vector<LoadIssue> problems;
-  std::vector<const HeaderCandidate*> ids, texts, tags_by_content, tags_by_label, sils, ambiguous;
-  bool stacked = false;  // a row read as SIL or action by its values: a contractor's stacked header
-  for (const HeaderCandidate& c : candidates) {
+namespace {
+
+// Reads what each header row (or label column) holds: by its label where it
+// has one, else by its values; then places the tag, the id, the description
+// and the notes, and refuses wherever two places fit (docs/csv.md, "Stacked
+// effect header").
+class HeaderClassifier {
+ public:
+  HeaderClassifier(const std::vector<HeaderCandidate>& candidates, bool header_rows)
+      : candidates_(candidates),
+        line_(header_rows ? "row" : "column"),
+        lines_(header_rows ? "header rows" : "label columns"),
+        elements_(header_rows ? "elements on the columns" : "elements on the rows") {}
+
+  std::vector<Slot> classify() {
+    for (const HeaderCandidate& c : candidates_) sort_candidate(c);
+    refuse_ambiguous();
+    place_unlabelled_tags();
+    place_ids();
+    name_elements();
+    place_texts();
+    if (problems_.empty()) let_description_name_elements();
+    if (!problems_.empty()) throw LoadError(problems_);
+    std::stable_sort(read_.begin(), read_.end(), [](const Slot& a, const Slot& b) { return a.index < b.index; });
+    return read_;
+  }
+
+ private:
+  using Candidates = std::vector<const HeaderCandidate*>;
+  static constexpr const char* kLayoutHint =
+      "give their places in the layout (\"effects\" or \"causes\", with the "
+      "orientation; docs/csv.md \"Stacked effect header\")";
+
+  bool has(SheetAttribute a) const {
+    return std::any_of(read_.begin(), read_.end(), [a](const Slot& s) { return s.attribute == a; });
+  }
+  void push(const HeaderCandidate* c, SheetAttribute a) {
+    read_.push_back(Slot{a, c->index, c->label, false, content_words(content_of(c->values))});
+  }
+  void refuse(const Candidates& cs, const std::string& what) {
+    problems_.push_back({cs.front()->place, what + ": " + names_of(cs) + "; label the " + lines_ +
+                                                " (Tag, SIL, Action, Item, Description) or " + kLayoutHint});
+  }
+
+  void sort_candidate(const HeaderCandidate& c) {
     const Content content = content_of(c.values);
+    if (attribute_of_header(c.label)) {
+      read_label(c, content);
+      return;
+    }
     Slot s;
     s.index = c.index;
     s.label = c.label;
-    if (const auto meaning = attribute_of_header(c.label)) {
-      s.attribute = meaning->attribute;
-      s.by_header = true;
-      if (contradicts(s.attribute, content)) {
-        problems.push_back({c.place, c.name + " is labelled " + in_quotes(c.label) + " (" + to_string(s.attribute) +
-                                         ") but holds " + content_words(content) +
-                                         ": correct the label, or " + layout_hint});
-        continue;
-      }
-      const auto said = attribute_of_content(content.kind);
-      s.evidence = said == s.attribute || (s.attribute == SheetAttribute::Sil && content.kind == HeaderContent::SmallNumbers)
-                       ? "its label and " + content_words(content)
-                       : "its label";
-      const bool once = s.attribute != SheetAttribute::Note && s.attribute != SheetAttribute::Tag &&
-                        s.attribute != SheetAttribute::Action;
-      if (once && std::any_of(read.begin(), read.end(), [&](const Slot& o) { return o.attribute == s.attribute; }))
-        s.attribute = SheetAttribute::Note;
-      if (s.attribute == SheetAttribute::Tag) tags_by_label.push_back(&c);
-      if (s.attribute == SheetAttribute::Sil) sils.push_back(&c);
-      stacked = stacked || s.attribute == SheetAttribute::Sil || s.attribute == SheetAttribute::Action;
-      read.push_back(s);
-      continue;
-    }
     s.evidence = content_words(content);
     switch (content.kind) {
-      case HeaderContent::Tags: tags_by_content.push_back(&c); break;
+      case HeaderContent::Tags: tags_by_content_.push_back(&c); break;
       case HeaderContent::Sil:
-        sils.push_back(&c);
+        sils_.push_back(&c);
         s.attribute = SheetAttribute::Sil;
-        stacked = true;
-        read.push_back(s);
+        stacked_ = true;
+        read_.push_back(s);
         break;
       case HeaderContent::Actions:
         s.attribute = SheetAttribute::Action;
-        stacked = true;
-        read.push_back(s);
+        stacked_ = true;
+        read_.push_back(s);
         break;
       case HeaderContent::SmallNumbers:
         // `2, 2, 1`: SIL levels without their label, or ids? Ids do not repeat.
-        if (content.repeats) ambiguous.push_back(&c);
-        else ids.push_back(&c);
+        if (content.repeats) ambiguous_.push_back(&c);
+        else ids_.push_back(&c);
         break;
-      case HeaderContent::Ids: ids.push_back(&c); break;
-      case HeaderContent::Text: texts.push_back(&c); break;
+      case HeaderContent::Ids: ids_.push_back(&c); break;
+      case HeaderContent::Text: texts_.push_back(&c); break;
     }
   }
-  auto refuse = [&](const std::vector<const HeaderCandidate*>& cs, const std::string& what) {
-    problems.push_back({cs.front()->place, what + ": " + names_of(cs) + "; label the " + lines +
-                                               " (Tag, SIL, Action, Item, Description) or " + layout_hint});
-  };
-  for (const auto* c : ambiguous)
-    refuse({c}, "cannot tell whether " + c->name + " holds SIL levels or ids");
-  if (sils.size() > 1) refuse(sils, "two or more " + lines + " could each be the SIL " + line);
-  const bool labelled_id = std::any_of(read.begin(), read.end(), [](const Slot& s) { return s.attribute == SheetAttribute::Id; });
+
+  // A labelled row or column: its label says what it is, unless its values
+  // contradict it; an attribute given twice is a note the second time.
+  void read_label(const HeaderCandidate& c, const Content& content) {
+    Slot s;
+    s.index = c.index;
+    s.label = c.label;
+    s.attribute = attribute_of_header(c.label)->attribute;
+    s.by_header = true;
+    if (contradicts(s.attribute, content)) {
+      problems_.push_back({c.place, c.name + " is labelled " + in_quotes(c.label) + " (" + to_string(s.attribute) +
+                                        ") but holds " + content_words(content) + ": correct the label, or " +
+                                        kLayoutHint});
+      return;
+    }
+    const auto said = attribute_of_content(content.kind);
+    s.evidence = said == s.attribute || (s.attribute == SheetAttribute::Sil && content.kind == HeaderContent::SmallNumbers)
+                     ? "its label and " + content_words(content)
+                     : "its label";
+    const bool once = s.attribute != SheetAttribute::Note && s.attribute != SheetAttribute::Tag &&
+                      s.attribute != SheetAttribute::Action;
+    if (once && has(s.attribute)) s.attribute = SheetAttribute::Note;
+    if (s.attribute == SheetAttribute::Tag) tags_by_label_.push_back(&c);
+    if (s.attribute == SheetAttribute::Sil) sils_.push_back(&c);
+    stacked_ = stacked_ || s.attribute == SheetAttribute::Sil || s.attribute == SheetAttribute::Action;
+    read_.push_back(s);
+  }
+
+  void refuse_ambiguous() {
+    for (const auto* c : ambiguous_) refuse({c}, "cannot tell whether " + c->name + " holds SIL levels or ids");
+    if (sils_.size() > 1) refuse(sils_, "two or more " + lines_ + " could each be the SIL " + line_);
+    labelled_id_ = has(SheetAttribute::Id);
+  }
+
   // Tag-shaped values under no label: the tag row, unless a labelled tag row
   // leaves it to be the id.
-  if (!tags_by_content.empty()) {
-    if (tags_by_label.empty() && tags_by_content.size() == 1) {
-      Slot s{SheetAttribute::Tag, tags_by_content[0]->index, "", false,
-             content_words(content_of(tags_by_content[0]->values))};
-      read.push_back(s);
-    } else if (!tags_by_label.empty() && tags_by_content.size() == 1 && !labelled_id && ids.empty()) {
-      ids.push_back(tags_by_content[0]);
+  void place_unlabelled_tags() {
+    if (tags_by_content_.empty()) return;
+    if (tags_by_label_.empty() && tags_by_content_.size() == 1) {
+      read_.push_back(Slot{SheetAttribute::Tag, tags_by_content_[0]->index, "", false,
+                           content_words(content_of(tags_by_content_[0]->values))});
+    } else if (!tags_by_label_.empty() && tags_by_content_.size() == 1 && !labelled_id_ && ids_.empty()) {
+      ids_.push_back(tags_by_content_[0]);
     } else {
-      std::vector<const HeaderCandidate*> all = tags_by_label;
-      all.insert(all.end(), tags_by_content.begin(), tags_by_content.end());
-      refuse(all, "two or more " + lines + " could each be the tag " + line);
+      Candidates all = tags_by_label_;
+      all.insert(all.end(), tags_by_content_.begin(), tags_by_content_.end());
+      refuse(all, "two or more " + lines_ + " could each be the tag " + line_);
     }
   }
-  auto push = [&](const HeaderCandidate* c, SheetAttribute a) {
-    read.push_back(Slot{a, c->index, c->label, false, content_words(content_of(c->values))});
-  };
-  if (!labelled_id) {
-    if (ids.size() == 1) {
-      push(ids[0], SheetAttribute::Id);
-      ids.clear();
-    } else if (ids.size() > 1) {
-      const bool has_tag = std::any_of(read.begin(), read.end(), [](const Slot& s) { return s.attribute == SheetAttribute::Tag; });
-      if (stacked || has_tag) {
-        refuse(ids, "two or more " + lines + " could each be the id " + line);
-      } else {
-        // A plain grid (`d1`, `d2` over `E1`, `E2`): by position, below.
-        texts.insert(texts.end(), ids.begin(), ids.end());
-        std::sort(texts.begin(), texts.end(), [](const auto* a, const auto* b) { return a->index < b->index; });
+
+  // One unlabelled row of ids is the id row; several are refused in a stacked
+  // header and read by position in a plain grid (`d1`, `d2` over `E1`, `E2`).
+  void place_ids() {
+    if (!labelled_id_) {
+      if (ids_.size() == 1) {
+        push(ids_[0], SheetAttribute::Id);
+        ids_.clear();
+      } else if (ids_.size() > 1) {
+        if (stacked_ || has(SheetAttribute::Tag)) {
+          refuse(ids_, "two or more " + lines_ + " could each be the id " + line_);
+        } else {
+          texts_.insert(texts_.end(), ids_.begin(), ids_.end());
+          std::sort(texts_.begin(), texts_.end(), [](const auto* a, const auto* b) { return a->index < b->index; });
+        }
+        ids_.clear();
       }
-      ids.clear();
     }
+    for (const auto* c : ids_) push(c, SheetAttribute::Note);
   }
-  for (const auto* c : ids) push(c, SheetAttribute::Note);
-  const bool has_id = std::any_of(read.begin(), read.end(), [](const Slot& s) { return s.attribute == SheetAttribute::Id; });
-  const Slot* tag = nullptr;
-  for (const Slot& s : read)
-    if (s.attribute == SheetAttribute::Tag && !tag) tag = &s;
-  if (!has_id && tag) {
-    // No id row: the tags name the elements.
-    Slot id = *tag;
-    id.attribute = SheetAttribute::Id;
-    id.evidence = "no id " + line + ": the tags name the " + elements;
-    read.push_back(id);
-  } else if (!has_id && stacked && problems.empty()) {
-    // A stacked header names its elements by an id or a tag row; free text is
-    // a description, never an id.
-    std::vector<const HeaderCandidate*> all;
-    for (const HeaderCandidate& c : candidates) all.push_back(&c);
-    refuse(all, "no " + line + " holds the tags or ids of the " + elements + " (values such as 'XV-301' or '1')");
-  } else if (!has_id && !texts.empty()) {
-    // A plain grid: the last unlabelled one is the id (docs/csv.md "Header rows and label columns").
-    push(texts.back(), SheetAttribute::Id);
-    read.back().evidence = "the last unlabelled " + line + ", by position";
-    texts.pop_back();
-  }
-  const bool has_description = std::any_of(read.begin(), read.end(), [](const Slot& s) {
-    return s.attribute == SheetAttribute::Description;
-  });
-  for (std::size_t k = 0; k < texts.size(); ++k)
-    push(texts[k], k == 0 && !has_description ? SheetAttribute::Description : SheetAttribute::Note);
-  // Nothing else left (a lone labelled description): the description is the id.
-  const bool id_now = std::any_of(read.begin(), read.end(), [](const Slot& s) { return s.attribute == SheetAttribute::Id; });
-  for (std::size_t k = 0; k < read.size() && !id_now && problems.empty(); ++k)
-    if (read[k].attribute == SheetAttribute::Description) {
-      Slot id = read[k];
+
+  // Without an id row the tags name the elements; a stacked header without
+  // either is refused (free text is a description, never an id); a plain
+  // grid's last unlabelled row is the id, by position.
+  void name_elements() {
+    if (has(SheetAttribute::Id)) return;
+    const Slot* tag = nullptr;
+    for (const Slot& s : read_)
+      if (s.attribute == SheetAttribute::Tag && !tag) tag = &s;
+    if (tag) {
+      Slot id = *tag;
       id.attribute = SheetAttribute::Id;
-      id.evidence = "no id " + line + ": the descriptions name the " + elements;
-      read.push_back(id);
-      break;
+      id.evidence = "no id " + line_ + ": the tags name the " + elements_;
+      read_.push_back(id);
+    } else if (stacked_ && problems_.empty()) {
+      Candidates all;
+      for (const HeaderCandidate& c : candidates_) all.push_back(&c);
+      refuse(all, "no " + line_ + " holds the tags or ids of the " + elements_ + " (values such as 'XV-301' or '1')");
+    } else if (!texts_.empty()) {
+      push(texts_.back(), SheetAttribute::Id);
+      read_.back().evidence = "the last unlabelled " + line_ + ", by position";
+      texts_.pop_back();
     }
-  if (!problems.empty()) throw LoadError(problems);
-  std::stable_sort(read.begin(), read.end(), [](const Slot& a, const Slot& b) { return a.index < b.index; });
-  return read;
+  }
+
+  // The first free text is the description unless one is labelled; the rest are notes.
+  void place_texts() {
+    const bool has_description = has(SheetAttribute::Description);
+    for (std::size_t k = 0; k < texts_.size(); ++k)
+      push(texts_[k], k == 0 && !has_description ? SheetAttribute::Description : SheetAttribute::Note);
+  }
+
+  // Nothing else left (a lone labelled description): the description is the id.
+  void let_description_name_elements() {
+    if (has(SheetAttribute::Id)) return;
+    for (std::size_t k = 0; k < read_.size(); ++k)
+      if (read_[k].attribute == SheetAttribute::Description) {
+        Slot id = read_[k];
+        id.attribute = SheetAttribute::Id;
+        id.evidence = "no id " + line_ + ": the descriptions name the " + elements_;
+        read_.push_back(id);
+        return;
+      }
+  }
+
+  const std::vector<HeaderCandidate>& candidates_;
+  const std::string line_, lines_, elements_;
+  std::vector<Slot> read_;
+  std::vector<LoadIssue> problems_;
+  Candidates ids_, texts_, tags_by_content_, tags_by_label_, sils_, ambiguous_;
+  bool stacked_ = false;      // a row read as SIL or action: a contractor's stacked header
+  bool labelled_id_ = false;  // an id row by its label
+};
+
+}  // namespace
+
+std::vector<Slot> classify_headers(const std::vector<HeaderCandidate>& candidates, bool header_rows) {
+  return HeaderClassifier(candidates, header_rows).classify();
 }
 
 }  // namespace cemv::formats::grid
