@@ -69,28 +69,28 @@ json counts_json(const std::array<int, 6>& c) {
   return j;
 }
 
-}  // namespace
+json matrix_json(const model::Matrix& m, const EvidenceInputs& in) {
+  return {{"name", m.name},
+          {"title", m.title},
+          {"file", in.matrix_file},
+          {"signature", in.check.matrix_signature},
+          {"causes", m.causes.size()},
+          {"effects", m.effects.size()},
+          {"intersections", m.intersections.size()},
+          {"cycle_ms", m.cycle_ms}};
+}
 
-std::string evidence_json(const model::Matrix& m, const EvidenceInputs& in) {
-  const evidence_detail::Document d = evidence_detail::build_document(m, in);
-  json j;
-  j["format"] = "cemv-evidence/1";
-  j["tool"] = {{"name", "cemv"}, {"version", in.check.tool_version}};
-  j["date"] = in.date;
-  j["support_mode"] = checker::to_string(in.check.support_mode);
-  j["matrix"] = {{"name", m.name},
-                 {"title", m.title},
-                 {"file", in.matrix_file},
-                 {"signature", in.check.matrix_signature},
-                 {"causes", m.causes.size()},
-                 {"effects", m.effects.size()},
-                 {"intersections", m.intersections.size()},
-                 {"cycle_ms", m.cycle_ms}};
+// The foreign sheets the matrix was read from.
+json sources_json(const model::Matrix& m) {
   json sources = json::array();
   for (const auto& r : m.provenance.imports)
     sources.push_back({{"file", r.file}, {"sha256", r.sha256}, {"reader", r.reader}, {"encoding", r.encoding},
                        {"summary", r.summary}, {"warnings", r.warnings}, {"defaults", r.defaults}});
-  j["sources"] = sources;
+  return sources;
+}
+
+// The parameter files applied to it.
+json parameters_json(const model::Matrix& m) {
   json params = json::array();
   for (const auto& r : m.provenance.parameters) {
     json values = json::array();
@@ -103,18 +103,26 @@ std::string evidence_json(const model::Matrix& m, const EvidenceInputs& in) {
     params.push_back({{"file", r.file}, {"sha256", r.sha256}, {"origin", r.origin}, {"values", values},
                       {"footnotes", notes}, {"limitations", r.limitations}});
   }
-  j["parameters"] = params;
+  return params;
+}
+
+json property_files_json(const EvidenceInputs& in) {
   json files = json::array();
   for (const auto& f : in.property_files)
     files.push_back({{"file", f.file}, {"sha256", f.sha256}, {"properties", f.properties},
                      {"assumptions", f.assumptions}, {"warnings", f.warnings}});
-  j["property_files"] = files;
+  return files;
+}
+
+json validation_json(const evidence_detail::Document& d, const EvidenceInputs& in) {
   json diagnostics = json::array();
   for (const auto& v : in.validation)
     diagnostics.push_back({{"severity", model::to_string(v.severity)}, {"rule", v.rule}, {"element", v.element},
                            {"section", v.section}, {"message", v.message}});
-  j["validation"] = {{"errors", d.errors}, {"warnings", d.warnings}, {"diagnostics", diagnostics}};
-  j["checked"] = d.valid;
+  return {{"errors", d.errors}, {"warnings", d.warnings}, {"diagnostics", diagnostics}};
+}
+
+json requirements_json(const evidence_detail::Document& d) {
   json reqs = json::array();
   for (const auto& r : d.requirements) {
     json x = property_json(*r.result, r.text, r.file_sha256);
@@ -122,75 +130,116 @@ std::string evidence_json(const model::Matrix& m, const EvidenceInputs& in) {
     x["trace_cells"] = cells_json(r.trace_cells);
     reqs.push_back(std::move(x));
   }
-  j["requirements"] = reqs;
+  return reqs;
+}
+
+// The standard set: counts by element, then every property.
+json standard_json(const evidence_detail::Document& d, const EvidenceInputs& in) {
   std::map<std::pair<std::string, std::string>, const PropertyText*> texts;
   for (const auto& t : in.texts) texts[{t.file, t.name}] = &t;
   json elements = json::array();
   for (const auto& e : d.standard_by_element) {
     json names = json::array();
     for (const auto* p : e.properties) names.push_back(p->name);
-    json x = counts_json(e.verdicts);
-    elements.push_back({{"element", e.key}, {"label", e.label}, {"counts", x}, {"properties", names}});
+    elements.push_back({{"element", e.key}, {"label", e.label}, {"counts", counts_json(e.verdicts)}, {"properties", names}});
   }
   json standard = json::array();
   for (const auto* p : d.standard) {
     auto t = texts.find({p->file, p->name});
     standard.push_back(property_json(*p, t == texts.end() ? nullptr : t->second, ""));
   }
-  j["standard"] = {{"included", in.check.standard}, {"by_element", elements}, {"properties", standard}};
-  j["grid"] = {{"support_cells", cells_json(d.support_cells)}, {"trace_cells", cells_json(d.trace_cells)}};
+  return {{"included", in.check.standard}, {"by_element", elements}, {"properties", standard}};
+}
+
+json limitations_json(const evidence_detail::Document& d) {
   json limits = json::array();
   for (const auto& l : d.limitations) limits.push_back({{"kind", l.kind}, {"text", l.text}, {"source", l.source}});
-  j["limitations"] = limits;
-  if (in.response) {
-    json paths = json::array();
-    for (const auto& p : in.response->paths)
-      paths.push_back({{"sif", p.sif}, {"path", p.path}, {"logic", p.logic},
-                       {"total_ms", p.total_ms ? json(*p.total_ms) : json()},
-                       {"process_safety_time_ms", p.process_safety_time_ms ? json(*p.process_safety_time_ms) : json()},
-                       {"margin_ms", p.margin_ms ? json(*p.margin_ms) : json()}, {"verdict", p.verdict}});
-    j["response"] = {{"controller", in.response->controller}, {"paths", paths}};
-  } else {
-    j["response"] = nullptr;
+  return limits;
+}
+
+json response_json(const EvidenceInputs& in) {
+  if (!in.response) return nullptr;
+  json paths = json::array();
+  for (const auto& p : in.response->paths)
+    paths.push_back({{"sif", p.sif}, {"path", p.path}, {"logic", p.logic},
+                     {"total_ms", p.total_ms ? json(*p.total_ms) : json()},
+                     {"process_safety_time_ms", p.process_safety_time_ms ? json(*p.process_safety_time_ms) : json()},
+                     {"margin_ms", p.margin_ms ? json(*p.margin_ms) : json()}, {"verdict", p.verdict}});
+  return {{"controller", in.response->controller}, {"paths", paths}};
+}
+
+json defeats_json(const EvidenceInputs& in) {
+  if (!in.defeats) return nullptr;
+  json paths = json::array();
+  for (const auto& p : in.defeats->paths) {
+    json sets = json::array();
+    for (const auto& s : p.sets)
+      sets.push_back({{"actions", s.actions}, {"class", s.set_class}, {"counterexample", s.counterexample},
+                      {"touches", s.touches}});
+    paths.push_back({{"sif", p.sif}, {"sil", p.sil}, {"path", p.path}, {"requirement", p.requirement},
+                     {"status", p.status}, {"distance", p.distance}, {"sets", sets}});
   }
-  if (in.defeats) {
-    json paths = json::array();
-    for (const auto& p : in.defeats->paths) {
-      json sets = json::array();
-      for (const auto& s : p.sets)
-        sets.push_back({{"actions", s.actions}, {"class", s.set_class}, {"counterexample", s.counterexample},
-                        {"touches", s.touches}});
-      paths.push_back({{"sif", p.sif}, {"sil", p.sil}, {"path", p.path}, {"requirement", p.requirement},
-                       {"status", p.status}, {"distance", p.distance}, {"sets", sets}});
-    }
-    j["defeats"] = {{"file", in.defeats->file}, {"max_size", in.defeats->max_size}, {"paths", paths}};
-  } else {
-    j["defeats"] = nullptr;
+  return {{"file", in.defeats->file}, {"max_size", in.defeats->max_size}, {"paths", paths}};
+}
+
+json plc_output_json(const PlcFigures::Output& o) {
+  json x = {{"tag", o.tag}, {"effect", o.effect}, {"variable", o.variable}, {"verdict", o.verdict},
+            {"method", o.method}, {"k", o.k}};
+  if (o.verdict == "unknown") x["reason"] = o.reason;
+  if (o.verdict == "differs") {
+    json scans = json::array();
+    for (const auto& s : o.scans)
+      scans.push_back({{"scan", s.scan}, {"matrix", s.matrix}, {"program", s.program}, {"inputs", s.inputs}});
+    x["difference"] = {{"scan", o.scan}, {"matrix_value", o.matrix_value}, {"program_value", o.program_value},
+                       {"assigned_at", o.assigned_at}, {"scans", scans}};
   }
-  if (in.plc) {
-    const auto& p = *in.plc;
-    json outputs = json::array();
-    for (const auto& o : p.outputs) {
-      json x = {{"tag", o.tag}, {"effect", o.effect}, {"variable", o.variable}, {"verdict", o.verdict},
-                {"method", o.method}, {"k", o.k}};
-      if (o.verdict == "unknown") x["reason"] = o.reason;
-      if (o.verdict == "differs") {
-        json scans = json::array();
-        for (const auto& s : o.scans)
-          scans.push_back({{"scan", s.scan}, {"matrix", s.matrix}, {"program", s.program}, {"inputs", s.inputs}});
-        x["difference"] = {{"scan", o.scan}, {"matrix_value", o.matrix_value}, {"program_value", o.program_value},
-                           {"assigned_at", o.assigned_at}, {"scans", scans}};
-      }
-      outputs.push_back(x);
-    }
-    json map = json::array();
-    for (const auto& b : p.map) map.push_back({{"matrix", b.what}, {"variable", b.variable}, {"note", b.note}});
-    j["plc"] = {{"file", p.file}, {"sha256", p.sha256}, {"pou", p.pou}, {"relation", p.relation},
-                {"scan_ms", p.scan_ms}, {"map_source", p.map_source}, {"map", map}, {"assumptions", p.assumptions},
-                {"outputs", outputs}, {"interrupted", p.interrupted}};
-  } else {
-    j["plc"] = nullptr;
-  }
+  return x;
+}
+
+json plc_json(const EvidenceInputs& in) {
+  if (!in.plc) return nullptr;
+  const auto& p = *in.plc;
+  json outputs = json::array();
+  for (const auto& o : p.outputs) outputs.push_back(plc_output_json(o));
+  json map = json::array();
+  for (const auto& b : p.map) map.push_back({{"matrix", b.what}, {"variable", b.variable}, {"note", b.note}});
+  return {{"file", p.file}, {"sha256", p.sha256}, {"pou", p.pou}, {"relation", p.relation},
+          {"scan_ms", p.scan_ms}, {"map_source", p.map_source}, {"map", map}, {"assumptions", p.assumptions},
+          {"outputs", outputs}, {"interrupted", p.interrupted}};
+}
+
+json conclusion_json(const evidence_detail::Document& d) {
+  std::vector<const PropertyResult*> requirement_results;
+  for (const auto& r : d.requirements) requirement_results.push_back(r.result);
+  return {{"counts", counts_json(d.counts)},
+          {"requirements", counts_json(count_of(requirement_results))},
+          {"standard", counts_json(count_of(d.standard))},
+          {"requirements_not_passed", d.requirements_not_passed},
+          {"statement", d.conclusion}};
+}
+
+}  // namespace
+
+std::string evidence_json(const model::Matrix& m, const EvidenceInputs& in) {
+  const evidence_detail::Document d = evidence_detail::build_document(m, in);
+  json j;
+  j["format"] = "cemv-evidence/1";
+  j["tool"] = {{"name", "cemv"}, {"version", in.check.tool_version}};
+  j["date"] = in.date;
+  j["support_mode"] = checker::to_string(in.check.support_mode);
+  j["matrix"] = matrix_json(m, in);
+  j["sources"] = sources_json(m);
+  j["parameters"] = parameters_json(m);
+  j["property_files"] = property_files_json(in);
+  j["validation"] = validation_json(d, in);
+  j["checked"] = d.valid;
+  j["requirements"] = requirements_json(d);
+  j["standard"] = standard_json(d, in);
+  j["grid"] = {{"support_cells", cells_json(d.support_cells)}, {"trace_cells", cells_json(d.trace_cells)}};
+  j["limitations"] = limitations_json(d);
+  j["response"] = response_json(in);
+  j["defeats"] = defeats_json(in);
+  j["plc"] = plc_json(in);
   j["coverage"] = in.coverage ? json{{"file", in.coverage->file}, {"objectives", in.coverage->objectives},
                                      {"covered", in.coverage->covered}, {"infeasible", in.coverage->infeasible},
                                      {"undecided", in.coverage->undecided}, {"tests", in.coverage->tests}}
@@ -199,13 +248,7 @@ std::string evidence_json(const model::Matrix& m, const EvidenceInputs& in) {
                                      {"equivalent", in.mutation->equivalent}, {"detected", in.mutation->detected},
                                      {"survived", in.mutation->survived}, {"undecided", in.mutation->undecided}}
                               : json();
-  std::vector<const PropertyResult*> requirement_results;
-  for (const auto& r : d.requirements) requirement_results.push_back(r.result);
-  j["conclusion"] = {{"counts", counts_json(d.counts)},
-                     {"requirements", counts_json(count_of(requirement_results))},
-                     {"standard", counts_json(count_of(d.standard))},
-                     {"requirements_not_passed", d.requirements_not_passed},
-                     {"statement", d.conclusion}};
+  j["conclusion"] = conclusion_json(d);
   j["signoff"] = {{"assessor", nullptr}, {"role", nullptr}, {"date", nullptr}, {"conclusion", nullptr},
                   {"remarks", nullptr}, {"signature", nullptr}};
   return j.dump(1) + "\n";
