@@ -119,32 +119,101 @@ nlohmann::ordered_json value_json(model::FieldType type, int v) {
   return v;
 }
 
+// Option conflicts, after every destination has been checked.
+void check_option_conflicts(const SimulateOptions& o, bool quiet) {
+  const bool tracing = !o.trace_file.empty();
+  if (o.trace_changes && !tracing) throw std::invalid_argument("simulate: --trace-changes needs --trace FILE");
+  if (tracing && o.trace_file == o.out && o.out != "-")
+    throw std::invalid_argument("simulate: --trace and -o name the same file");
+  if (tracing && o.trace_file == "-" && (o.out == "-" && (o.format == "json" || !quiet)))
+    throw std::invalid_argument("simulate: --trace - writes the trace to standard output; give -o FILE for "
+                                "the result, or --quiet");
+  if (o.files.size() == 2 && o.files[0] == "-" && o.files[1] == "-")
+    throw std::invalid_argument("simulate: '-' (standard input) can be read only once");
+}
+
+// The JSON steps whose expectations are due in cycle c, with their outcomes.
+void add_due_steps(const formats::Scenario& sc, const formats::ExpandedScenario& ex, std::size_t c, std::uint32_t cycle_ms,
+                   const std::vector<formats::ExpectationOutcome>& outcomes, nlohmann::ordered_json& steps) {
+  for (const auto& check : ex.checks) {
+    if (check.cycle != c) continue;
+    const formats::ScenarioStep& st = sc.steps[check.step];
+    nlohmann::ordered_json step;
+    step["step"] = check.step;
+    if (!st.description.empty()) step["description"] = st.description;
+    step["cycle"] = c + 1;
+    step["t_ms"] = static_cast<std::uint64_t>(c) * cycle_ms;
+    nlohmann::ordered_json expectations = nlohmann::ordered_json::array();
+    for (const auto& outcome : outcomes) {
+      if (outcome.step != check.step) continue;
+      const formats::Expectation& x = *outcome.expectation;
+      expectations.push_back({{"key", x.key},
+                              {"expected", value_json(x.type, x.expected)},
+                              {"observed", outcome.actual ? value_json(x.type, *outcome.actual)
+                                                          : nlohmann::ordered_json(nullptr)},
+                              {"pass", outcome.ok}});
+    }
+    step["expectations"] = std::move(expectations);
+    steps.push_back(std::move(step));
+  }
+}
+
+// What a run of the scenario counted, for its summary.
+struct RunSummary {
+  std::string matrix_file, scenario_file, signature;
+  std::size_t steps = 0, cycles = 0, checked = 0, failed = 0;
+  std::uint64_t refused = 0;
+};
+
+std::string simulation_json(const model::Matrix& m, const RunSummary& r, nlohmann::ordered_json steps) {
+  nlohmann::ordered_json j;
+  j["format"] = "cemv-simulation/1";
+  j["matrix"] = m.name;
+  j["signature"] = r.signature;
+  j["matrix_file"] = input_name(r.matrix_file);
+  j["scenario"] = r.scenario_file;
+  j["cycle_ms"] = m.cycle_ms;
+  j["cycles"] = r.cycles;
+  j["expectations"] = r.checked;
+  j["failed"] = r.failed;
+  j["commands_refused"] = r.refused;
+  j["steps"] = std::move(steps);
+  j["verdict"] = r.failed == 0 ? "PASS" : "FAIL";
+  return j.dump(2) + "\n";
+}
+
+std::string simulation_text(const model::Matrix& m, const RunSummary& r, const reports::TimingTable& timing,
+                            const std::string& pictures_named) {
+  std::ostringstream text;
+  timing.print(text, m.cycle_ms);
+  text << "matrix " << m.name << " signature " << r.signature << "\n";
+  text << "scenario " << r.scenario_file << ": " << r.steps << " steps, " << r.cycles << " cycles, " << r.checked
+       << " expectations, " << r.failed << " failed";
+  if (r.refused) text << ", " << r.refused << (r.refused == 1 ? " command" : " commands") << " refused";
+  text << "\n" << pictures_named << (r.failed == 0 ? "PASS" : "FAIL") << "\n";
+  return text.str();
+}
+
 int run_simulate(const SimulateOptions& o, bool quiet) {
   // Every destination is checked before the scenario runs.
   check_writable(o.out);
   const bool tracing = !o.trace_file.empty();
   if (tracing) check_writable(o.trace_file);
   TracePictures pictures(o.svg_file, o.vcd_file);  // checks its destinations now, before the run
-  if (o.trace_changes && !tracing) throw std::invalid_argument("simulate: --trace-changes needs --trace FILE");
-  if (tracing && o.trace_file == o.out && o.out != "-")
-    throw std::invalid_argument("simulate: --trace and -o name the same file");
+  check_option_conflicts(o, quiet);
   const bool json_format = o.format == "json";
-  if (tracing && o.trace_file == "-" && (o.out == "-" && (json_format || !quiet)))
-    throw std::invalid_argument("simulate: --trace - writes the trace to standard output; give -o FILE for "
-                                "the result, or --quiet");
 
-  if (o.files.size() == 2 && o.files[0] == "-" && o.files[1] == "-")
-    throw std::invalid_argument("simulate: '-' (standard input) can be read only once");
-  const std::string scenario_file = input_name(o.files.back());
+  RunSummary summary;
+  summary.scenario_file = input_name(o.files.back());
   // The matrix first when both are given, so its errors come first.
   std::optional<model::Matrix> given;
   if (o.files.size() == 2) given = load_valid_matrix(o.files[0], "simulated");
   const std::string scenario_text = read_input(o.files.back());
-  const std::string matrix_file = matrix_of(o.files, scenario_text, o.trust_paths);
-  model::Matrix m = given ? std::move(*given) : load_valid_matrix(matrix_file, "simulated");
-  formats::Scenario sc = formats::parse_scenario(scenario_text, m, scenario_file);
+  summary.matrix_file = matrix_of(o.files, scenario_text, o.trust_paths);
+  model::Matrix m = given ? std::move(*given) : load_valid_matrix(summary.matrix_file, "simulated");
+  formats::Scenario sc = formats::parse_scenario(scenario_text, m, summary.scenario_file);
   formats::ExpandedScenario ex = formats::expand_scenario(sc, m);
-  const std::string sig = formats::signature(m);
+  summary.signature = formats::signature(m);
 
   runtime::Runtime rt(m);
   const model::InputTable& inputs = rt.inputs();
@@ -160,21 +229,20 @@ int run_simulate(const SimulateOptions& o, bool quiet) {
   if (tracing) {
     trace_out.emplace(o.trace_file);
     trace_buffer.emplace(*trace_out);
-    trace.emplace(m, inputs, obs, outputs, sig, [&](std::string_view t) { trace_buffer->write(t); },
+    trace.emplace(m, inputs, obs, outputs, summary.signature, [&](std::string_view t) { trace_buffer->write(t); },
                   formats::TraceWriter::Options{o.trace_changes});
   }
 
   nlohmann::ordered_json steps = nlohmann::ordered_json::array();
   std::vector<int> snap;
   const RuntimeValues values(rt, obs, snap);
-  std::uint64_t refused_total = 0;
   std::vector<std::optional<bool>> output_values;
   for (std::size_t c = 0; c < ex.cycles.size(); ++c) {
     const model::CycleInput& in = ex.cycles[c];
     rt.step(in);
     rt.snapshot(snap);
     pictures.record(in, snap);
-    refused_total += static_cast<std::uint64_t>(rt.commands_refused());
+    summary.refused += static_cast<std::uint64_t>(rt.commands_refused());
     if (!json_format) timing.record(c + 1, in, snap);
     if (trace) {
       output_values.clear();
@@ -185,63 +253,23 @@ int run_simulate(const SimulateOptions& o, bool quiet) {
     for (const auto& outcome : outcomes)
       if (!outcome.ok) pictures.mark(outcome, m.cycle_ms);
     if (json_format) {
-      // The step ends with this cycle when its expectations are due now.
-      for (const auto& check : ex.checks) {
-        if (check.cycle != c) continue;
-        const formats::ScenarioStep& st = sc.steps[check.step];
-        nlohmann::ordered_json step;
-        step["step"] = check.step;
-        if (!st.description.empty()) step["description"] = st.description;
-        step["cycle"] = c + 1;
-        step["t_ms"] = static_cast<std::uint64_t>(c) * m.cycle_ms;
-        nlohmann::ordered_json expectations = nlohmann::ordered_json::array();
-        for (const auto& outcome : outcomes) {
-          if (outcome.step != check.step) continue;
-          const formats::Expectation& x = *outcome.expectation;
-          expectations.push_back({{"key", x.key},
-                                  {"expected", value_json(x.type, x.expected)},
-                                  {"observed", outcome.actual ? value_json(x.type, *outcome.actual)
-                                                              : nlohmann::ordered_json(nullptr)},
-                                  {"pass", outcome.ok}});
-        }
-        step["expectations"] = std::move(expectations);
-        steps.push_back(std::move(step));
-      }
+      add_due_steps(sc, ex, c, m.cycle_ms, outcomes, steps);
       continue;
     }
     for (const auto& outcome : outcomes)
       if (!outcome.ok) result.write(outcome.failure_text(m.cycle_ms) + "\n");
   }
 
-  const bool pass = checker.failed() == 0;
+  summary.steps = sc.steps.size();
+  summary.cycles = ex.cycles.size();
+  summary.checked = checker.checked();
+  summary.failed = checker.failed();
   std::ostringstream pictures_named;  // one line per file written
-  pictures.write(m, "Scenario " + scenario_file + " on matrix " + m.name, pictures_named);
-  if (json_format) {
-    nlohmann::ordered_json j;
-    j["format"] = "cemv-simulation/1";
-    j["matrix"] = m.name;
-    j["signature"] = sig;
-    j["matrix_file"] = input_name(matrix_file);
-    j["scenario"] = scenario_file;
-    j["cycle_ms"] = m.cycle_ms;
-    j["cycles"] = ex.cycles.size();
-    j["expectations"] = checker.checked();
-    j["failed"] = checker.failed();
-    j["commands_refused"] = refused_total;
-    j["steps"] = std::move(steps);
-    j["verdict"] = pass ? "PASS" : "FAIL";
-    result.write(j.dump(2) + "\n");
-  } else if (!quiet) {
-    std::ostringstream text;
-    timing.print(text, m.cycle_ms);
-    text << "matrix " << m.name << " signature " << sig << "\n";
-    text << "scenario " << scenario_file << ": " << sc.steps.size() << " steps, " << ex.cycles.size()
-         << " cycles, " << checker.checked() << " expectations, " << checker.failed() << " failed";
-    if (refused_total)
-      text << ", " << refused_total << (refused_total == 1 ? " command" : " commands") << " refused";
-    text << "\n" << pictures_named.str() << (pass ? "PASS" : "FAIL") << "\n";
-    result.write(text.str());
-  }
+  pictures.write(m, "Scenario " + summary.scenario_file + " on matrix " + m.name, pictures_named);
+  if (json_format)
+    result.write(simulation_json(m, summary, std::move(steps)));
+  else if (!quiet)
+    result.write(simulation_text(m, summary, timing, pictures_named.str()));
   // The trace is complete before the result is: a reader that sees PASS finds
   // the whole trace in place.
   if (trace) {
@@ -250,7 +278,7 @@ int run_simulate(const SimulateOptions& o, bool quiet) {
     trace_out->commit();
   }
   result.commit();
-  return pass ? 0 : 1;
+  return summary.failed == 0 ? 0 : 1;
 }
 
 }  // namespace
