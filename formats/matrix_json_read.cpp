@@ -110,26 +110,74 @@ void read_provenance(Reader& r, const InJson& j, const std::string& path, Proven
   });
 }
 
+namespace {
+
+// `format` names cemv-matrix/1; false when the document is not read further.
+// A different format would drown the real problem in unknown keys, and a
+// file that is no matrix at all (a path in a scenario may name any file)
+// gets no word of its content quoted: only a cemv format's name is.
+bool read_format(Reader& r, const InJson& root) {
+  if (!root.contains("format")) {
+    r.error("format", "required key is missing (expected '" + std::string(kMatrixFormat) + "')");
+    return root.contains("causes") || root.contains("effects");
+  }
+  const auto& f = root["format"];
+  if (f.is_string() && f.get_ref<const std::string&>() == kMatrixFormat) return true;
+  const bool ours = f.is_string() && f.get_ref<const std::string&>().rfind("cemv-", 0) == 0;
+  r.error("format", (ours ? in_quotes(f.get_ref<const std::string&>()) : f.is_string() ? std::string("the value") : Reader::describe(f)) +
+                        " is not a supported format; expected '" + kMatrixFormat + "'");
+  return false;
+}
+
+// One SIF group: a name, or {"name": ..., "process_safety_time_ms": N}.
+void read_sif_group(Reader& r, const InJson& v, const std::string& kp, int number, Matrix& m) {
+  std::string name;
+  if (!v.is_object()) {
+    if (r.text(v, kp, name)) m.sif_groups[number] = name;
+    return;
+  }
+  std::optional<std::uint32_t> pst;
+  bool named = false;
+  r.object(v, kp, {
+      {"name", true, [&](const InJson& v2, const std::string& p2) { named = r.text(v2, p2, name); }},
+      {"process_safety_time_ms", false,
+       [&](const InJson& v2, const std::string& p2) {
+         std::uint32_t ms = 0;
+         if (!v2.is_null() && r.integer(v2, p2, 1, kU32Max, ms, "a process safety time is positive")) pst = ms;
+       }},
+  });
+  if (!named) return;
+  m.sif_groups[number] = name;
+  if (pst) m.process_safety_time_ms[number] = *pst;
+}
+
+void read_sif_groups(Reader& r, const InJson& v, const std::string& p, Matrix& m) {
+  if (!v.is_object()) {
+    r.error(p, "expected an object mapping group numbers to names, got " + Reader::describe(v));
+    return;
+  }
+  for (auto it = v.begin(); it != v.end(); ++it) {
+    const std::string& key = it.key();
+    const std::string kp = member_path(p, key);
+    int number = 0;
+    auto [end, ec] = std::from_chars(key.data(), key.data() + key.size(), number);
+    const bool canonical = ec == std::errc{} && end == key.data() + key.size() && key[0] != '0';
+    if (!canonical || number < 1 || number > kMaxSifGroups) {
+      r.error(kp, "SIF group numbers are 1-64 written without leading zeros, got " + in_quotes(key));
+      continue;
+    }
+    read_sif_group(r, it.value(), kp, number, m);
+  }
+}
+
+}  // namespace
+
 void read_matrix(Reader& r, const InJson& root, Matrix& m) {
   if (!root.is_object()) {
     r.error("", "the top level must be a JSON object (a cemv-matrix/1 document), got " + Reader::describe(root));
     return;
   }
-  // A different format would drown the real problem in unknown keys, and a
-  // file that is no matrix at all (a path in a scenario may name any file)
-  // gets no word of its content quoted: only a cemv format's name is.
-  if (!root.contains("format")) {
-    r.error("format", "required key is missing (expected '" + std::string(kMatrixFormat) + "')");
-    if (!root.contains("causes") && !root.contains("effects")) return;
-  } else {
-    const auto& f = root["format"];
-    if (!f.is_string() || f.get_ref<const std::string&>() != kMatrixFormat) {
-      const bool ours = f.is_string() && f.get_ref<const std::string&>().rfind("cemv-", 0) == 0;
-      r.error("format", (ours ? in_quotes(f.get_ref<const std::string&>()) : f.is_string() ? std::string("the value") : Reader::describe(f)) +
-                            " is not a supported format; expected '" + kMatrixFormat + "'");
-      return;
-    }
-  }
+  if (!read_format(r, root)) return;
   r.object(root, "", {
       {"format", false, [](const InJson&, const std::string&) {}},
       {"name", true, [&](const InJson& v, const std::string& p) { r.element_name(v, p, m.name); }},
@@ -141,44 +189,7 @@ void read_matrix(Reader& r, const InJson& root, Matrix& m) {
          std::uint32_t ms = 0;
          if (!v.is_null() && r.integer(v, p, 1, kU32Max, ms, "must be positive")) m.watchdog_ms = ms;
        }},
-      {"sif_groups", false,
-       [&](const InJson& v, const std::string& p) {
-         if (!v.is_object()) {
-           r.error(p, "expected an object mapping group numbers to names, got " + Reader::describe(v));
-           return;
-         }
-         for (auto it = v.begin(); it != v.end(); ++it) {
-           const std::string& key = it.key();
-           std::string kp = member_path(p, key);
-           int number = 0;
-           auto [end, ec] = std::from_chars(key.data(), key.data() + key.size(), number);
-           bool canonical = ec == std::errc{} && end == key.data() + key.size() && key[0] != '0';
-           if (!canonical || number < 1 || number > kMaxSifGroups) {
-             r.error(kp, "SIF group numbers are 1-64 written without leading zeros, got " + in_quotes(key));
-             continue;
-           }
-           // A name, or {"name": ..., "process_safety_time_ms": N}.
-           std::string name;
-           if (it.value().is_object()) {
-             std::optional<std::uint32_t> pst;
-             bool named = false;
-             r.object(it.value(), kp, {
-                 {"name", true, [&](const InJson& v2, const std::string& p2) { named = r.text(v2, p2, name); }},
-                 {"process_safety_time_ms", false,
-                  [&](const InJson& v2, const std::string& p2) {
-                    std::uint32_t ms = 0;
-                    if (!v2.is_null() && r.integer(v2, p2, 1, kU32Max, ms, "a process safety time is positive"))
-                      pst = ms;
-                  }},
-             });
-             if (!named) continue;
-             m.sif_groups[number] = name;
-             if (pst) m.process_safety_time_ms[number] = *pst;
-           } else if (r.text(it.value(), kp, name)) {
-             m.sif_groups[number] = name;
-           }
-         }
-       }},
+      {"sif_groups", false, [&](const InJson& v, const std::string& p) { read_sif_groups(r, v, p, m); }},
       {"secure_write", false,
        [&](const InJson& v, const std::string& p) {
          if (v.is_null()) return;
