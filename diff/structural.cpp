@@ -209,29 +209,46 @@ bool StructuralDiff::any_critical() const {
   return std::any_of(changes.begin(), changes.end(), [](const ElementChange& c) { return c.critical(); });
 }
 
-StructuralDiff compare_structure(const model::Matrix& old_m, const model::Matrix& new_m) {
-  StructuralDiff d;
-  d.cause_map = match(old_m.causes, new_m.causes);
-  d.effect_map = match(old_m.effects, new_m.effects);
-  // OLD with its references in NEW's numbering: a reference that follows its
-  // moved element is not a change.
-  model::Matrix old_r = old_m;
-  renumber_refs(old_r, d.cause_map, d.effect_map);
-  const json o = json::parse(formats::to_canonical_json(old_r));
-  const json n = json::parse(formats::to_canonical_json(new_m));
+namespace {
 
-  ElementChange mx;
-  mx.element = ElementChange::Element::Matrix;
-  json om = o, nm = n;
-  for (const char* k : {"causes", "effects", "intersections"}) {
-    om.erase(k);
-    nm.erase(k);
+// Compares OLD and NEW element by element, over their canonical JSON, with
+// OLD's references already in NEW's numbering.
+class StructureComparer {
+ public:
+  StructureComparer(const model::Matrix& old_m, const model::Matrix& new_m, StructuralDiff& d)
+      : old_m_(old_m), new_m_(new_m), d_(d) {
+    // OLD with its references in NEW's numbering: a reference that follows
+    // its moved element is not a change.
+    model::Matrix old_r = old_m;
+    renumber_refs(old_r, d.cause_map, d.effect_map);
+    o_ = json::parse(formats::to_canonical_json(old_r));
+    n_ = json::parse(formats::to_canonical_json(new_m));
   }
-  compare_json(om, nm, "", "matrix", mx.fields);
-  if (!mx.fields.empty()) d.changes.push_back(mx);
 
-  auto elements = [&](const char* list, ElementChange::Element kind, const std::map<int, int>& map,
-                      const auto& olds, const auto& news) {
+  void compare() {
+    compare_matrix_fields();
+    compare_elements("causes", ElementChange::Element::Cause, d_.cause_map, old_m_.causes, new_m_.causes);
+    compare_elements("effects", ElementChange::Element::Effect, d_.effect_map, old_m_.effects, new_m_.effects);
+    compare_intersections();
+  }
+
+ private:
+  void compare_matrix_fields() {
+    ElementChange mx;
+    mx.element = ElementChange::Element::Matrix;
+    json om = o_, nm = n_;
+    for (const char* k : {"causes", "effects", "intersections"}) {
+      om.erase(k);
+      nm.erase(k);
+    }
+    compare_json(om, nm, "", "matrix", mx.fields);
+    if (!mx.fields.empty()) d_.changes.push_back(mx);
+  }
+
+  // Causes or effects: removed, moved, changed, then added.
+  template <class E>
+  void compare_elements(const char* list, ElementChange::Element kind, const std::map<int, int>& map,
+                        const std::vector<E>& olds, const std::vector<E>& news) {
     std::set<int> matched_new;
     for (const auto& x : olds) {
       ElementChange c;
@@ -241,19 +258,19 @@ StructuralDiff compare_structure(const model::Matrix& old_m, const model::Matrix
       auto it = map.find(x.id);
       if (it == map.end()) {
         c.kind = ChangeKind::Removed;
-        d.changes.push_back(c);
+        d_.changes.push_back(c);
         continue;
       }
       c.new_id = it->second;
       matched_new.insert(it->second);
-      compare_json(element_json(o, list, x.id), element_json(n, list, c.new_id), "",
+      compare_json(element_json(o_, list, x.id), element_json(n_, list, c.new_id), "",
                    kind == ElementChange::Element::Cause ? "cause" : "effect", c.fields);
       for (const auto& y : news)
         if (y.id == c.new_id) c.name = y.name;
       if (c.old_id != c.new_id) c.kind = ChangeKind::Moved;
       else if (!c.fields.empty()) c.kind = ChangeKind::Changed;
       else continue;
-      d.changes.push_back(c);
+      d_.changes.push_back(c);
     }
     for (const auto& y : news) {
       if (matched_new.count(y.id)) continue;
@@ -262,55 +279,70 @@ StructuralDiff compare_structure(const model::Matrix& old_m, const model::Matrix
       c.kind = ChangeKind::Added;
       c.new_id = y.id;
       c.name = y.name;
-      d.changes.push_back(c);
+      d_.changes.push_back(c);
     }
-  };
-  elements("causes", ElementChange::Element::Cause, d.cause_map, old_m.causes, new_m.causes);
-  elements("effects", ElementChange::Element::Effect, d.effect_map, old_m.effects, new_m.effects);
+  }
+
+  static int mapped(const std::map<int, int>& m, int id) {
+    auto it = m.find(id);
+    return it == m.end() ? 0 : it->second;
+  }
 
   // Intersections by their matched cells; a cell of an unmatched element is
   // added or removed with it.
-  std::set<std::pair<int, int>> seen_new;
-  auto mapped = [](const std::map<int, int>& m, int id) {
-    auto it = m.find(id);
-    return it == m.end() ? 0 : it->second;
-  };
-  for (const auto& is : old_m.intersections) {
-    ElementChange c;
-    c.element = ElementChange::Element::Intersection;
-    c.old_id = is.cause;
-    c.old_effect = is.effect;
-    c.new_id = mapped(d.cause_map, is.cause);
-    c.new_effect = mapped(d.effect_map, is.effect);
-    const model::Intersection* other =
-        c.new_id && c.new_effect ? new_m.find_intersection(c.new_id, c.new_effect) : nullptr;
-    if (!other) {
-      c.kind = ChangeKind::Removed;
-      c.new_id = c.new_effect = 0;
-      d.changes.push_back(c);
-      continue;
+  void compare_intersections() {
+    std::set<std::pair<int, int>> seen_new;
+    for (const auto& is : old_m_.intersections) {
+      ElementChange c;
+      c.element = ElementChange::Element::Intersection;
+      c.old_id = is.cause;
+      c.old_effect = is.effect;
+      c.new_id = mapped(d_.cause_map, is.cause);
+      c.new_effect = mapped(d_.effect_map, is.effect);
+      const model::Intersection* other =
+          c.new_id && c.new_effect ? new_m_.find_intersection(c.new_id, c.new_effect) : nullptr;
+      if (!other) {
+        c.kind = ChangeKind::Removed;
+        c.new_id = c.new_effect = 0;
+        d_.changes.push_back(c);
+        continue;
+      }
+      seen_new.insert({other->cause, other->effect});
+      json a = intersection_json(o_, is.cause, is.effect), b = intersection_json(n_, other->cause, other->effect);
+      for (json* x : {&a, &b}) {
+        x->erase("cause");
+        x->erase("effect");
+      }
+      compare_json(a, b, "", "intersection", c.fields);
+      if (c.fields.empty()) continue;
+      c.kind = ChangeKind::Changed;
+      d_.changes.push_back(c);
     }
-    seen_new.insert({other->cause, other->effect});
-    json a = intersection_json(o, is.cause, is.effect), b = intersection_json(n, other->cause, other->effect);
-    a.erase("cause");
-    a.erase("effect");
-    b.erase("cause");
-    b.erase("effect");
-    compare_json(a, b, "", "intersection", c.fields);
-    if (c.fields.empty()) continue;
-    c.kind = ChangeKind::Changed;
-    d.changes.push_back(c);
+    for (const auto& is : new_m_.intersections) {
+      if (seen_new.count({is.cause, is.effect})) continue;
+      ElementChange c;
+      c.element = ElementChange::Element::Intersection;
+      c.kind = ChangeKind::Added;
+      c.new_id = is.cause;
+      c.new_effect = is.effect;
+      c.fields.push_back(FieldChange{"type", "", std::string("\"") + model::to_string(is.type) + "\"", true});
+      d_.changes.push_back(c);
+    }
   }
-  for (const auto& is : new_m.intersections) {
-    if (seen_new.count({is.cause, is.effect})) continue;
-    ElementChange c;
-    c.element = ElementChange::Element::Intersection;
-    c.kind = ChangeKind::Added;
-    c.new_id = is.cause;
-    c.new_effect = is.effect;
-    c.fields.push_back(FieldChange{"type", "", std::string("\"") + model::to_string(is.type) + "\"", true});
-    d.changes.push_back(c);
-  }
+
+  const model::Matrix& old_m_;
+  const model::Matrix& new_m_;
+  StructuralDiff& d_;
+  json o_, n_;
+};
+
+}  // namespace
+
+StructuralDiff compare_structure(const model::Matrix& old_m, const model::Matrix& new_m) {
+  StructuralDiff d;
+  d.cause_map = match(old_m.causes, new_m.causes);
+  d.effect_map = match(old_m.effects, new_m.effects);
+  StructureComparer(old_m, new_m, d).compare();
   return d;
 }
 
