@@ -11,6 +11,7 @@
 #include "testgen/field.hpp"
 #include "testgen/field_words.hpp"
 #include "testgen/testgen.hpp"
+#include "tests/support/random_matrix.hpp"
 
 namespace {
 
@@ -116,4 +117,37 @@ TEST(Field, OutputsInPlantWords) {
   EXPECT_EQ(words(4, 1, 1), "XA_200 on (energized)");           // ETT horn and beacon
 }
 
+// Seeded matrices whose bypass, inhibit and reset tags are often internal
+// references (I.3): such a "switch" follows the element it names, so no step
+// tells the technician to press or switch it; its effect's latch, which no
+// field action resets, is said at the end. Every test still replays green
+// (generate_field_suite throws otherwise) and the suite is reproducible.
+TEST(Field, InternalReferenceSwitchesAreNotFieldActions) {
+  const std::regex acts_on_reference(R"((Press|Switch) (Cause|Effect)\[)");
+  testsupport::MatrixOptions opt;
+  opt.p_control_ref = 0.5;
+  opt.min_causes = 6;
+  opt.max_causes = 12;
+  opt.min_effects = 4;
+  opt.max_effects = 10;
+  int references = 0;
+  for (std::uint64_t seed = 1; seed <= 24; ++seed) {
+    SCOPED_TRACE(seed);
+    const model::Matrix m = seed <= 16 ? testsupport::random_matrix(seed, opt) : testsupport::square_matrix(12, seed - 14);
+    for (const auto& c : m.causes)
+      for (const auto* tag : {&c.bypass_tag, &c.inhibit_tag})
+        references += *tag && model::parse_internal_ref(**tag) ? 1 : 0;
+    testgen::FieldSuite s;
+    ASSERT_NO_THROW(s = testgen::generate_field_suite(m));
+    for (const auto& t : s.tests)
+      for (const auto& st : t.steps)
+        for (const auto& a : st.actions) EXPECT_FALSE(std::regex_search(a, acts_on_reference)) << t.id << ": " << a;
+    const testgen::FieldSuite again = testgen::generate_field_suite(m);
+    ASSERT_EQ(again.tests.size(), s.tests.size());
+    for (std::size_t i = 0; i < s.tests.size(); ++i) EXPECT_EQ(again.tests[i].scenario_json, s.tests[i].scenario_json);
+  }
+  EXPECT_GT(references, 10);  // the case this test is about occurs
+}
+
 }  // namespace
+

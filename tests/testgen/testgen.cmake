@@ -4,7 +4,7 @@ if(TARGET cemv_testgen)
   target_compile_definitions(test_testgen PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   gtest_discover_tests(test_testgen DISCOVERY_TIMEOUT 60)
   add_executable(test_field ${CMAKE_CURRENT_LIST_DIR}/test_field.cpp)
-  target_link_libraries(test_field PRIVATE cemv_testgen GTest::gtest_main)
+  target_link_libraries(test_field PRIVATE cemv_testgen cemv_testsupport GTest::gtest_main)
   target_compile_definitions(test_field PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
   gtest_discover_tests(test_field DISCOVERY_TIMEOUT 60)
 
