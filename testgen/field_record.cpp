@@ -32,48 +32,66 @@ std::string element_of(const Objective& o) {
   return model::to_string(o.element);
 }
 
-}  // namespace
+using StepKey = std::pair<std::string, int>;  // test id, step number
 
-formats::Acceptance record_acceptance(const model::Matrix& m, const FieldSuite& s,
-                                      const std::vector<formats::FilledChecklist>& filled, const std::string& tool) {
-  formats::Acceptance a;
-  a.matrix = m.name;
-  a.signature = s.signature;
-  a.tool = tool;
-  std::map<std::pair<std::string, int>, std::size_t> index;
-  std::map<std::pair<std::string, int>, const FieldTestStep*> steps;
-  for (const auto& t : s.tests)
-    for (const auto& st : t.steps) {
-      index[{t.id, st.number}] = a.steps.size();
-      steps[{t.id, st.number}] = &st;
-      formats::StepAcceptance sa;
-      sa.test = t.id;
-      sa.step = st.number;
-      sa.phase = st.phase;
-      sa.objectives = st.objectives;
-      sa.objectives.insert(sa.objectives.end(), st.again.begin(), st.again.end());
-      a.steps.push_back(std::move(sa));
-    }
-  std::vector<formats::LoadIssue> issues;
-  for (const auto& c : filled) {
-    a.checklists.push_back(c.file);
-    if (c.signature != s.signature) {
+// The acceptance status of one matrix version from its filled checklists:
+// the steps first, then the elements they witness.
+class AcceptanceRecorder {
+ public:
+  AcceptanceRecorder(const model::Matrix& m, const FieldSuite& s, const std::string& tool) : m_(m), s_(s) {
+    a_.matrix = m.name;
+    a_.signature = s.signature;
+    a_.tool = tool;
+  }
+
+  formats::Acceptance record(const std::vector<formats::FilledChecklist>& filled) {
+    list_steps();
+    std::vector<formats::LoadIssue> issues;
+    for (const auto& c : filled) read_checklist(c, issues);
+    if (!issues.empty()) throw formats::LoadError(issues);
+    list_elements();
+    judge_elements();
+    return std::move(a_);
+  }
+
+ private:
+  // Every step of the field suite, open, with the objectives it witnesses.
+  void list_steps() {
+    for (const auto& t : s_.tests)
+      for (const auto& st : t.steps) {
+        index_[{t.id, st.number}] = a_.steps.size();
+        steps_[{t.id, st.number}] = &st;
+        formats::StepAcceptance sa;
+        sa.test = t.id;
+        sa.step = st.number;
+        sa.phase = st.phase;
+        sa.objectives = st.objectives;
+        sa.objectives.insert(sa.objectives.end(), st.again.begin(), st.again.end());
+        a_.steps.push_back(std::move(sa));
+      }
+  }
+
+  // One filled checklist: of this version, its rows the suite's steps with
+  // their actions unchanged; each result recorded on its step.
+  void read_checklist(const formats::FilledChecklist& c, std::vector<formats::LoadIssue>& issues) {
+    a_.checklists.push_back(c.file);
+    if (c.signature != s_.signature) {
       issues.push_back(at_line(c.file, c.signature_line,
-                               "the checklist is for the matrix with signature " + c.signature + ", not " + m.name +
-                                   " with signature " + s.signature + " (a checklist of another version)"));
-      continue;
+                               "the checklist is for the matrix with signature " + c.signature + ", not " + m_.name +
+                                   " with signature " + s_.signature + " (a checklist of another version)"));
+      return;
     }
-    if (c.resolution != s.resolution)
+    if (c.resolution != s_.resolution)
       issues.push_back(at_line(c.file, 1, "the checklists differ in their resolution (record them one resolution at a time)"));
     for (const auto& r : c.rows) {
-      auto it = index.find({r.test, r.step});
-      if (it == index.end()) {
-        issues.push_back(at_line(c.file, r.line, "the field suite of " + m.name + " has no step " + r.test + " / " +
+      auto it = index_.find({r.test, r.step});
+      if (it == index_.end()) {
+        issues.push_back(at_line(c.file, r.line, "the field suite of " + m_.name + " has no step " + r.test + " / " +
                                                      std::to_string(r.step)));
         continue;
       }
       std::string want;
-      for (const auto& x : steps.at({r.test, r.step})->actions) want += (want.empty() ? "" : "\n") + x;
+      for (const auto& x : steps_.at({r.test, r.step})->actions) want += (want.empty() ? "" : "\n") + x;
       if (r.action != want) {
         issues.push_back(at_line(c.file, r.line, r.test + " step " + std::to_string(r.step) +
                                                      ": the action is not the one this matrix's field suite gives "
@@ -81,59 +99,78 @@ formats::Acceptance record_acceptance(const model::Matrix& m, const FieldSuite& 
         continue;
       }
       if (r.result.empty()) continue;
-      formats::StepAcceptance& sa = a.steps[it->second];
+      formats::StepAcceptance& sa = a_.steps[it->second];
       sa.records.push_back({r.result, r.initials, r.date, c.file, r.line});
       if (r.result != "OK") sa.status = formats::StepStatus::Deviation;
       else if (sa.status == formats::StepStatus::Open) sa.status = formats::StepStatus::Ok;
     }
   }
-  if (!issues.empty()) throw formats::LoadError(issues);
 
-  // Elements: processed causes, effects, intersections.
-  std::map<std::string, formats::ElementAcceptance> elements;
-  std::vector<std::string> order;
-  auto add = [&](formats::ElementKind kind, int cause, int effect, const std::string& name) {
-    formats::ElementAcceptance e;
-    e.kind = kind;
-    e.cause = cause;
-    e.effect = effect;
-    e.name = name;
-    order.push_back(e.key());
-    elements[e.key()] = std::move(e);
-  };
-  for (const auto& c : m.causes)
-    if (c.function != model::CauseFunction::Comment) add(formats::ElementKind::Cause, c.id, 0, c.name);
-  for (const auto& e : m.effects)
-    if (e.function != model::EffectFunction::Comment) add(formats::ElementKind::Effect, 0, e.id, e.name);
-  for (const auto& i : m.intersections)
-    if (model::is_processed(i.type) && elements.count("cause[" + std::to_string(i.cause) + "]") &&
-        elements.count("effect[" + std::to_string(i.effect) + "]"))
-      add(formats::ElementKind::Intersection, i.cause, i.effect, "");
-  // Each objective's witnessing steps (first and again), each element's objectives and steps.
-  std::map<std::string, std::set<std::size_t>> by_objective;
-  for (const auto& t : s.tests)
-    for (const auto& st : t.steps) {
-      const std::size_t i = index.at({t.id, st.number});
-      for (const auto& id : st.objectives) by_objective[id].insert(i);
-      for (const auto& id : st.again) by_objective[id].insert(i);
-    }
-  std::map<std::string, std::set<std::size_t>> witnessing;
-  std::map<std::string, int> objectives, shown;  // per element: field objectives, those an ok step witnesses
-  for (const auto& o : s.objectives) {
-    if (o.test < 0) continue;
-    const std::string key = element_of(o.objective);
-    const auto& at = by_objective[o.objective.id];
-    witnessing[key].insert(at.begin(), at.end());
-    ++objectives[key];
-    for (std::size_t i : at)
-      if (a.steps[i].status == formats::StepStatus::Ok) {
-        ++shown[key];
-        break;
-      }
+  // Elements: processed causes, effects, intersections, in the matrix's order.
+  void list_elements() {
+    auto add = [&](formats::ElementKind kind, int cause, int effect, const std::string& name) {
+      formats::ElementAcceptance e;
+      e.kind = kind;
+      e.cause = cause;
+      e.effect = effect;
+      e.name = name;
+      order_.push_back(e.key());
+      elements_[e.key()] = std::move(e);
+    };
+    for (const auto& c : m_.causes)
+      if (c.function != model::CauseFunction::Comment) add(formats::ElementKind::Cause, c.id, 0, c.name);
+    for (const auto& e : m_.effects)
+      if (e.function != model::EffectFunction::Comment) add(formats::ElementKind::Effect, 0, e.id, e.name);
+    for (const auto& i : m_.intersections)
+      if (model::is_processed(i.type) && elements_.count("cause[" + std::to_string(i.cause) + "]") &&
+          elements_.count("effect[" + std::to_string(i.effect) + "]"))
+        add(formats::ElementKind::Intersection, i.cause, i.effect, "");
   }
-  for (auto& [key, e] : elements) {
-    for (std::size_t i : witnessing[key]) {
-      const auto& sa = a.steps[i];
+
+  // Each objective's witnessing steps (first and again).
+  std::map<std::string, std::set<std::size_t>> steps_by_objective() const {
+    std::map<std::string, std::set<std::size_t>> by_objective;
+    for (const auto& t : s_.tests)
+      for (const auto& st : t.steps) {
+        const std::size_t i = index_.at({t.id, st.number});
+        for (const auto& id : st.objectives) by_objective[id].insert(i);
+        for (const auto& id : st.again) by_objective[id].insert(i);
+      }
+    return by_objective;
+  }
+
+  // A deviation when a witnessing step is one; accepted when an ok step
+  // witnesses every field objective of the element; not tested otherwise.
+  void judge_elements() {
+    const auto by_objective = steps_by_objective();
+    std::map<std::string, std::set<std::size_t>> witnessing;
+    std::map<std::string, int> objectives, shown;  // per element: field objectives, those an ok step witnesses
+    for (const auto& o : s_.objectives) {
+      if (o.test < 0) continue;
+      const std::string key = element_of(o.objective);
+      const auto found = by_objective.find(o.objective.id);
+      const std::set<std::size_t> none;
+      const auto& at = found == by_objective.end() ? none : found->second;
+      witnessing[key].insert(at.begin(), at.end());
+      ++objectives[key];
+      for (std::size_t i : at)
+        if (a_.steps[i].status == formats::StepStatus::Ok) {
+          ++shown[key];
+          break;
+        }
+    }
+    for (auto& [key, e] : elements_) {
+      count_steps(e, witnessing[key]);
+      e.status = e.steps_deviation                                  ? formats::AcceptanceStatus::Deviation
+                 : objectives[key] > 0 && shown[key] == objectives[key] ? formats::AcceptanceStatus::Accepted
+                                                                   : formats::AcceptanceStatus::NotTested;
+    }
+    for (const auto& k : order_) a_.elements.push_back(elements_.at(k));
+  }
+
+  void count_steps(formats::ElementAcceptance& e, const std::set<std::size_t>& witnessing) const {
+    for (std::size_t i : witnessing) {
+      const auto& sa = a_.steps[i];
       if (sa.status == formats::StepStatus::Ok) ++e.steps_ok;
       else if (sa.status == formats::StepStatus::Open) ++e.steps_open;
       else {
@@ -144,12 +181,22 @@ formats::Acceptance record_acceptance(const model::Matrix& m, const FieldSuite& 
                                    ", " + r.date + ")");
       }
     }
-    e.status = e.steps_deviation                                ? formats::AcceptanceStatus::Deviation
-               : objectives[key] > 0 && shown[key] == objectives[key] ? formats::AcceptanceStatus::Accepted
-                                                                 : formats::AcceptanceStatus::NotTested;
   }
-  for (const auto& k : order) a.elements.push_back(elements.at(k));
-  return a;
+
+  const model::Matrix& m_;
+  const FieldSuite& s_;
+  formats::Acceptance a_;
+  std::map<StepKey, std::size_t> index_;
+  std::map<StepKey, const FieldTestStep*> steps_;
+  std::map<std::string, formats::ElementAcceptance> elements_;
+  std::vector<std::string> order_;
+};
+
+}  // namespace
+
+formats::Acceptance record_acceptance(const model::Matrix& m, const FieldSuite& s,
+                                      const std::vector<formats::FilledChecklist>& filled, const std::string& tool) {
+  return AcceptanceRecorder(m, s, tool).record(filled);
 }
 
 }  // namespace cemv::testgen
