@@ -115,6 +115,16 @@ class EffectBlock {
   bool output_state() const { return output_state_; }  // OS of E.7
 
  private:
+  // The steps of evaluate(), in its order (docs/semantics.md, section E).
+  bool read_reset_edge(Signals& s, std::uint64_t k);                          // E.1
+  void begin_facts(bool hard_bypass, bool bypassed_before, bool reset_tag_edge);
+  std::array<bool, 4> form_requests(const Signals& s);                        // E.2
+  void end_override(const Signals& s, std::uint64_t k, bool req_v, bool req_r);  // E.3 step 1
+  bool toggle_override(const Signals& s, std::uint64_t k, bool req_v, bool req_r, bool reset_tag_edge);  // E.3 step 2
+  void reset_and_latch(bool reset_request, bool req_s, bool req_r, bool was_running);  // E.4, E.5
+  void delay_outputs(std::uint64_t k);                                        // E.7
+  void write_outputs(Signals& s, int slot);                                   // E.8-E.10
+
   EffectConfig cfg_;
 
   // Operator state.
