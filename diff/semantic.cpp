@@ -270,100 +270,136 @@ bool SemanticDiff::any_unknown() const {
                      [](const EffectBehaviour& e) { return e.result.verdict == EquivalenceVerdict::Unknown; });
 }
 
-SemanticDiff compare_behaviour(const model::Matrix& old_m, const model::Matrix& new_m, const StructuralDiff& d,
-                               const SemanticOptions& options) {
-  SemanticDiff out;
-  const Relabelling r = relabel(new_m, d, old_m);
-  const model::Matrix& rel = r.matrix;
-  for (const auto& [n, x] : r.cause_ids) out.relabelled |= n != x;
-  for (const auto& [n, x] : r.effect_ids) out.relabelled |= n != x;
-  std::map<int, int> rel_to_new;
-  for (const auto& [n, x] : r.effect_ids) rel_to_new[x] = n;
+namespace {
 
-  const Cones old_cones(old_m), new_cones(new_m);
-  checker::CancelToken own;
-  checker::CancelToken& cancel = options.cancel ? *options.cancel : own;
-  checker::EquivalenceOptions eo;
-  eo.work = options.work;
-  eo.timeout_s = options.timeout_s;
-  eo.cancel = &cancel;
-  // One group per effect of OLD or NEW, in OLD's numbering, each in its own
-  // slot: the result does not depend on the number of workers.
-  const std::vector<checker::ObservableGroup> groups = checker::effect_groups(old_m, rel);
-  // Each effect undecided ("time limit") until its task decides it: the
-  // cancel token (--total-timeout) may end the run first.
-  auto undecided = [&](std::size_t gi) {
-    const checker::ObservableGroup& g = groups[gi];
+// Compares OLD and NEW effect by effect: each effect's group decided on
+// OLD and NEW relabelled into OLD's numbering, its distinctions carried to
+// NEW's numbering and confirmed there, then the impact set.
+class BehaviourComparer {
+ public:
+  BehaviourComparer(const model::Matrix& old_m, const model::Matrix& new_m, const StructuralDiff& d,
+                    const SemanticOptions& options)
+      : old_m_(old_m), new_m_(new_m), d_(d), options_(options), r_(relabel(new_m, d, old_m)), rel_(r_.matrix),
+        old_cones_(old_m), new_cones_(new_m), cancel_(options.cancel ? *options.cancel : own_) {
+    for (const auto& [n, x] : r_.cause_ids) out_.relabelled |= n != x;
+    for (const auto& [n, x] : r_.effect_ids) out_.relabelled |= n != x;
+    for (const auto& [n, x] : r_.effect_ids) rel_to_new_[x] = n;
+    eo_.work = options.work;
+    eo_.timeout_s = options.timeout_s;
+    eo_.cancel = &cancel_;
+    // One group per effect of OLD or NEW, in OLD's numbering, each in its
+    // own slot: the result does not depend on the number of workers.
+    groups_ = checker::effect_groups(old_m, rel_);
+  }
+
+  SemanticDiff compare() {
+    // Each effect undecided ("time limit") until its task decides it: the
+    // cancel token (--total-timeout) may end the run first.
+    for (std::size_t gi = 0; gi < groups_.size(); ++gi) out_.effects.push_back(undecided(gi));
+    checker::WorkQueue(options_.jobs, cancel_).run(groups_.size(), [&](std::size_t gi) { out_.effects[gi] = decide(gi); });
+    for (const auto& e : out_.effects)
+      if (e.behaviour_changed()) add_to_impact(e);
+    return std::move(out_);
+  }
+
+ private:
+  EffectBehaviour undecided(std::size_t gi) const {
+    const checker::ObservableGroup& g = groups_[gi];
     const int id = g.roots.front().id;
     EffectBehaviour e;
-    e.old_id = old_m.find_effect(id) ? id : 0;
-    e.new_id = rel_to_new.count(id) ? rel_to_new.at(id) : 0;
-    e.name = e.new_id ? new_m.find_effect(e.new_id)->name : old_m.find_effect(id)->name;
-    e.structurally_changed = touched(d, old_cones, new_cones, e.old_id, e.new_id, false);
-    e.critically_changed = touched(d, old_cones, new_cones, e.old_id, e.new_id, true);
+    e.old_id = old_m_.find_effect(id) ? id : 0;
+    e.new_id = rel_to_new_.count(id) ? rel_to_new_.at(id) : 0;
+    e.name = e.new_id ? new_m_.find_effect(e.new_id)->name : old_m_.find_effect(id)->name;
+    e.structurally_changed = touched(d_, old_cones_, new_cones_, e.old_id, e.new_id, false);
+    e.critically_changed = touched(d_, old_cones_, new_cones_, e.old_id, e.new_id, true);
     e.result.group = g.name;
     e.result.unknown = checker::UnknownReason::TimeLimit;
     e.result.reason = checker::to_string(e.result.unknown);
     return e;
-  };
-  for (std::size_t gi = 0; gi < groups.size(); ++gi) out.effects.push_back(undecided(gi));
-  checker::WorkQueue(options.jobs, cancel).run(groups.size(), [&](std::size_t gi) {
-    const checker::ObservableGroup& g = groups[gi];
+  }
+
+  EffectBehaviour decide(std::size_t gi) const {
+    const checker::ObservableGroup& g = groups_[gi];
     const int id = g.roots.front().id;
     EffectBehaviour e = undecided(gi);
-    e.result = checker::decide_equivalence(old_m, rel, g, eo);
+    e.result = checker::decide_equivalence(old_m_, rel_, g, eo_);
     if (e.result.distinction && e.new_id) {
       const auto& dist = *e.result.distinction;
-      e.new_inputs = to_new(dist.run_b.inputs, rel, new_m, r);
+      e.new_inputs = to_new(dist.run_b.inputs, rel_, new_m_, r_);
       // The group is one effect: its keys start with "effect[OLD id]".
       const std::string prefix = "effect[" + std::to_string(id) + "]";
       e.new_key = dist.key.rfind(prefix, 0) == 0
                       ? "effect[" + std::to_string(e.new_id) + "]" + dist.key.substr(prefix.size())
                       : dist.key;
-      if (out.relabelled) confirm_on_new(dist, rel, new_m, r, g.name);
+      if (out_.relabelled) confirm_on_new(dist, rel_, new_m_, r_, g.name);
     }
-    if (e.result.verdict == EquivalenceVerdict::Differs && e.old_id && e.new_id)
-      for (const auto& og : checker::output_groups(old_m, rel))
-        if (og.roots.front().id == id) {
-          if (auto same = from_effect_run(e.result, og, old_m, rel)) {
-            e.outputs.push_back(std::move(*same));
-            continue;
-          }
-          if (auto later = from_continued_effect_run(e.result, og, old_m, rel)) {
-            e.outputs.push_back(std::move(*later));
-            if (out.relabelled) confirm_on_new(*e.outputs.back().distinction, rel, new_m, r, og.name);
-            continue;
-          }
-          e.outputs.push_back(checker::decide_equivalence(old_m, rel, og, eo));
-          if (e.outputs.back().distinction && out.relabelled)
-            confirm_on_new(*e.outputs.back().distinction, rel, new_m, r, og.name);
-        }
-    out.effects[gi] = std::move(e);
-  });
+    if (e.result.verdict == EquivalenceVerdict::Differs && e.old_id && e.new_id) decide_outputs(e, id);
+    return e;
+  }
+
+  // A differing effect's output tags: from its distinguishing run when it
+  // shows them, else decided on their own.
+  void decide_outputs(EffectBehaviour& e, int id) const {
+    for (const auto& og : checker::output_groups(old_m_, rel_)) {
+      if (og.roots.front().id != id) continue;
+      if (auto same = from_effect_run(e.result, og, old_m_, rel_)) {
+        e.outputs.push_back(std::move(*same));
+        continue;
+      }
+      if (auto later = from_continued_effect_run(e.result, og, old_m_, rel_)) {
+        e.outputs.push_back(std::move(*later));
+        if (out_.relabelled) confirm_on_new(*e.outputs.back().distinction, rel_, new_m_, r_, og.name);
+        continue;
+      }
+      e.outputs.push_back(checker::decide_equivalence(old_m_, rel_, og, eo_));
+      if (e.outputs.back().distinction && out_.relabelled)
+        confirm_on_new(*e.outputs.back().distinction, rel_, new_m_, r_, og.name);
+    }
+  }
 
   // The impact set: changed effects, their cones' causes, tags and SIF groups.
-  for (const auto& e : out.effects) {
-    if (!e.behaviour_changed()) continue;
-    out.impact.effects.push_back(e.new_id ? e.new_id : e.old_id);
-    auto add_effect = [&](const model::Matrix& m, int id, bool is_new) {
-      const Cones& cones = is_new ? new_cones : old_cones;
-      const model::Effect* ef = m.find_effect(id);
-      if (!ef) return;
-      for (const auto& t : ef->tags) out.impact.tags.insert(t.name);
-      for (int s : ef->sif) out.impact.sif_groups.insert(s);
-      for (int c : cones.causes(id)) {
-        const model::Cause* cz = m.find_cause(c);
-        if (is_new) out.impact.causes.insert(c);
-        else if (d.cause_map.count(c)) out.impact.causes.insert(d.cause_map.at(c));
-        for (const auto& t : cz->tags)
-          if (!model::parse_internal_ref(t.name)) out.impact.tags.insert(t.name);
-        for (int s : cz->sif) out.impact.sif_groups.insert(s);
-      }
-    };
-    if (e.old_id) add_effect(old_m, e.old_id, false);
-    if (e.new_id) add_effect(new_m, e.new_id, true);
+  void add_to_impact(const EffectBehaviour& e) {
+    out_.impact.effects.push_back(e.new_id ? e.new_id : e.old_id);
+    if (e.old_id) add_cone(old_m_, e.old_id, false);
+    if (e.new_id) add_cone(new_m_, e.new_id, true);
   }
-  return out;
+  void add_cone(const model::Matrix& m, int id, bool is_new) {
+    const Cones& cones = is_new ? new_cones_ : old_cones_;
+    const model::Effect* ef = m.find_effect(id);
+    if (!ef) return;
+    Impact& impact = out_.impact;
+    for (const auto& t : ef->tags) impact.tags.insert(t.name);
+    for (int s : ef->sif) impact.sif_groups.insert(s);
+    for (int c : cones.causes(id)) {
+      const model::Cause* cz = m.find_cause(c);
+      if (is_new) impact.causes.insert(c);
+      else if (d_.cause_map.count(c)) impact.causes.insert(d_.cause_map.at(c));
+      for (const auto& t : cz->tags)
+        if (!model::parse_internal_ref(t.name)) impact.tags.insert(t.name);
+      for (int s : cz->sif) impact.sif_groups.insert(s);
+    }
+  }
+
+  const model::Matrix& old_m_;
+  const model::Matrix& new_m_;
+  const StructuralDiff& d_;
+  const SemanticOptions& options_;
+  const Relabelling r_;
+  const model::Matrix& rel_;
+  const Cones old_cones_, new_cones_;
+  checker::CancelToken own_;
+  checker::CancelToken& cancel_;
+  checker::EquivalenceOptions eo_;
+  std::vector<checker::ObservableGroup> groups_;
+  std::map<int, int> rel_to_new_;
+  SemanticDiff out_;
+};
+
+}  // namespace
+
+SemanticDiff compare_behaviour(const model::Matrix& old_m, const model::Matrix& new_m, const StructuralDiff& d,
+                               const SemanticOptions& options) {
+  return BehaviourComparer(old_m, new_m, d, options).compare();
 }
 
 }  // namespace cemv::diff
