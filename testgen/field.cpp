@@ -64,14 +64,10 @@ bool field_kind(const Objective& o) {
            o.kind == "hysteresis" || o.kind == "reference" || o.simulates);
 }
 
-}  // namespace
-
-FieldSuite generate_field_suite(const model::Matrix& m, const FieldOptions& o) {
-  if (!(o.resolution > 0.0) || o.resolution > 1000.0) throw std::invalid_argument("--resolution must be in (0, 1000]");
-  FieldSuite s;
-  s.matrix_name = m.name;
-  s.signature = formats::signature(m);
-  s.resolution = o.resolution;
+// One loop per processed cause whose inputs are tags, one per XooN group (the
+// first X causes of an effect's XooN cells), sorted by first SIF group (none
+// last), then first cause, then size.
+std::vector<LoopPlan> plan_loops(const model::Matrix& m, FieldSuite& s) {
   std::vector<LoopPlan> plans;
   for (const auto& c : m.causes) {
     if (c.function == model::CauseFunction::Comment) continue;
@@ -101,27 +97,30 @@ FieldSuite generate_field_suite(const model::Matrix& m, const FieldOptions& o) {
     return std::make_tuple(rank(a.sif), a.causes.front(), a.causes.size()) <
            std::make_tuple(rank(b.sif), b.causes.front(), b.causes.size());
   });
-  for (const auto& p : plans) {
-    FieldTest t = field_detail::build_loop(m, o, p);
-    char id[16];
-    std::snprintf(id, sizeof id, "F%03zu", s.tests.size() + 1);
-    t.id = id;
-    if (p.xoon_effect) {
-      std::string list;
-      for (int c : p.causes) list += (list.empty() ? "" : ", ") + std::to_string(c);
-      t.title = std::string("XooN: causes ") + list + " together trip " + effect_name(m, p.xoon_effect) + " (" +
-                std::to_string(p.xoon) + " needed)";
-      t.file_name = t.id + "-xoon-effect-" + std::to_string(p.xoon_effect) + ".scenario.json";
-    } else {
-      const model::Cause& c = *m.find_cause(p.causes.front());
-      t.title = "Cause " + std::to_string(c.id) + " " + c.name + (c.description.empty() ? "" : ": " + c.description);
-      t.file_name = t.id + "-cause-" + std::to_string(c.id) + "-" + slug(c.name) + ".scenario.json";
-    }
-    s.field_s += t.field_s;
-    s.tests.push_back(std::move(t));
-  }
+  return plans;
+}
 
-  // Which objectives each step witnesses (the concrete evaluator on the run).
+// F001, its title and its file name.
+void name_test(const model::Matrix& m, const LoopPlan& p, std::size_t number, FieldTest& t) {
+  char id[16];
+  std::snprintf(id, sizeof id, "F%03zu", number);
+  t.id = id;
+  if (p.xoon_effect) {
+    std::string list;
+    for (int c : p.causes) list += (list.empty() ? "" : ", ") + std::to_string(c);
+    t.title = std::string("XooN: causes ") + list + " together trip " + effect_name(m, p.xoon_effect) + " (" +
+              std::to_string(p.xoon) + " needed)";
+    t.file_name = t.id + "-xoon-effect-" + std::to_string(p.xoon_effect) + ".scenario.json";
+  } else {
+    const model::Cause& c = *m.find_cause(p.causes.front());
+    t.title = "Cause " + std::to_string(c.id) + " " + c.name + (c.description.empty() ? "" : ": " + c.description);
+    t.file_name = t.id + "-cause-" + std::to_string(c.id) + "-" + slug(c.name) + ".scenario.json";
+  }
+}
+
+// Which objectives each step witnesses (the concrete evaluator on each
+// test's run); an objective no step witnesses stays automated, with why.
+void place_objectives(const model::Matrix& m, FieldSuite& s) {
   std::vector<Objective> all = derive_objectives(m);
   const properties::PropertyFile file = objectives_file(all);
   properties::Evaluator ev(m);
@@ -154,8 +153,10 @@ FieldSuite generate_field_suite(const model::Matrix& m, const FieldOptions& o) {
   }
   for (std::size_t i = 0; i < s.objectives.size(); ++i)
     if (s.objectives[i].test < 0) s.objectives[i].reason = automated_reason(s.objectives[i].objective, elsewhere[i]);
+}
 
-  // Never an unchecked answer: every test as written replays green.
+// Never an unchecked answer: every test as written replays green.
+void replay_green(const model::Matrix& m, const FieldSuite& s) {
   std::vector<std::pair<std::string, std::string>> texts;
   for (const auto& t : s.tests) texts.push_back({t.file_name, t.scenario_json});
   const ReplayResult replay = replay_texts(m, texts);
@@ -166,6 +167,24 @@ FieldSuite generate_field_suite(const model::Matrix& m, const FieldOptions& o) {
         if (why.empty() && !st.failures.empty()) why = st.failures.front();
       throw checker::InternalError("field test " + t.name + " does not replay green: " + why);
     }
+}
+
+}  // namespace
+
+FieldSuite generate_field_suite(const model::Matrix& m, const FieldOptions& o) {
+  if (!(o.resolution > 0.0) || o.resolution > 1000.0) throw std::invalid_argument("--resolution must be in (0, 1000]");
+  FieldSuite s;
+  s.matrix_name = m.name;
+  s.signature = formats::signature(m);
+  s.resolution = o.resolution;
+  for (const auto& p : plan_loops(m, s)) {
+    FieldTest t = field_detail::build_loop(m, o, p);
+    name_test(m, p, s.tests.size() + 1, t);
+    s.field_s += t.field_s;
+    s.tests.push_back(std::move(t));
+  }
+  place_objectives(m, s);
+  replay_green(m, s);
   return s;
 }
 
