@@ -120,14 +120,16 @@ std::string field_checklist_markdown(const model::Matrix& m, const FieldSuite& s
   return o.str();
 }
 
-std::string field_checklist_html(const model::Matrix& m, const FieldSuite& s, const std::string& date,
-                                 const std::string& tool) {
-  std::ostringstream o;
-  auto br = [](const std::string& x) {
-    std::string e = html_escape(x), out;
-    for (char c : e) out += c == '\n' ? std::string("<br>") : std::string(1, c);
-    return out;
-  };
+namespace {
+
+// Line breaks kept in an HTML cell.
+std::string html_lines(const std::string& x) {
+  std::string e = html_escape(x), out;
+  for (char c : e) out += c == '\n' ? std::string("<br>") : std::string(1, c);
+  return out;
+}
+
+void html_head(std::ostringstream& o, const FieldSuite& s) {
   o << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">\n<title>Field acceptance checklist: "
     << html_escape(s.matrix_name) << "</title>\n<style>\n"
        "body{font-family:Helvetica,Arial,sans-serif;font-size:10pt;margin:1.5cm;color:#000}\n"
@@ -146,6 +148,12 @@ std::string field_checklist_html(const model::Matrix& m, const FieldSuite& s, co
        "@media print{body{margin:0}section.test{break-before:page}tr{break-inside:avoid}"
        "thead{display:table-header-group}@page{size:A4;margin:1.2cm}}\n"
        "</style></head><body>\n";
+}
+
+// The heading table (matrix, signature, date, resolution, counts), how to
+// use the checklist, and the list of tests.
+void html_summary(std::ostringstream& o, const model::Matrix& m, const FieldSuite& s, const std::string& date,
+                  const std::string& tool) {
   o << "<h1>Field acceptance checklist: " << html_escape(s.matrix_name) << "</h1>\n<table class=\"head\">";
   if (!m.title.empty()) o << "<tr><td>Title</td><td>" << html_escape(m.title) << "</td></tr>";
   o << "<tr><td>Matrix</td><td>" << html_escape(s.matrix_name) << "</td></tr><tr><td>Signature (SHA-256)</td><td><code>"
@@ -160,23 +168,28 @@ std::string field_checklist_html(const model::Matrix& m, const FieldSuite& s, co
     o << "<tr><td>" << t.id << "</td><td>" << (t.sif ? std::to_string(t.sif) : "-") << "</td><td>"
       << html_escape(t.title) << "</td><td>" << minutes(t.field_s) << "</td></tr>\n";
   o << "</tbody></table>\n";
-  for (const auto& t : s.tests) {
-    o << "<section class=\"test\"><h3>" << t.id << ": " << html_escape(t.title) << "</h3>\n<p class=\"drives\">"
-      << html_escape(sif_title(m, t.sif)) << "<br>Drives: " << html_escape(drives(m, t))
-      << "<br>Estimated field time: " << minutes(t.field_s) << "</p>\n"
-      << "<table class=\"steps\"><thead><tr><th class=\"n\">No.</th><th class=\"act\">Action</th>"
-         "<th class=\"hold\">Hold</th><th>Expected</th><th class=\"res\">Result</th><th class=\"ini\">Initials</th>"
-         "<th class=\"dat\">Date</th></tr></thead><tbody>\n";
-    std::string phase;
-    for (const auto& st : t.steps) {
-      if (st.phase != phase) o << "<tr class=\"phase\"><td colspan=\"7\">" << html_escape(st.phase) << "</td></tr>\n";
-      phase = st.phase;
-      o << "<tr><td class=\"n\">" << st.number << "</td><td class=\"act\">" << br(lines(st.actions))
-        << "</td><td class=\"hold\">" << hold_text(st) << "</td><td>" << br(lines(st.expected))
-        << "</td><td class=\"res\"></td><td class=\"ini\"></td><td class=\"dat\"></td></tr>\n";
-    }
-    o << "</tbody></table></section>\n";
+}
+
+// One loop test: what it drives, then its steps with empty Result, Initials and Date cells.
+void html_test(std::ostringstream& o, const model::Matrix& m, const FieldTest& t) {
+  o << "<section class=\"test\"><h3>" << t.id << ": " << html_escape(t.title) << "</h3>\n<p class=\"drives\">"
+    << html_escape(sif_title(m, t.sif)) << "<br>Drives: " << html_escape(drives(m, t))
+    << "<br>Estimated field time: " << minutes(t.field_s) << "</p>\n"
+    << "<table class=\"steps\"><thead><tr><th class=\"n\">No.</th><th class=\"act\">Action</th>"
+       "<th class=\"hold\">Hold</th><th>Expected</th><th class=\"res\">Result</th><th class=\"ini\">Initials</th>"
+       "<th class=\"dat\">Date</th></tr></thead><tbody>\n";
+  std::string phase;
+  for (const auto& st : t.steps) {
+    if (st.phase != phase) o << "<tr class=\"phase\"><td colspan=\"7\">" << html_escape(st.phase) << "</td></tr>\n";
+    phase = st.phase;
+    o << "<tr><td class=\"n\">" << st.number << "</td><td class=\"act\">" << html_lines(lines(st.actions))
+      << "</td><td class=\"hold\">" << hold_text(st) << "</td><td>" << html_lines(lines(st.expected))
+      << "</td><td class=\"res\"></td><td class=\"ini\"></td><td class=\"dat\"></td></tr>\n";
   }
+  o << "</tbody></table></section>\n";
+}
+
+void html_mutation(std::ostringstream& o, const FieldSuite& s) {
   if (s.mutation) {
     const FieldMutation& mu = *s.mutation;
     o << "<section class=\"test\"><h2>Mutation adequacy</h2>\n<p>Of " << mu.mutants
@@ -193,6 +206,9 @@ std::string field_checklist_html(const model::Matrix& m, const FieldSuite& s, co
     }
     o << "</section>\n";
   }
+}
+
+void html_automated_only(std::ostringstream& o, const FieldSuite& s) {
   o << "<section class=\"test\"><h2>Automated-only objectives</h2>\n<p>What the field tests do not witness; the "
        "automated suite (<code>cemv replay</code>) covers it.</p>\n<table><thead><tr><th>Objective</th><th>Reason</th>"
        "</tr></thead><tbody>\n";
@@ -206,6 +222,9 @@ std::string field_checklist_html(const model::Matrix& m, const FieldSuite& s, co
     for (const auto& u : s.untested) o << "<li>" << html_escape(u) << "</li>\n";
     o << "</ul>\n";
   }
+}
+
+void html_appendix(std::ostringstream& o, const FieldSuite& s) {
   o << "<h2>Appendix: objectives witnessed in the field</h2>\n<table><thead><tr><th>Objective</th><th>Test</th>"
        "<th>Step</th></tr></thead><tbody>\n";
   for (const auto& ob : s.objectives)
@@ -214,6 +233,19 @@ std::string field_checklist_html(const model::Matrix& m, const FieldSuite& s, co
         << s.tests[static_cast<std::size_t>(ob.test)].id << "</td><td>" << ob.step << "</td></tr>\n";
   o << "</tbody></table>\n<p class=\"sig\"><span>Test engineer, date</span><span>Witness, date</span></p>\n"
        "</section>\n</body></html>\n";
+}
+
+}  // namespace
+
+std::string field_checklist_html(const model::Matrix& m, const FieldSuite& s, const std::string& date,
+                                 const std::string& tool) {
+  std::ostringstream o;
+  html_head(o, s);
+  html_summary(o, m, s, date, tool);
+  for (const auto& t : s.tests) html_test(o, m, t);
+  html_mutation(o, s);
+  html_automated_only(o, s);
+  html_appendix(o, s);
   return o.str();
 }
 
