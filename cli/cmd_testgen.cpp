@@ -50,10 +50,11 @@ struct TestgenArgs {
 // The field suite into DIR/field/ (docs/testgen.md, "Field suite"): its
 // scenarios, the checklist in three forms. Returns the summary lines.
 std::string write_field_suite(const model::Matrix& m, const TestgenArgs& a, const std::string& tool,
-                              testgen::FieldSuite& fs) {
+                              const checker::CancelToken& cancel, testgen::FieldSuite& fs) {
   const std::filesystem::path dir = std::filesystem::path(a.out_dir) / "field";
   testgen::FieldOptions fo;
   fo.resolution = a.resolution;
+  fo.cancel = &cancel;
   if (a.matrix_file != "-") {
     std::error_code ec;
     auto rel = std::filesystem::relative(std::filesystem::absolute(a.matrix_file), std::filesystem::absolute(dir), ec);
@@ -72,7 +73,10 @@ std::string write_field_suite(const model::Matrix& m, const TestgenArgs& a, cons
          " steps, about " + std::to_string((fs.field_s + 59) / 60) + " min on the plant; " +
          std::to_string(fs.witnessed()) + " of " + std::to_string(fs.objectives.size()) +
          " objectives witnessed in the field, the rest automated-only; every test replays green (" +
-         (dir / "checklist.md").string() + ")\n";
+         (dir / "checklist.md").string() + ")\n" +
+         (fs.interrupted ? "field suite: the time limit (--total-timeout) ended it; the loops not built and the "
+                           "objectives not decided are listed in its checklist\n"
+                         : "");
 }
 
 int run_testgen(const TestgenArgs& a) {
@@ -91,14 +95,17 @@ int run_testgen(const TestgenArgs& a) {
   std::string field_summary;
   testgen::FieldSuite field;
   try {
-    field_summary = write_field_suite(m, a, tool, field);
+    field_summary = write_field_suite(m, a, tool, cancel, field);
   } catch (const checker::InternalError& e) {
     std::cerr << "internal error: " << e.what() << "\n(a bug in cemv: please report it with the matrix)\n";
     return 4;
   }
   if (a.field_only) {
     if (!a.quiet) write_output("-", "matrix " + m.name + "\n" + field_summary);
-    return a.mutation_report ? field_mutation_report(m, nullptr, field, a.out_dir, testgen::report_date(), tool, &cancel) : 0;
+    const int code = field.interrupted ? 3 : 0;
+    return a.mutation_report
+               ? std::max(code, field_mutation_report(m, nullptr, field, a.out_dir, testgen::report_date(), tool, &cancel))
+               : code;
   }
   testgen::TestgenOptions o;
   if (a.sif > 0) o.sif = a.sif;
@@ -167,7 +174,7 @@ int run_testgen(const TestgenArgs& a) {
                 r.reason + ")\n";
     write_output("-", text);
   }
-  int code = suite.undecided > 0 ? 3 : 0;
+  int code = suite.undecided > 0 || field.interrupted ? 3 : 0;
   if (a.mutation_report)
     code = std::max(code, field_mutation_report(m, &suite, field, a.out_dir, testgen::report_date(), tool, &cancel));
   return code;

@@ -228,16 +228,32 @@ CommandOrder::Key CommandOrder::key_of(const Command& c) {
 
 void CommandOrder::add(const Command& c) { rank_.emplace(key_of(c), rank_.size()); }
 
+namespace {
+
+Command command_of(CommandOp op) {
+  Command c;
+  c.op = op;
+  return c;
+}
+
+}  // namespace
+
 CommandOrder::CommandOrder(const Matrix& m) {
-  using Op = CommandOp;
   std::vector<const Cause*> causes;
   std::vector<const Effect*> effects;
   for (const auto& c : m.causes)
     if (c.function != CauseFunction::Comment) causes.push_back(&c);
   for (const auto& e : m.effects)
     if (e.function != EffectFunction::Comment) effects.push_back(&e);
+  add_simulation(m, effects);
+  add_soft_bypasses(causes, effects);
+  add_alarms_and_acks(causes, effects);
+  add_resets_and_overrides(effects);
+}
 
-  // O.8: cause input tags (InputTable order), then output tags.
+// O.8: cause input tags (InputTable order), then output tags; each simulated,
+// then each simulation stopped, then every simulation stopped.
+void CommandOrder::add_simulation(const Matrix& m, const std::vector<const Effect*>& effects) {
   std::vector<std::string> keys;
   auto simulatable = [&](const std::string& name) {
     std::string key = tag_key(name);
@@ -251,26 +267,20 @@ CommandOrder::CommandOrder(const Matrix& m) {
       simulatable(t.name);
   for (const auto* e : effects)
     for (const auto& t : e->tags) simulatable(t.name);
+  for (CommandOp op : {CommandOp::SimulateTag, CommandOp::StopSimulation})
+    for (const auto& name : simulatable_) {
+      Command c = command_of(op);
+      c.tag_name = name;
+      add(c);
+    }
+  add(command_of(CommandOp::StopSimulation));
+}
 
-  auto command = [](Op op) {
-    Command c;
-    c.op = op;
-    return c;
-  };
-  for (const auto& name : simulatable_) {
-    Command c = command(Op::SimulateTag);
-    c.tag_name = name;
-    add(c);
-  }
-  for (const auto& name : simulatable_) {
-    Command c = command(Op::StopSimulation);
-    c.tag_name = name;
-    add(c);
-  }
-  add(command(Op::StopSimulation));
+// O.7: causes, their tags, effects; on before off.
+void CommandOrder::add_soft_bypasses(const std::vector<const Cause*>& causes, const std::vector<const Effect*>& effects) {
   for (const auto* cz : causes)
     for (bool on : {true, false}) {
-      Command c = command(Op::SoftBypassCause);
+      Command c = command_of(CommandOp::SoftBypassCause);
       c.cause = cz->id;
       c.on = on;
       add(c);
@@ -278,7 +288,7 @@ CommandOrder::CommandOrder(const Matrix& m) {
   for (const auto* cz : causes)
     for (int t = 1; t <= static_cast<int>(cz->tags.size()); ++t)
       for (bool on : {true, false}) {
-        Command c = command(Op::SoftBypassTag);
+        Command c = command_of(CommandOp::SoftBypassTag);
         c.cause = cz->id;
         c.tag = t;
         c.on = on;
@@ -286,34 +296,42 @@ CommandOrder::CommandOrder(const Matrix& m) {
       }
   for (const auto* ef : effects)
     for (bool on : {true, false}) {
-      Command c = command(Op::SoftBypassEffect);
+      Command c = command_of(CommandOp::SoftBypassEffect);
       c.effect = ef->id;
       c.on = on;
       add(c);
     }
+}
+
+// First-out groups cleared, alarms cleared (causes, then effects), causes acknowledged.
+void CommandOrder::add_alarms_and_acks(const std::vector<const Cause*>& causes, const std::vector<const Effect*>& effects) {
   for (int g = 1; g <= kMaxFirstOutGroup; ++g) {
-    Command c = command(Op::ClearFirstOut);
+    Command c = command_of(CommandOp::ClearFirstOut);
     c.group = g;
     add(c);
   }
   for (const auto* cz : causes) {
-    Command c = command(Op::ClearAlarms);
+    Command c = command_of(CommandOp::ClearAlarms);
     c.cause = cz->id;
     add(c);
   }
   for (const auto* ef : effects) {
-    Command c = command(Op::ClearAlarms);
+    Command c = command_of(CommandOp::ClearAlarms);
     c.effect = ef->id;
     add(c);
   }
   for (const auto* cz : causes) {
-    Command c = command(Op::AckCause);
+    Command c = command_of(CommandOp::AckCause);
     c.cause = cz->id;
     add(c);
   }
+}
+
+// Per effect: reset, override, stop override.
+void CommandOrder::add_resets_and_overrides(const std::vector<const Effect*>& effects) {
   for (const auto* ef : effects)
-    for (Op op : {Op::ResetEffect, Op::OverrideEffect, Op::StopOverride}) {
-      Command c = command(op);
+    for (CommandOp op : {CommandOp::ResetEffect, CommandOp::OverrideEffect, CommandOp::StopOverride}) {
+      Command c = command_of(op);
       c.effect = ef->id;
       add(c);
     }

@@ -161,6 +161,11 @@ class CommandOrder {
   using Key = std::tuple<int, int, int, int, int, bool, std::string>;
   static Key key_of(const Command& c);
   void add(const Command& c);
+  // The order's groups, in the order they are added (docs/semantics.md, M.1).
+  void add_simulation(const Matrix& m, const std::vector<const Effect*>& effects);           // O.8
+  void add_soft_bypasses(const std::vector<const Cause*>& causes, const std::vector<const Effect*>& effects);  // O.7
+  void add_alarms_and_acks(const std::vector<const Cause*>& causes, const std::vector<const Effect*>& effects);  // O.9, O.10, O.4
+  void add_resets_and_overrides(const std::vector<const Effect*>& effects);                  // O.2, O.3
 
   std::vector<std::string> simulatable_;
   std::map<Key, std::size_t> rank_;

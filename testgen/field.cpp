@@ -118,15 +118,28 @@ void name_test(const model::Matrix& m, const LoopPlan& p, std::size_t number, Fi
   }
 }
 
+bool cancelled(const FieldOptions& o) { return o.cancel && o.cancel->cancelled(); }
+
+// What a loop the time limit left unbuilt would have tested.
+std::string unbuilt(const model::Matrix& m, const LoopPlan& p) {
+  const std::string what = p.xoon_effect ? "XooN group of " + effect_name(m, p.xoon_effect)
+                                         : cause_name(m, p.causes.front());
+  return what + ": not built, the time limit (--total-timeout) ended the field suite first";
+}
+
 // Which objectives each step witnesses (the concrete evaluator on each
 // test's run); an objective no step witnesses stays automated, with why.
-void place_objectives(const model::Matrix& m, FieldSuite& s) {
+void place_objectives(const model::Matrix& m, const FieldOptions& o, FieldSuite& s) {
   std::vector<Objective> all = derive_objectives(m);
   const properties::PropertyFile file = objectives_file(all);
   properties::Evaluator ev(m);
   for (auto& ob : all) s.objectives.push_back({std::move(ob), -1, 0, ""});
   std::vector<bool> elsewhere(s.objectives.size(), false);
   for (std::size_t ti = 0; ti < s.tests.size(); ++ti) {
+    if (cancelled(o)) {
+      s.interrupted = true;
+      break;
+    }
     FieldTest& t = s.tests[ti];
     const checker::ConcreteTrace run = checker::run_on_runtime(m, t.inputs);
     properties::Trace trace;
@@ -152,7 +165,9 @@ void place_objectives(const model::Matrix& m, FieldSuite& s) {
     }
   }
   for (std::size_t i = 0; i < s.objectives.size(); ++i)
-    if (s.objectives[i].test < 0) s.objectives[i].reason = automated_reason(s.objectives[i].objective, elsewhere[i]);
+    if (s.objectives[i].test < 0)
+      s.objectives[i].reason = s.interrupted ? "not decided: the time limit (--total-timeout) ended the field suite first"
+                                             : automated_reason(s.objectives[i].objective, elsewhere[i]);
 }
 
 // Never an unchecked answer: every test as written replays green.
@@ -178,12 +193,17 @@ FieldSuite generate_field_suite(const model::Matrix& m, const FieldOptions& o) {
   s.signature = formats::signature(m);
   s.resolution = o.resolution;
   for (const auto& p : plan_loops(m, s)) {
+    if (s.interrupted || cancelled(o)) {
+      s.interrupted = true;
+      s.untested.push_back(unbuilt(m, p));
+      continue;
+    }
     FieldTest t = field_detail::build_loop(m, o, p);
     name_test(m, p, s.tests.size() + 1, t);
     s.field_s += t.field_s;
     s.tests.push_back(std::move(t));
   }
-  place_objectives(m, s);
+  place_objectives(m, o, s);
   replay_green(m, s);
   return s;
 }

@@ -25,6 +25,9 @@ using formats::kFieldChecklistFormat;
 struct FieldOptions {
   double resolution = 0.1;  // of the calibrator / the tag's unit: values are printed and set to it
   std::string matrix_ref;   // the scenarios' `matrix` key
+  // --total-timeout: polled before each loop test is built and before each
+  // test's objectives are placed; what is left is listed, not guessed.
+  const checker::CancelToken* cancel = nullptr;
 };
 
 struct FieldTestStep {
@@ -81,6 +84,9 @@ struct FieldSuite {
   std::vector<std::string> untested;       // causes no loop test trips, with the reason
   std::uint64_t field_s = 0;
   std::optional<FieldMutation> mutation;   // with --mutation-report
+  // The cancel token ended the suite: the loops not built are in `untested`,
+  // the objectives not placed say so; every test written still replays green.
+  bool interrupted = false;
   std::size_t witnessed() const;
 };
 
