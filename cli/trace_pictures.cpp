@@ -6,14 +6,28 @@
 
 namespace cemv::cli {
 
+namespace {
+
+std::unique_ptr<reports::TimingRecorder> recorder(const model::Matrix& m) {
+  reports::TimingDiagram d;
+  d.all_changing = true;
+  return std::make_unique<reports::TimingRecorder>(m, std::move(d));
+}
+
+}  // namespace
+
 TracePictures::TracePictures(std::string svg_file, std::string vcd_file)
     : svg_file_(std::move(svg_file)), vcd_file_(std::move(vcd_file)) {
   if (!svg_file_.empty()) check_writable(svg_file_);
   if (!vcd_file_.empty()) check_writable(vcd_file_);
 }
 
-void TracePictures::record(const model::CycleInput& in, const std::vector<int>& snapshot) {
-  if (svg_file_.empty() && vcd_file_.empty()) return;
+void TracePictures::record(const model::Matrix& m, const model::CycleInput& in, const std::vector<int>& snapshot) {
+  if (!svg_file_.empty()) {
+    if (!svg_) svg_ = recorder(m);
+    svg_->add(in, snapshot);
+  }
+  if (vcd_file_.empty()) return;
   trace_.inputs.push_back(in);
   trace_.observables.push_back(snapshot);
 }
@@ -27,11 +41,10 @@ void TracePictures::mark(const formats::ExpectationOutcome& failed, std::uint32_
 
 void TracePictures::write(const model::Matrix& m, const std::string& title, std::ostream& out) const {
   if (!svg_file_.empty()) {
-    reports::TimingDiagram d;
-    d.title = title;
-    d.all_changing = true;
-    d.marks = marks_;
-    write_output(svg_file_, reports::timing_svg(m, trace_, d));
+    if (!svg_) svg_ = recorder(m);  // a run of no cycles
+    svg_->diagram().title = title;
+    svg_->diagram().marks = marks_;
+    write_output(svg_file_, svg_->svg());
     out << "diagram: " << svg_file_ << "\n";
   }
   if (!vcd_file_.empty()) {

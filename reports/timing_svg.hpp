@@ -67,6 +67,9 @@ class TimingRecorder {
   TimingRecorder(const model::Matrix& m, TimingDiagram d);
   ~TimingRecorder();
   void add(const model::CycleInput& in, const std::vector<int>& snapshot);
+  // Its title, marks, checks and notes may still change before svg(); which
+  // rows are drawn (shown, inputs_shown, all_changing) is fixed at construction.
+  TimingDiagram& diagram() { return *d_; }
   std::string svg() const;
 
  private:
