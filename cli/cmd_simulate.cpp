@@ -241,7 +241,7 @@ int run_simulate(const SimulateOptions& o, bool quiet) {
     const model::CycleInput& in = ex.cycles[c];
     rt.step(in);
     rt.snapshot(snap);
-    pictures.record(in, snap);
+    pictures.record(m, in, snap);
     summary.refused += static_cast<std::uint64_t>(rt.commands_refused());
     if (!json_format) timing.record(c + 1, in, snap);
     if (trace) {

@@ -6,14 +6,28 @@
 
 namespace cemv::cli {
 
+namespace {
+
+std::unique_ptr<reports::TimingRecorder> recorder(const model::Matrix& m) {
+  reports::TimingDiagram d;
+  d.all_changing = true;
+  return std::make_unique<reports::TimingRecorder>(m, std::move(d));
+}
+
+}  // namespace
+
 TracePictures::TracePictures(std::string svg_file, std::string vcd_file)
     : svg_file_(std::move(svg_file)), vcd_file_(std::move(vcd_file)) {
   if (!svg_file_.empty()) check_writable(svg_file_);
   if (!vcd_file_.empty()) check_writable(vcd_file_);
 }
 
-void TracePictures::record(const model::CycleInput& in, const std::vector<int>& snapshot) {
-  if (svg_file_.empty() && vcd_file_.empty()) return;
+void TracePictures::record(const model::Matrix& m, const model::CycleInput& in, const std::vector<int>& snapshot) {
+  if (!svg_file_.empty()) {
+    if (!svg_) svg_ = recorder(m);
+    svg_->add(in, snapshot);
+  }
+  if (vcd_file_.empty()) return;
   trace_.inputs.push_back(in);
   trace_.observables.push_back(snapshot);
 }
@@ -27,11 +41,10 @@ void TracePictures::mark(const formats::ExpectationOutcome& failed, std::uint32_
 
 void TracePictures::write(const model::Matrix& m, const std::string& title, std::ostream& out) const {
   if (!svg_file_.empty()) {
-    reports::TimingDiagram d;
-    d.title = title;
-    d.all_changing = true;
-    d.marks = marks_;
-    write_output(svg_file_, reports::timing_svg(m, trace_, d));
+    if (!svg_) svg_ = recorder(m);  // a run of no cycles
+    svg_->diagram().title = title;
+    svg_->diagram().marks = marks_;
+    write_output(svg_file_, svg_->svg());
     out << "diagram: " << svg_file_ << "\n";
   }
   if (!vcd_file_.empty()) {
@@ -42,20 +55,20 @@ void TracePictures::write(const model::Matrix& m, const std::string& title, std:
 
 std::string test_diagram(const model::Matrix& m, const std::string& title, const std::vector<model::CycleInput>& inputs,
                          const std::vector<std::size_t>& checkpoints) {
-  runtime::Runtime rt(m);
-  checker::ConcreteTrace t;
-  std::vector<int> snap;
-  for (const auto& in : inputs) {
-    rt.step(in);
-    rt.snapshot(snap);
-    t.inputs.push_back(in);
-    t.observables.push_back(snap);
-  }
   reports::TimingDiagram d;
   d.title = title;
   d.all_changing = true;
   d.checks = checkpoints;
-  return reports::timing_svg(m, t, d);
+  // Drawn as the runtime steps: an 8 h test is not held as a trace.
+  reports::TimingRecorder picture(m, std::move(d));
+  runtime::Runtime rt(m);
+  std::vector<int> snap;
+  for (const auto& in : inputs) {
+    rt.step(in);
+    rt.snapshot(snap);
+    picture.add(in, snap);
+  }
+  return picture.svg();
 }
 
 std::string diagram_name(const std::string& scenario_file) {

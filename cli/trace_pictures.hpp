@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -20,7 +21,8 @@ class TracePictures {
   // Empty names: nothing is recorded or written. The destinations are checked
   // here, before the run.
   TracePictures(std::string svg_file, std::string vcd_file);
-  void record(const model::CycleInput& in, const std::vector<int>& snapshot);
+  // `m` must outlive this object (the diagram is drawn as the run goes).
+  void record(const model::Matrix& m, const model::CycleInput& in, const std::vector<int>& snapshot);
   // A failed expectation, marked at its cycle.
   void mark(const formats::ExpectationOutcome& failed, std::uint32_t cycle_ms);
   // Writes the files and names them on `out`, one line each.
@@ -28,7 +30,8 @@ class TracePictures {
 
  private:
   std::string svg_file_, vcd_file_;
-  checker::ConcreteTrace trace_;
+  checker::ConcreteTrace trace_;               // for the VCD only
+  mutable std::unique_ptr<reports::TimingRecorder> svg_;  // the diagram, drawn as the run goes
   std::vector<reports::TimingMark> marks_;
 };
 

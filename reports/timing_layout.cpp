@@ -43,8 +43,8 @@ double row_height(RowKind k) {
   }
 }
 
-Layout::Layout(const model::Matrix& m_, const checker::ConcreteTrace& t_, const TimingDiagram& d_)
-    : m(m_), t(t_), d(d_), rows(rows_of(m_, t_, d_)), cols(columns_of(rows, t_.inputs.size(), d_.marks)) {
+Layout::Layout(const model::Matrix& m_, std::vector<Row> rows_, std::size_t cycles_, const TimingDiagram& d_)
+    : m(m_), cycles(cycles_), d(d_), rows(std::move(rows_)), cols(columns_of(rows, cycles_, d_.marks)) {
   label_w = 150;
   for (const auto& r : rows) label_w = std::max(label_w, text_width(r.label) + 24);
   std::size_t single = 0;

@@ -38,13 +38,14 @@ double row_height(RowKind k);
 // The rows and columns of one diagram and their x positions: a label column,
 // then one column per cycle shown (or per folded stretch).
 struct Layout {
-  Layout(const model::Matrix& m, const checker::ConcreteTrace& t, const TimingDiagram& d);
+  Layout(const model::Matrix& m, std::vector<Row> rows, std::size_t cycles, const TimingDiagram& d);
 
-  // Value of a row at a column: its last cycle's (a fold is constant).
-  double at(const Row& r, std::size_t col) const { return r.value[cols[col].last]; }
+  // A row at a column: its last cycle's segment (a fold is constant).
+  const Segment& segment(const Row& r, std::size_t col) const { return r.at(cols[col].last); }
+  double at(const Row& r, std::size_t col) const { return segment(r, col).value; }
 
   const model::Matrix& m;
-  const checker::ConcreteTrace& t;
+  std::size_t cycles = 0;
   const TimingDiagram& d;
   std::vector<Row> rows;
   std::vector<Column> cols;

@@ -93,8 +93,8 @@ std::string observable_label(const model::Matrix& m, const model::Observable& o)
          field;
 }
 
-Row observable_row(const model::Matrix& m, const checker::ConcreteTrace& t, const model::Observable& o,
-                   std::size_t index) {
+// A row's label, kind and note; its values come cycle by cycle.
+Row observable_row(const model::Matrix& m, const model::Observable& o) {
   Row r;
   r.label = observable_label(m, o);
   r.kind = o.type != model::FieldType::Bool ? RowKind::Bus : is_timer(m, o) ? RowKind::Timer : RowKind::Digital;
@@ -103,14 +103,11 @@ Row observable_row(const model::Matrix& m, const checker::ConcreteTrace& t, cons
     if (r.duration_ms > 0) r.note = "time " + time_text(r.duration_ms);
   }
   if (o.field == "tag") r.note = "output " + output_name(m, o);
-  for (const auto& snap : t.observables) {
-    int v = snap[index];
-    r.value.push_back(v);
-    if (r.kind == RowKind::Bus)
-      r.text.push_back(o.type == model::FieldType::Voting ? model::to_string(static_cast<model::Voting>(v))
-                                                          : std::to_string(v));
-  }
   return r;
+}
+
+std::string bus_text(const model::Observable& o, int v) {
+  return o.type == model::FieldType::Voting ? model::to_string(static_cast<model::Voting>(v)) : std::to_string(v);
 }
 
 }  // namespace
@@ -131,53 +128,105 @@ std::string time_text(double ms) {
   return buf;
 }
 
-std::vector<Row> rows_of(const model::Matrix& m, const checker::ConcreteTrace& t, const TimingDiagram& d) {
-  std::vector<Row> rows;
-  const std::size_t n = t.inputs.size();
+void Row::append(double value, std::string text, bool bad) {
+  const std::size_t k = cycles();
+  if (!segments.empty()) {
+    Segment& last = segments.back();
+    if (last.value == value && last.bad == bad && last.text == text) {
+      last.to = k;
+      return;
+    }
+    changes = true;
+  }
+  segments.push_back({value, std::move(text), bad, k, k});
+}
+
+const Segment& Row::at(std::size_t cycle) const {
+  auto it = std::upper_bound(segments.begin(), segments.end(), cycle,
+                             [](std::size_t c, const Segment& s) { return c < s.from; });
+  return *(it - 1);
+}
+
+bool Row::any_bad() const {
+  for (const auto& s : segments)
+    if (s.bad) return true;
+  return false;
+}
+
+std::size_t Row::running_for(std::size_t cycle) const {
+  auto it = std::upper_bound(segments.begin(), segments.end(), cycle,
+                             [](std::size_t c, const Segment& s) { return c < s.from; });
+  std::size_t n = 0, end = cycle;
+  while (it != segments.begin()) {
+    --it;
+    if (it->value == 0) break;
+    n += end - it->from + 1;
+    if (it->from == 0) break;
+    end = it->from - 1;
+  }
+  return n;
+}
+
+RowBuilder::RowBuilder(const model::Matrix& m, const TimingDiagram& d) : m_(m), d_(d), all_(model::observables(m)) {
   model::InputTable table(m);
-  for (std::size_t i = 0; i < table.size(); ++i) {
-    const auto& tag = table.tags()[i];
+  for (const auto& tag : table.tags()) {
     Row r;
     r.label = tag.name;
     r.kind = tag.kind == model::TagKind::Analog ? RowKind::Analog : RowKind::Digital;
-    for (std::size_t k = 0; k < n; ++k) {
-      r.value.push_back(t.inputs[k].tags[i].value);
-      r.bad.push_back(t.inputs[k].tags[i].bad_quality);
-      r.changes |= r.value[k] != r.value[0] || r.bad[k] != r.bad[0];
-    }
-    const bool shown = std::find(d.inputs_shown.begin(), d.inputs_shown.end(), tag.name) != d.inputs_shown.end();
-    if (!r.changes && !shown) continue;
-    if (r.kind == RowKind::Analog) add_levels(m, tag, r);
-    rows.push_back(std::move(r));
+    inputs_.push_back(std::move(r));
   }
-  Row commands;
-  commands.kind = RowKind::Commands;
-  commands.label = "operator commands";
-  for (std::size_t k = 0; k < n; ++k) {
-    std::string s;
-    for (const auto& c : t.inputs[k].commands) s += (s.empty() ? "" : "; ") + command_label(c);
-    commands.changes |= !s.empty();
-    commands.text.push_back(s);
-    commands.value.push_back(t.inputs[k].commands.size());
-  }
-  if (commands.changes) rows.push_back(std::move(commands));
+  commands_.kind = RowKind::Commands;
+  commands_.label = "operator commands";
+  for (const auto& o : all_) observables_.push_back(observable_row(m, o));
+}
 
-  const auto all = model::observables(m);
-  std::vector<bool> taken(all.size(), false);
-  for (const auto& key : d.shown)
-    for (std::size_t i = 0; i < all.size(); ++i)
-      if (all[i].key == key && !taken[i] && !t.observables.empty()) {
-        taken[i] = true;
-        rows.push_back(observable_row(m, t, all[i], i));
-      }
-  if (d.all_changing)
-    for (std::size_t i = 0; i < all.size(); ++i) {
-      if (taken[i] || t.observables.empty()) continue;
-      Row r = observable_row(m, t, all[i], i);
-      for (double v : r.value) r.changes |= v != r.value[0];
-      if (r.changes) rows.push_back(std::move(r));
+void RowBuilder::add(const model::CycleInput& in, const std::vector<int>& snapshot) {
+  for (std::size_t i = 0; i < inputs_.size(); ++i) inputs_[i].append(in.tags[i].value, {}, in.tags[i].bad_quality);
+  std::string s;
+  for (const auto& c : in.commands) s += (s.empty() ? "" : "; ") + command_label(c);
+  commands_.append(double(in.commands.size()), std::move(s), false);
+  if (!snapshot.empty())
+    for (std::size_t i = 0; i < observables_.size(); ++i) {
+      Row& r = observables_[i];
+      const int v = snapshot[i];
+      r.append(v, r.kind == RowKind::Bus ? bus_text(all_[i], v) : std::string(), false);
     }
+  ++cycles_;
+}
+
+std::vector<Row> RowBuilder::rows() const {
+  std::vector<Row> rows;
+  model::InputTable table(m_);
+  for (std::size_t i = 0; i < inputs_.size(); ++i) {
+    const auto& tag = table.tags()[i];
+    const bool shown = std::find(d_.inputs_shown.begin(), d_.inputs_shown.end(), tag.name) != d_.inputs_shown.end();
+    if (!inputs_[i].changes && !shown) continue;
+    rows.push_back(inputs_[i]);
+    if (rows.back().kind == RowKind::Analog) add_levels(m_, tag, rows.back());
+  }
+  bool commands = false;
+  for (const auto& s : commands_.segments) commands |= !s.text.empty();
+  if (commands) rows.push_back(commands_);
+
+  std::vector<bool> taken(all_.size(), false);
+  const bool observed = !observables_.empty() && observables_.front().cycles() > 0;
+  for (const auto& key : d_.shown)
+    for (std::size_t i = 0; i < all_.size(); ++i)
+      if (all_[i].key == key && !taken[i] && observed) {
+        taken[i] = true;
+        rows.push_back(observables_[i]);
+      }
+  if (d_.all_changing)
+    for (std::size_t i = 0; i < all_.size(); ++i)
+      if (!taken[i] && observed && observables_[i].changes) rows.push_back(observables_[i]);
   return rows;
+}
+
+std::vector<Row> rows_of(const model::Matrix& m, const checker::ConcreteTrace& t, const TimingDiagram& d) {
+  RowBuilder b(m, d);
+  static const std::vector<int> none;
+  for (std::size_t k = 0; k < t.inputs.size(); ++k) b.add(t.inputs[k], t.observables.empty() ? none : t.observables[k]);
+  return b.rows();
 }
 
 std::vector<Column> columns_of(const std::vector<Row>& rows, std::size_t cycles,
@@ -187,10 +236,12 @@ std::vector<Column> columns_of(const std::vector<Row>& rows, std::size_t cycles,
   for (const auto& mk : marks)
     if (mk.cycle < cycles) event[mk.cycle] = true;
   for (const auto& r : rows)
-    for (std::size_t k = 1; k < cycles; ++k) {
-      bool differs = r.value[k] != r.value[k - 1] || (!r.bad.empty() && r.bad[k] != r.bad[k - 1]);
-      if (r.kind == RowKind::Commands) differs = !r.text[k].empty();
-      event[k] = event[k] || differs;
+    for (const auto& seg : r.segments) {
+      if (r.kind != RowKind::Commands) {
+        if (seg.from > 0) event[seg.from] = true;
+      } else if (!seg.text.empty()) {
+        for (std::size_t k = std::max<std::size_t>(seg.from, 1); k <= seg.to; ++k) event[k] = true;
+      }
     }
   // Context: a cycle before each event and two after it stay visible.
   std::vector<bool> keep(cycles, false);

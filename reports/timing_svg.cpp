@@ -36,7 +36,8 @@ const char* kStyle =
 
 class Drawing {
  public:
-  Drawing(const model::Matrix& m, const checker::ConcreteTrace& t, const TimingDiagram& d) : l_(m, t, d) {}
+  Drawing(const model::Matrix& m, std::vector<timing::Row> rows, std::size_t cycles, const TimingDiagram& d)
+      : l_(m, std::move(rows), cycles, d) {}
 
   std::string svg() {
     // The header: title (15 px bold), subtitle, one line per mark, each
@@ -105,10 +106,10 @@ class Drawing {
     std::size_t folded = 0, hidden = 0;
     for (const auto& c : l_.cols)
       if (c.folded) ++folded, hidden += c.last - c.first + 1;
-    std::string s = "matrix " + l_.m.name + ", " + std::to_string(l_.t.inputs.size()) +
-                    (l_.t.inputs.size() == 1 ? " cycle of " : " cycles of ") +
+    std::string s = "matrix " + l_.m.name + ", " + std::to_string(l_.cycles) +
+                    (l_.cycles == 1 ? " cycle of " : " cycles of ") +
                     std::to_string(l_.m.cycle_ms) + " ms (" +
-                    time_text(double(l_.t.inputs.size()) * l_.m.cycle_ms) + ")";
+                    time_text(double(l_.cycles) * l_.m.cycle_ms) + ")";
     if (folded)
       s += "; " + std::to_string(folded) + (folded == 1 ? " stretch" : " stretches") + " of " +
            std::to_string(hidden) + " unchanged cycles folded";
@@ -125,7 +126,7 @@ class Drawing {
     bool levels = false, bad = false, timers = false;
     for (const auto& r : l_.rows) {
       levels |= !r.levels.empty();
-      for (bool b : r.bad) bad |= b;
+      bad |= r.any_bad();
       timers |= r.kind == RowKind::Timer;
     }
     std::string legend = "Cycle n starts at t = (n-1) x " + std::to_string(l_.m.cycle_ms) +
@@ -220,8 +221,17 @@ class Drawing {
 }  // namespace
 
 std::string timing_svg(const model::Matrix& m, const checker::ConcreteTrace& trace, const TimingDiagram& d) {
-  return Drawing(m, trace, d).svg();
+  return Drawing(m, timing::rows_of(m, trace, d), trace.inputs.size(), d).svg();
 }
+
+TimingRecorder::TimingRecorder(const model::Matrix& m, TimingDiagram d)
+    : m_(m), d_(std::make_unique<TimingDiagram>(std::move(d))), rows_(std::make_unique<timing::RowBuilder>(m, *d_)) {}
+
+TimingRecorder::~TimingRecorder() = default;
+
+void TimingRecorder::add(const model::CycleInput& in, const std::vector<int>& snapshot) { rows_->add(in, snapshot); }
+
+std::string TimingRecorder::svg() const { return Drawing(m_, rows_->rows(), rows_->cycles(), *d_).svg(); }
 
 TimingDiagram diagram_of(const checker::PropertyResult& p) {
   TimingDiagram d;

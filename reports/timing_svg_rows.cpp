@@ -26,9 +26,9 @@ class RowPainter {
       case RowKind::Analog: analog(o, r, y, top, bottom); break;
       case RowKind::Commands: commands(o, r, top, bottom); break;
     }
-    if (!r.bad.empty())
+    if (r.any_bad())
       for (std::size_t i = 0; i < l.cols.size(); ++i)
-        if (r.bad[l.cols[i].last])
+        if (l.segment(r, i).bad)
           o << "<rect class=\"bad\" x=\"" << num(l.xs[i]) << "\" y=\"" << num(top) << "\" width=\""
             << num(l.xs[i + 1] - l.xs[i]) << "\" height=\"" << num(bottom - top)
             << "\"><title>bad quality</title></rect>\n";
@@ -74,7 +74,7 @@ class RowPainter {
       std::size_t j = i;
       while (j + 1 < l.cols.size() && l.at(r, j + 1) == l.at(r, i)) ++j;
       double a = l.xs[i], b = l.xs[j + 1], e = std::min(3.0, (b - a) / 2);
-      const std::string& text = r.text[l.cols[i].last];
+      const std::string& text = l.segment(r, i).text;
       o << "<polygon class=\"bus\" points=\"" << num(a) << "," << num(mid) << " " << num(a + e) << ","
         << num(top) << " " << num(b - e) << "," << num(top) << " " << num(b) << "," << num(mid) << " "
         << num(b - e) << "," << num(bottom) << " " << num(a + e) << "," << num(bottom) << "\"><title>"
@@ -88,13 +88,10 @@ class RowPainter {
 
   // A running timer is a bar that fills up to its configured time.
   void timer(std::ostringstream& o, const Row& r, double top, double bottom) const {
-    std::vector<double> elapsed(r.value.size(), 0.0);
-    for (std::size_t k = 0; k < r.value.size(); ++k)
-      if (r.value[k] != 0) elapsed[k] = (k ? elapsed[k - 1] : 0.0) + l.m.cycle_ms;
     o << "<line class=\"grid\" x1=\"" << num(l.xs.front()) << "\" y1=\"" << num(bottom) << "\" x2=\""
       << num(l.xs.back()) << "\" y2=\"" << num(bottom) << "\"/>\n";
     for (std::size_t i = 0; i < l.cols.size(); ++i) {
-      double e = elapsed[l.cols[i].last];
+      double e = double(r.running_for(l.cols[i].last)) * l.m.cycle_ms;
       if (e == 0) continue;
       double frac = r.duration_ms > 0 ? std::min(1.0, e / r.duration_ms) : 1.0;
       double h = std::max(2.0, frac * (bottom - top));
@@ -107,8 +104,8 @@ class RowPainter {
   void analog(std::ostringstream& o, const Row& r, double y, double top, double bottom) const {
     top += 22;  // room for the label line above the plot
     (void)y;
-    double lo = r.value[0], hi = r.value[0];
-    for (double v : r.value) lo = std::min(lo, v), hi = std::max(hi, v);
+    double lo = r.segments.front().value, hi = lo;
+    for (const auto& s : r.segments) lo = std::min(lo, s.value), hi = std::max(hi, s.value);
     for (const auto& lv : r.levels) lo = std::min(lo, lv.value), hi = std::max(hi, lv.value);
     double pad = hi > lo ? (hi - lo) * 0.08 : 1.0;
     lo -= pad, hi += pad;
@@ -141,7 +138,7 @@ class RowPainter {
   void commands(std::ostringstream& o, const Row& r, double top, double bottom) const {
     int lane = 0;
     for (std::size_t i = 0; i < l.cols.size(); ++i) {
-      const std::string& text = r.text[l.cols[i].last];
+      const std::string& text = l.segment(r, i).text;
       if (l.cols[i].folded || text.empty()) continue;
       double x = (l.xs[i] + l.xs[i + 1]) / 2;
       o << "<polygon class=\"cmd\" points=\"" << num(x - 5) << "," << num(top) << " " << num(x + 5) << ","

@@ -109,6 +109,27 @@ TEST(TimingSvg, LongRunFoldsConstantStretches) {
   golden("timing_long.svg", svg);
 }
 
+// Drawn as it runs: the recorder, fed one cycle at a time and holding no
+// trace, writes the bytes timing_svg writes for the whole trace; so on the
+// scenario with bad quality, timers and commands.
+TEST(TimingSvg, RecorderCycleByCycleGivesTheSameBytes) {
+  model::Matrix m = cemv::formats::load_valid_matrix(kExample + "matrix.json", "drawn");
+  for (const char* file : {"scenario-1-overfill-trip.json", "scenario-2-bypass-timer.json",
+                           "scenario-3-low-level-esd.json"}) {
+    auto sc = cemv::formats::load_scenario(kExample + file, m);
+    auto cycles = cemv::formats::expand_scenario(sc, m).cycles;
+    ConcreteTrace t = run(m, cycles);
+    reports::TimingDiagram d;
+    d.title = file;
+    d.all_changing = true;
+    d.checks = {0, cycles.size() / 2};
+    d.marks.push_back({cycles.size() / 3, "expectation failed: x"});
+    reports::TimingRecorder rec(m, d);
+    for (std::size_t k = 0; k < cycles.size(); ++k) rec.add(t.inputs[k], t.observables[k]);
+    EXPECT_EQ(rec.svg(), reports::timing_svg(m, t, d)) << file;
+  }
+}
+
 // A short run gives a narrow picture: the title, the mark and the legend wrap
 // onto more lines instead of running past its right edge, and no word is lost.
 TEST(TimingSvg, NarrowDiagramWrapsHeaderAndLegendInsideItsWidth) {
