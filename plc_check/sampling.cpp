@@ -190,21 +190,21 @@ class Keeper {
     // counted by a 64-bit hash of the whole state; a collision only lowers
     // a weight).
     if (!seen_.insert(hash_of(s)).second) return;
-    std::vector<std::int64_t> key;
+    State projected;
     for (std::size_t c = 0; c < cones_.size(); ++c) {
       ConeStates& cs = cones_[c];
-      key.clear();
-      for (std::size_t v : cs.vars) key.insert(key.end(), {s[v].i, static_cast<std::int64_t>(std::bit_cast<std::uint32_t>(s[v].f))});
+      projected.clear();
+      for (std::size_t v : cs.vars) projected.push_back(s[v]);
+      // By a 64-bit hash of the cone's values, not the values: a collision
+      // only leaves a state out of the filter (more candidates for Houdini).
+      const std::uint64_t key = hash_of(projected);
       if (const auto it = index_[c].find(key); it != index_[c].end()) {
         ++cs.weights[it->second];
         continue;
       }
       if (cs.states.size() >= max_) continue;
       index_[c].emplace(key, cs.states.size());
-      State projected;
-      projected.reserve(cs.vars.size());
-      for (std::size_t v : cs.vars) projected.push_back(s[v]);
-      cs.states.push_back(std::move(projected));
+      cs.states.push_back(projected);
       cs.weights.push_back(1);
     }
   }
@@ -218,7 +218,7 @@ class Keeper {
  private:
   std::size_t max_;
   std::vector<ConeStates> cones_;
-  std::vector<std::map<std::vector<std::int64_t>, std::size_t>> index_;
+  std::vector<std::unordered_map<std::uint64_t, std::size_t>> index_;
   std::unordered_set<std::uint64_t> seen_;
   std::vector<State> all_;
   State initial_;

@@ -446,19 +446,26 @@ std::vector<std::vector<z3::expr>> mine_candidates_within(const SafetyProblem& p
   // max_states_per_subset: the memory of a subset's, not of the product's
   // states (nearly every scan of a big product's runs is a distinct state).
   std::vector<std::vector<Sample>> states(subsets.size());
-  std::vector<std::set<std::vector<std::int64_t>>> seen(subsets.size());
-  std::vector<std::int64_t> key;
+  // Seen by a 64-bit hash of the subset's values: a collision only leaves a
+  // state out of the filter (a candidate more for Houdini to drop).
+  std::vector<std::unordered_set<std::uint64_t>> seen(subsets.size());
+  Sample projected;
   try {
     simulate(problem, options, [&](const Sample& s) {
       for (std::size_t i = 0; i < subsets.size(); ++i) {
         if (options.max_states_per_subset != 0 && states[i].size() >= options.max_states_per_subset) continue;
-        key.clear();
-        for (std::size_t v : subsets[i]) key.insert(key.end(), {s[v].i, static_cast<std::int64_t>(std::bit_cast<std::uint32_t>(s[v].f))});
-        if (!seen[i].insert(key).second) continue;
-        Sample projected;
-        projected.reserve(subsets[i].size());
-        for (std::size_t v : subsets[i]) projected.push_back(s[v]);
-        states[i].push_back(std::move(projected));
+        projected.clear();
+        std::uint64_t h = 0x9e3779b97f4a7c15ULL;
+        for (std::size_t v : subsets[i]) {
+          projected.push_back(s[v]);
+          for (std::uint64_t x : {static_cast<std::uint64_t>(s[v].i), std::uint64_t{std::bit_cast<std::uint32_t>(s[v].f)}}) {
+            x += h + 0x9e3779b97f4a7c15ULL;
+            x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+            x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+            h = x ^ (x >> 31);
+          }
+        }
+        if (seen[i].insert(h).second) states[i].push_back(projected);
       }
     });
   } catch (const std::logic_error&) {
