@@ -126,18 +126,27 @@ std::vector<std::size_t> constant_states(const checker::SafetyProblem& p, const 
                                          const checker::Limits& limits, checker::WorkMeter& meter) {
   const auto& ts = *p.ts;
   std::vector<std::size_t> out;
-  if (samples.states.empty()) return out;
-  const auto& first = samples.states.front();  // the initial state
+  std::vector<char> unchanged = samples.unchanged;
+  if (unchanged.empty() && !samples.states.empty()) {
+    const auto& first = samples.states.front();  // the initial state
+    unchanged.assign(ts.statevars().size(), 1);
+    for (const auto& s : samples.states)
+      for (std::size_t v = 0; v < s.size(); ++v)
+        if (s[v].i != first[v].i) unchanged[v] = 0;
+  }
+  if (unchanged.empty()) return out;
+  // One solver holds the constraints; each variable's question is pushed and
+  // popped (a big product's constraints asserted once, not once a variable).
+  z3::solver s(ts.ctx());
+  s.add(ts.constraint_formula() && p.assumption);
   for (std::size_t v = 0; v < ts.statevars().size(); ++v) {
     const auto& sv = ts.statevars()[v];
-    if (sv.var.is_fpa() || !variables_free(sv.init)) continue;
-    if (!std::all_of(samples.states.begin(), samples.states.end(),
-                     [&](const auto& s) { return s[v].i == first[v].i; }))
-      continue;
-    z3::solver s(ts.ctx());
-    s.add(ts.constraint_formula() && p.assumption && sv.next != sv.init);
+    if (sv.var.is_fpa() || !variables_free(sv.init) || !unchanged[v]) continue;
+    s.push();
+    s.add(sv.next != sv.init);
     const z3::check_result r = checker::check_within(s, meter);
     if (r == z3::unknown) throw checker::Stopped{checker::unknown_reason(s.reason_unknown(), limits, meter)};
+    s.pop();
     if (r == z3::unsat) out.push_back(v);
   }
   return out;

@@ -28,10 +28,16 @@ using checker::Verdict;
 class Templates {
  public:
   // Over the state variables of `cone` (ascending indices).
-  // With `supports`, only the pairs and guards they accept.
+  // With `supports`, only the pairs and guards they accept. `samples`: states
+  // of the product, or (with `weights`) of the cone's variables alone, each
+  // standing for as many distinct states of the product as its weight.
   Templates(const encoder::TransitionSystem& ts, const std::vector<Sample>& samples, const std::vector<std::size_t>& cone,
-            const Supports* supports)
-      : ts_(ts), samples_(samples), supports_(supports) {
+            const Supports* supports, const std::vector<std::size_t>* weights = nullptr)
+      : ts_(ts), samples_(samples), supports_(supports), weights_(weights) {
+    col_.resize(ts.statevars().size());
+    for (std::size_t i = 0; i < col_.size(); ++i) col_[i] = i;
+    if (weights)
+      for (std::size_t k = 0; k < cone.size(); ++k) col_[cone[k]] = k;
     for (std::size_t i : cone) {
       const auto& v = ts.statevars()[i];
       const bool program = v.name.rfind(kProgramPrefix, 0) == 0;
@@ -41,7 +47,7 @@ class Templates {
     guards_.push_back({SIZE_MAX, 1});
     for (std::size_t b : bools_)
       for (int pol = 1; pol >= 0; --pol)
-        if (std::any_of(samples_.begin(), samples_.end(), [&](const Sample& s) { return s[b].i == pol; }))
+        if (std::any_of(samples_.begin(), samples_.end(), [&](const Sample& s) { return at(s, b) == pol; }))
           guards_.push_back({b, pol});
   }
 
@@ -65,8 +71,9 @@ class Templates {
     if (y != SIZE_MAX && !supports_->related(x, y, true)) return false;
     return g.var == SIZE_MAX || supports_->may_guard(g.var, x, y);
   }
+  std::int64_t at(const Sample& s, std::size_t v) const { return s[col_[v]].i; }
   bool program(std::size_t v) const { return ts_.statevars()[v].name.rfind(kProgramPrefix, 0) == 0; }
-  bool holds(const Guard& g, const Sample& s) const { return g.var == SIZE_MAX || s[g.var].i == g.pol; }
+  bool holds(const Guard& g, const Sample& s) const { return g.var == SIZE_MAX || at(s, g.var) == g.pol; }
   z3::expr var(std::size_t v) const { return ts_.statevars()[v].var; }
   z3::expr num(std::int64_t c) const { return ts_.ctx().int_val(c); }
   void add(const Guard& g, const z3::expr& e) {
@@ -88,17 +95,17 @@ class Templates {
           if (!holds(g, s)) continue;
           if (!first) {
             first = &s;
-          } else if (!a && s[y].i != (*first)[y].i) {
-            const std::int64_t dx = s[x].i - (*first)[x].i, dy = s[y].i - (*first)[y].i;
+          } else if (!a && at(s, y) != at(*first, y)) {
+            const std::int64_t dx = at(s, x) - at(*first, x), dy = at(s, y) - at(*first, y);
             if (dx == 0 || dx % dy != 0) fits = false;
             a = dx / (dy == 0 ? 1 : dy);
-            b = (*first)[x].i - *a * (*first)[y].i;
+            b = at(*first, x) - *a * at(*first, y);
           }
           if (!fits) break;
         }
         if (!fits || !a) continue;
         for (const auto& s : samples_)
-          if (holds(g, s) && s[x].i != *a * s[y].i + *b) fits = false;
+          if (holds(g, s) && at(s, x) != *a * at(s, y) + *b) fits = false;
         if (!fits) continue;
         add(g, var(x) == num(*a) * var(y) + num(*b));
         if (g.var == SIZE_MAX) unguarded_.insert({x, y});
@@ -115,8 +122,13 @@ class Templates {
   // generated 4 x 4 program's widest output, 3,400 candidates and 7 s
   // against 700 and 2.6 s).
   void equalities(const Guard& g) {
-    const auto n = std::count_if(samples_.begin(), samples_.end(), [&](const Sample& s) { return holds(g, s); });
-    if (4 * n < static_cast<std::ptrdiff_t>(samples_.size())) return;
+    std::size_t n = 0, total = 0;
+    for (std::size_t k = 0; k < samples_.size(); ++k) {
+      const std::size_t w = weights_ ? (*weights_)[k] : 1;
+      total += w;
+      if (holds(g, samples_[k])) n += w;
+    }
+    if (4 * n < total) return;
     for (std::size_t p : bools_) {
       if (!program(p) || p == g.var) continue;
       for (std::size_t q : bools_) {
@@ -124,7 +136,7 @@ class Templates {
         for (int same = 1; same >= 0; --same) {
           auto equal_where = [&](const Guard& w) {
             return std::all_of(samples_.begin(), samples_.end(), [&](const Sample& s) {
-              return !holds(w, s) || (s[p].i == s[q].i) == (same == 1);
+              return !holds(w, s) || (at(s, p) == at(s, q)) == (same == 1);
             });
           };
           // Not where it holds without the guard: one candidate, not one per guard.
@@ -145,10 +157,10 @@ class Templates {
         std::optional<std::int64_t> c;
         bool constant = true, global = true;
         for (const auto& s : samples_) {
-          if (s[v].i != samples_.front()[v].i) global = false;
+          if (at(s, v) != at(samples_.front(), v)) global = false;
           if (!holds(g, s)) continue;
-          if (c && *c != s[v].i) constant = false;
-          c = s[v].i;
+          if (c && *c != at(s, v)) constant = false;
+          c = at(s, v);
         }
         if (constant && c && !global) add(g, var(v) == num(*c));
       }
@@ -174,7 +186,7 @@ class Templates {
               const std::size_t v[3] = {flags[i], flags[j], flags[l]};
               const int pol[3] = {pols & 1, (pols >> 1) & 1, (pols >> 2) & 1};
               const bool always = std::all_of(samples_.begin(), samples_.end(), [&](const Sample& s) {
-                return s[v[0]].i == pol[0] || s[v[1]].i == pol[1] || s[v[2]].i == pol[2];
+                return at(s, v[0]) == pol[0] || at(s, v[1]) == pol[1] || at(s, v[2]) == pol[2];
               });
               if (!always) continue;
               z3::expr_vector lits(ts_.ctx());
@@ -187,6 +199,8 @@ class Templates {
   const encoder::TransitionSystem& ts_;
   const std::vector<Sample>& samples_;
   const Supports* supports_;
+  const std::vector<std::size_t>* weights_;
+  std::vector<std::size_t> col_;  // a state variable's place in a sample
   std::vector<std::size_t> program_ints_, matrix_ints_, bools_;
   std::vector<Guard> guards_;
   std::set<std::pair<std::size_t, std::size_t>> unguarded_;  // (x, y) related without a guard
@@ -224,6 +238,8 @@ std::optional<int> good_from(const checker::SafetyProblem& p, const z3::expr& S,
 
 std::vector<z3::expr> correspondence_candidates(const checker::SafetyProblem& p, const Samples& samples,
                                                 const std::vector<std::size_t>& cone, const Supports* supports) {
+  for (const auto& c : samples.cones)
+    if (c.vars == cone) return c.states.empty() ? std::vector<z3::expr>{} : Templates(*p.ts, c.states, cone, supports, &c.weights).make();
   if (samples.states.empty()) return {};
   return Templates(*p.ts, samples.states, cone, supports).make();
 }

@@ -2,6 +2,7 @@
 #include "plc_check/sampling.hpp"
 
 #include <bit>
+#include <map>
 #include <random>
 #include <set>
 #include <stdexcept>
@@ -148,6 +149,82 @@ std::vector<std::vector<encoder::Evaluator::Value>> distinct(std::vector<std::ve
   return out;
 }
 
+using State = std::vector<encoder::Evaluator::Value>;
+
+std::uint64_t hash_of(const State& s) {
+  std::uint64_t h = 0x9e3779b97f4a7c15ULL;
+  for (const auto& v : s) {
+    for (std::uint64_t x : {static_cast<std::uint64_t>(v.i), std::uint64_t{std::bit_cast<std::uint32_t>(v.f)}}) {
+      x += h + 0x9e3779b97f4a7c15ULL;
+      x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+      x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+      h = x ^ (x >> 31);
+    }
+  }
+  return h;
+}
+
+// What the runs keep of the states they reach (SamplingOptions::cones): every
+// state, or each cone's distinct projections, bounded; and which variables
+// never left their initial value (their
+// integer and Boolean values; constant_states asks no Float32 variable).
+class Keeper {
+ public:
+  explicit Keeper(const SamplingOptions& o) : max_(o.max_states) {
+    for (const auto& c : o.cones) cones_.push_back(ConeStates{c, {}, {}});
+    index_.resize(cones_.size());
+  }
+
+  void add(const State& s) {
+    if (unchanged_.empty()) {
+      initial_ = s;
+      unchanged_.assign(s.size(), 1);
+    }
+    for (std::size_t v = 0; v < s.size(); ++v)
+      if (s[v].i != initial_[v].i) unchanged_[v] = 0;
+    if (cones_.empty()) {
+      all_.push_back(s);
+      return;
+    }
+    // A state of the product seen before adds nothing (distinct states are
+    // counted by a 64-bit hash of the whole state; a collision only lowers
+    // a weight).
+    if (!seen_.insert(hash_of(s)).second) return;
+    State projected;
+    for (std::size_t c = 0; c < cones_.size(); ++c) {
+      ConeStates& cs = cones_[c];
+      projected.clear();
+      for (std::size_t v : cs.vars) projected.push_back(s[v]);
+      // By a 64-bit hash of the cone's values, not the values: a collision
+      // only leaves a state out of the filter (more candidates for Houdini).
+      const std::uint64_t key = hash_of(projected);
+      if (const auto it = index_[c].find(key); it != index_[c].end()) {
+        ++cs.weights[it->second];
+        continue;
+      }
+      if (cs.states.size() >= max_) continue;
+      index_[c].emplace(key, cs.states.size());
+      cs.states.push_back(projected);
+      cs.weights.push_back(1);
+    }
+  }
+
+  void finish(Samples& out) {
+    out.unchanged = std::move(unchanged_);
+    if (cones_.empty()) out.states = distinct(std::move(all_));
+    else out.cones = std::move(cones_);
+  }
+
+ private:
+  std::size_t max_;
+  std::vector<ConeStates> cones_;
+  std::vector<std::unordered_map<std::uint64_t, std::size_t>> index_;
+  std::unordered_set<std::uint64_t> seen_;
+  std::vector<State> all_;
+  State initial_;
+  std::vector<char> unchanged_;
+};
+
 }  // namespace
 
 Samples sample(const checker::SafetyProblem& p, const SamplingOptions& o) {
@@ -177,7 +254,8 @@ Samples sample(const checker::SafetyProblem& p, const SamplingOptions& o) {
     std::mt19937 near_rng(o.seed + 1);
     auto pick_near = [&](std::size_t n) { return std::uniform_int_distribution<std::size_t>(0, n - 1)(near_rng); };
     const auto& ins = ts.inputvars();
-    std::vector<std::vector<encoder::Evaluator::Value>> states{runner.ev().state()};
+    Keeper states(o);
+    states.add(runner.ev().state());
     Inputs rest(ins.size());
     for (std::size_t i = 0; i < ins.size() && o.rest; ++i)
       if (const auto v = o.rest(ins[i].name)) {
@@ -226,11 +304,11 @@ Samples sample(const checker::SafetyProblem& p, const SamplingOptions& o) {
             out.violation = runner.trace(runner.shorten(std::move(run)));
             return out;
           }
-          states.push_back(runner.ev().state());
+          states.add(runner.ev().state());
         }
       }
     }
-    out.states = distinct(std::move(states));
+    states.finish(out);
   } catch (const std::logic_error&) {
     out = {};  // an operator the evaluator does not take: nothing sampled
   }

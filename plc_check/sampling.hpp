@@ -26,6 +26,22 @@ struct SamplingOptions {
   // else quiet (one transmitter alone over its limit through a delay). An
   // input it does not name rests at 0; none given: every run is random.
   std::function<std::optional<checker::Value>(const std::string&)> rest;
+  // Cones (ascending state-variable indices; plc_check/cones.hpp): kept are
+  // the distinct states of each cone's variables alone, at most `max_states`
+  // of each (the first reached), not every state of the product, whose
+  // distinct states are nearly all the scans of a big product's runs (a
+  // 128 x 128 x 1024 matrix's generated program: 25,600 states of thousands
+  // of variables). Empty: every distinct state of the product, unbounded.
+  std::vector<std::vector<std::size_t>> cones;
+  std::size_t max_states = 4096;
+};
+
+// The distinct states of one cone's variables (values in the cone's order),
+// each with the number of distinct states of the product it stands for.
+struct ConeStates {
+  std::vector<std::size_t> vars;
+  std::vector<std::vector<encoder::Evaluator::Value>> states;
+  std::vector<std::size_t> weights;
 };
 
 struct Samples {
@@ -33,6 +49,11 @@ struct Samples {
   // the initial state first; empty when the evaluator does not take an
   // operator of the formulas.
   std::vector<std::vector<encoder::Evaluator::Value>> states;
+  // With SamplingOptions::cones: each cone's states instead (`states` empty).
+  std::vector<ConeStates> cones;
+  // By state variable: every sampled state holds its initial value there.
+  // Empty when nothing was sampled.
+  std::vector<char> unchanged;
   // A run from the initial state whose every scan keeps the constraints and
   // the assumption and whose last scan breaks `good`; sampling stops there.
   std::optional<checker::Trace> violation;

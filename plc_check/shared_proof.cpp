@@ -53,14 +53,16 @@ SharedProof prove_group(const model::Matrix& m, const plc::Program& program, con
   z3::context ctx;
   std::vector<z3::expr> goods;
   const checker::OwnedProblem reduced = reduce_product(make, ctx, goods);
-  const SamplingOptions so = at_rest(m);
+  // `whole`: every candidate of the product in two rounds, as one output's
+  // cone gets them; else each cone's related candidates, sampled and mined
+  // on each cone's variables alone.
+  const Cones cones = whole ? Cones{} : cones_of(*reduced.problem.ts, goods);
+  SamplingOptions so = at_rest(m);
+  so.cones = cones;
   const Samples s = sample(reduced.problem, so);
   if (s.violation) return out;  // an output differs: each is decided alone, its run replayed
   const checker::Work work = o.work * static_cast<checker::Work>(qs.size());
-  // `whole`: every candidate of the product in two rounds, as one output's
-  // cone gets them; else each cone's related candidates.
-  const Correspondence c = prove_by_correspondence(reduced.problem, s, o.limits.with_work(work), so,
-                                                   whole ? Cones{} : cones_of(*reduced.problem.ts, goods));
+  const Correspondence c = prove_by_correspondence(reduced.problem, s, o.limits.with_work(work), so, cones);
   if (c.result.verdict != checker::Verdict::Proved) {
     if (c.result.reason == checker::UnknownReason::TimeLimit) throw checker::Interrupted();
     return out;

@@ -62,8 +62,9 @@ Constants constants_of(const SafetyProblem& p) {
 
 // Random runs with inputs held for stretches of varying length (timers run
 // out only when a trip is held), commands issued at the start of a stretch
-// with varying probability.
-std::vector<Sample> simulate(const SafetyProblem& p, const MiningOptions& opt) {
+// with varying probability. Each state reached goes to `keep`, the initial
+// state first.
+void simulate(const SafetyProblem& p, const MiningOptions& opt, const std::function<void(const Sample&)>& keep) {
   const auto& ts = *p.ts;
   encoder::Encoding enc(ts.ctx());
   enc.ts = ts;
@@ -75,7 +76,7 @@ std::vector<Sample> simulate(const SafetyProblem& p, const MiningOptions& opt) {
       fpool.push_back(g);
   std::vector<std::int64_t> ipool(k.ints.begin(), k.ints.end());
   std::mt19937 rng(opt.seed);
-  std::vector<Sample> samples{ev.state()};
+  keep(ev.state());
   const double command_p[] = {0.3, 0.05, 0.01, 0.002};
   const int hold_max[] = {1, 8, 60, 600};
   for (int run = 0; run < opt.runs; ++run) {
@@ -100,14 +101,13 @@ std::vector<Sample> simulate(const SafetyProblem& p, const MiningOptions& opt) {
       int hold = std::uniform_int_distribution<int>(1, hm)(rng);
       for (int h = 0; h < hold && cycle < opt.cycles_per_run; ++h, ++cycle) {
         ev.step_raw(in);
-        samples.push_back(ev.state());
+        keep(ev.state());
         if (h == 0)  // commands act once per stretch
           for (std::size_t i = 0; i < in.size(); ++i)
             if (ts.inputvars()[i].name.rfind("cmd.", 0) == 0 && ts.inputvars()[i].var.is_bool()) in[i].i = 0;
       }
     }
   }
-  return samples;
 }
 
 // Candidates as (evaluable predicate, term builder) pairs are overkill; the
@@ -115,9 +115,15 @@ std::vector<Sample> simulate(const SafetyProblem& p, const MiningOptions& opt) {
 class CandidateMiner {
  public:
   // Over the state variables `only` names (ascending indices), or all.
+  // `projected`: each sample holds the values of `only`'s variables alone,
+  // in its order; else every state variable's.
   CandidateMiner(const SafetyProblem& p, const std::vector<Sample>& samples, const MiningOptions& opt,
-                 const Constants& k, const std::vector<std::size_t>* only = nullptr)
+                 const Constants& k, const std::vector<std::size_t>* only = nullptr, bool projected = false)
       : ts_(*p.ts), samples_(samples), opt_(opt), k_(k) {
+    col_.resize(ts_.statevars().size());
+    for (std::size_t i = 0; i < col_.size(); ++i) col_[i] = i;
+    if (only && projected)
+      for (std::size_t j = 0; j < only->size(); ++j) col_[(*only)[j]] = j;
     auto take = [&](std::size_t i) {
       const auto& v = ts_.statevars()[i].var;
       if (v.is_int()) ints_.push_back(i);
@@ -139,7 +145,7 @@ class CandidateMiner {
   }
 
  private:
-  std::int64_t iv(const Sample& s, std::size_t v) const { return s[v].i; }
+  std::int64_t iv(const Sample& s, std::size_t v) const { return s[col_[v]].i; }
   z3::expr var(std::size_t v) const { return ts_.statevars()[v].var; }
   z3::expr num(std::int64_t c) const { return ts_.ctx().int_val(c); }
   void add(const z3::expr& e) {
@@ -168,7 +174,7 @@ class CandidateMiner {
     }
     for (std::size_t b : bools_) {
       bool all_true = true, all_false = true;
-      for (const auto& s : samples_) (s[b].i ? all_false : all_true) = false;
+      for (const auto& s : samples_) (iv(s, b) ? all_false : all_true) = false;
       if (all_true) add(var(b));
       if (all_false) add(!var(b));
     }
@@ -212,7 +218,7 @@ class CandidateMiner {
   void guarded() {
     for (std::size_t g : bools_)
       for (int pol = 1; pol >= 0 && !stop(); --pol) {
-        auto keep = [&](const Sample& s) { return s[g].i == pol; };
+        auto keep = [&](const Sample& s) { return iv(s, g) == pol; };
         if (std::none_of(samples_.begin(), samples_.end(), keep)) continue;
         z3::expr guard = pol ? var(g) : !var(g);
         for (std::size_t a = 0; a < ints_.size(); ++a) {
@@ -281,14 +287,14 @@ class CandidateMiner {
       for (int pol = 1; pol >= 0 && !stop() && out_.size() < budget; --pol) {
         z3::expr guard = pol ? var(g) : !var(g);
         bool seen = false;
-        for (const auto& s : samples_) seen = seen || s[g].i == pol;
+        for (const auto& s : samples_) seen = seen || iv(s, g) == pol;
         if (!seen) continue;
         for (std::size_t y : ints_) {
           if (!monitor(y)) continue;
           for (std::size_t x : counters) {
             std::optional<std::int64_t> least;
             for (const auto& s : samples_)
-              if (s[g].i == pol && iv(s, x) < bound[x])
+              if (iv(s, g) == pol && iv(s, x) < bound[x])
                 least = std::min(least.value_or(iv(s, x) - iv(s, y)), iv(s, x) - iv(s, y));
             std::set<std::int64_t> cs;
             if (least) cs.insert(*least);
@@ -309,7 +315,7 @@ class CandidateMiner {
           for (int pb = 0; pb < 2; ++pb) {
             // The clause (x == pa) or (y == pb) on every sample.
             bool holds = std::all_of(samples_.begin(), samples_.end(), [&](const Sample& s) {
-              return s[bools_[a]].i == pa || s[bools_[b]].i == pb;
+              return iv(s, bools_[a]) == pa || iv(s, bools_[b]) == pb;
             });
             if (!holds) continue;
             z3::expr la = pa ? var(bools_[a]) : !var(bools_[a]);
@@ -320,6 +326,7 @@ class CandidateMiner {
 
   const encoder::TransitionSystem& ts_;
   const std::vector<Sample>& samples_;
+  std::vector<std::size_t> col_;  // a state variable's place in a sample
   const MiningOptions& opt_;
   const Constants& k_;
   std::vector<std::size_t> ints_, bools_;
@@ -423,7 +430,7 @@ std::vector<Sample> distinct(std::vector<Sample> samples) {
 std::vector<z3::expr> mine_candidates(const SafetyProblem& problem, const MiningOptions& options) {
   std::vector<Sample> samples;
   try {
-    samples = simulate(problem, options);
+    simulate(problem, options, [&](const Sample& s) { samples.push_back(s); });
   } catch (const std::logic_error&) {
     return {};  // an operator the Evaluator does not interpret: no samples, no candidates
   }
@@ -435,15 +442,39 @@ std::vector<z3::expr> mine_candidates(const SafetyProblem& problem, const Mining
 std::vector<std::vector<z3::expr>> mine_candidates_within(const SafetyProblem& problem, const MiningOptions& options,
                                                           const std::vector<std::vector<std::size_t>>& subsets) {
   std::vector<std::vector<z3::expr>> out(subsets.size());
-  std::vector<Sample> samples;
+  // Each subset's distinct states of its own variables, the first
+  // max_states_per_subset: the memory of a subset's, not of the product's
+  // states (nearly every scan of a big product's runs is a distinct state).
+  std::vector<std::vector<Sample>> states(subsets.size());
+  // Seen by a 64-bit hash of the subset's values: a collision only leaves a
+  // state out of the filter (a candidate more for Houdini to drop).
+  std::vector<std::unordered_set<std::uint64_t>> seen(subsets.size());
+  Sample projected;
   try {
-    samples = simulate(problem, options);
+    simulate(problem, options, [&](const Sample& s) {
+      for (std::size_t i = 0; i < subsets.size(); ++i) {
+        if (options.max_states_per_subset != 0 && states[i].size() >= options.max_states_per_subset) continue;
+        projected.clear();
+        std::uint64_t h = 0x9e3779b97f4a7c15ULL;
+        for (std::size_t v : subsets[i]) {
+          projected.push_back(s[v]);
+          for (std::uint64_t x : {static_cast<std::uint64_t>(s[v].i), std::uint64_t{std::bit_cast<std::uint32_t>(s[v].f)}}) {
+            x += h + 0x9e3779b97f4a7c15ULL;
+            x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+            x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+            h = x ^ (x >> 31);
+          }
+        }
+        if (seen[i].insert(h).second) states[i].push_back(projected);
+      }
+    });
   } catch (const std::logic_error&) {
     return out;
   }
-  const std::vector<Sample> states = distinct(std::move(samples));
+  seen.clear();
   const Constants k = constants_of(problem);
-  for (std::size_t i = 0; i < subsets.size(); ++i) out[i] = CandidateMiner(problem, states, options, k, &subsets[i]).mine();
+  for (std::size_t i = 0; i < subsets.size(); ++i)
+    out[i] = CandidateMiner(problem, states[i], options, k, &subsets[i], true).mine();
   return out;
 }
 

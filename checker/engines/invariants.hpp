@@ -41,6 +41,11 @@ struct MiningOptions {
   // constant of x alone); unset: every pair and guard.
   std::function<bool(std::size_t x, std::size_t y)> related;
   std::function<bool(std::size_t g, std::size_t x, std::size_t y)> may_guard;
+  // mine_candidates_within: the distinct states of a subset's variables kept
+  // (the first reached; 0: all). Below it the candidates are those of every
+  // sampled state; above, a candidate false only in a later state is left to
+  // Houdini.
+  std::size_t max_states_per_subset = 4096;
 };
 
 // Candidate invariants over the state variables, true in every sampled state.

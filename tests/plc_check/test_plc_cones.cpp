@@ -144,3 +144,71 @@ TEST(PlcCones, SeededRunsDrawInputsNearTheirOwnLimits) {
 }
 
 }  // namespace
+
+namespace {
+
+// A counter the inputs hold for stretches: many distinct states of the
+// product, few of each cone's variables.
+struct Counting {
+  z3::context ctx;
+  TransitionSystem ts{ctx};
+  z3::expr i1 = ts.make_inputvar("i1", ctx.bool_sort());
+  z3::expr i2 = ts.make_inputvar("i2", ctx.bool_sort());
+  z3::expr a = ts.make_statevar("a", ctx.bool_sort());
+  z3::expr n = ts.make_statevar("n", ctx.int_sort());
+  z3::expr b = ts.make_statevar("b", ctx.bool_sort());
+  Counting() {
+    ts.set_init(a, ctx.bool_val(false));
+    ts.set_init(n, ctx.int_val(0));
+    ts.set_init(b, ctx.bool_val(false));
+    ts.assign_next(a, i1);
+    ts.assign_next(n, z3::ite(i1, z3::ite(n < 50, n + 1, n), ctx.int_val(0)));
+    ts.assign_next(b, z3::ite(i2, !b, b));
+    ts.check_complete();
+  }
+};
+
+}  // namespace
+
+// Sampled by cones: each cone's states are the distinct projections of the
+// product's distinct states, in the order first reached, weighted by how many
+// of the product's states each stands for; at most max_states are kept.
+TEST(PlcCones, SampledConesAreTheProjectionsOfTheProductsStates) {
+  Counting s;
+  const cemv::checker::SafetyProblem p{&s.ts, s.ctx.bool_val(true), s.ctx.bool_val(true)};
+  const auto whole = cemv::plc_check::sample(p);
+  cemv::plc_check::SamplingOptions o;
+  o.cones = {{0, 1}, {2}};
+  const auto by_cones = cemv::plc_check::sample(p, o);
+  ASSERT_FALSE(whole.states.empty());
+  EXPECT_TRUE(by_cones.states.empty());
+  ASSERT_EQ(by_cones.cones.size(), 2u);
+  for (std::size_t c = 0; c < 2; ++c) {
+    std::vector<std::vector<std::int64_t>> expected;
+    std::vector<std::size_t> weights;
+    for (const auto& st : whole.states) {
+      std::vector<std::int64_t> proj;
+      for (std::size_t v : o.cones[c]) proj.push_back(st[v].i);
+      const auto it = std::find(expected.begin(), expected.end(), proj);
+      if (it == expected.end()) {
+        expected.push_back(proj);
+        weights.push_back(1);
+      } else {
+        ++weights[static_cast<std::size_t>(it - expected.begin())];
+      }
+    }
+    std::vector<std::vector<std::int64_t>> got;
+    for (const auto& st : by_cones.cones[c].states) {
+      got.emplace_back();
+      for (const auto& v : st) got.back().push_back(v.i);
+    }
+    EXPECT_EQ(got, expected) << "cone " << c;
+    EXPECT_EQ(by_cones.cones[c].weights, weights) << "cone " << c;
+  }
+  EXPECT_LT(by_cones.cones[1].states.size(), whole.states.size());
+  o.max_states = 5;
+  const auto bounded = cemv::plc_check::sample(p, o);
+  EXPECT_EQ(bounded.cones[0].states.size(), 5u);
+  EXPECT_EQ(bounded.cones[1].states.size(), by_cones.cones[1].states.size());  // 2 distinct: under the bound
+  EXPECT_EQ(bounded.unchanged, whole.unchanged);
+}
