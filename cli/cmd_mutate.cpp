@@ -47,6 +47,7 @@ struct MutateArgs {
   bool list_operators = false;
   bool quiet = false;
   std::string suite_dir;
+  int jobs = 1;  // --jobs: mutants decided at once with --suite
 };
 
 // The distinguishing run as a scenario of the original matrix that expects
@@ -68,6 +69,7 @@ int run_mutate(const MutateArgs& a) {
   }
   if (a.out_dir.empty()) throw std::runtime_error("mutate: --out DIR is required");
   if (a.timeout_s < 0 || a.total_timeout_s < 0) throw std::runtime_error("mutate: time limits must not be negative");
+  if (a.jobs < 1) throw std::runtime_error("mutate: --jobs must be at least 1");
   // --total-timeout: the run's one cancel token; the mutants it leaves are
   // undecided ("time limit"), every file is still written.
   checker::CancelToken cancel(a.total_timeout_s > 0
@@ -98,7 +100,7 @@ int run_mutate(const MutateArgs& a) {
       t.scenario_json = text.str();
       suite.tests.push_back(std::move(t));
     }
-    return mutation_report(m, suite, a.out_dir, &cancel);
+    return mutation_report(m, suite, a.out_dir, &cancel, a.jobs);
 #else
     throw std::runtime_error("mutate: --suite needs the test generator, which this build does not include");
 #endif
@@ -192,6 +194,9 @@ void add_mutate_commands(CLI::App& app, Context& ctx) {
                   "the mutation report of the acceptance suite in this folder (cemv testgen's tests): "
                   "mutation-report.json and .md into --out")
       ->type_name("DIR");
+  cmd->add_option("--jobs", a.jobs, "mutants decided at once with --suite (the report does not depend on it)")
+      ->capture_default_str()
+      ->type_name("N");
   cmd->footer(
       "Exit status: 0 done; 2 invalid input or unwritable folder; 3 some mutant's equivalence undecided\n"
       "(--equivalence, --suite); 1 a non-equivalent mutant survives the suite (--suite); 4 internal error\n"

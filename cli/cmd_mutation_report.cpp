@@ -78,9 +78,10 @@ int field_mutation_report(const model::Matrix& m, const testgen::TestSuite* auto
 }
 
 int mutation_report(const model::Matrix& m, const testgen::TestSuite& suite, const std::string& out_dir,
-                    checker::CancelToken* cancel) {
+                    checker::CancelToken* cancel, int jobs) {
   mutate::MutationOptions o;
   o.cancel = cancel;
+  o.jobs = jobs;
   const mutate::MutationReport r = mutate::mutation_report(m, suite, o);
   const std::filesystem::path dir(out_dir);
   write_output((dir / "mutation-report.json").string(), mutate::report_json(r));

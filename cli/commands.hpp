@@ -41,9 +41,10 @@ void add_record_commands(CLI::App& app, Context& ctx);    // record
 
 // `cemv testgen --mutation-report`: after the suite is written to `out_dir`,
 // the mutation adequacy report (docs/testgen.md); returns an exit status.
-// `cancel`: the run's token (--total-timeout; nullptr: none).
+// `cancel`: the run's token (--total-timeout; nullptr: none); `jobs`:
+// mutants decided at once (the report does not depend on it).
 int mutation_report(const model::Matrix& m, const testgen::TestSuite& suite, const std::string& out_dir,
-                    checker::CancelToken* cancel = nullptr);
+                    checker::CancelToken* cancel = nullptr, int jobs = 1);
 // The same for the automated suite and the field suite (DIR/field/), and the
 // comparison of the two in the field checklists; returns an exit status.
 int field_mutation_report(const model::Matrix& m, const testgen::TestSuite* automated, testgen::FieldSuite& field,

@@ -230,6 +230,8 @@ void Runtime::snapshot(std::vector<int>& out) const {
   for (std::size_t i = 0; i < impl_->observables.size(); ++i) out[i] = impl_->read(impl_->observables[i]);
 }
 
+int Runtime::observable(std::size_t i) const { return impl_->read(impl_->observables.at(i)); }
+
 std::optional<bool> Runtime::output(std::string_view tag) const {
   for (std::size_t slot = 0; slot < impl_->effects.size(); ++slot) {
     const EffectConfig& cfg = impl_->effects[slot].config();

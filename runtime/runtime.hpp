@@ -43,6 +43,9 @@ class Runtime {
   int value(const model::Observable& o) const;
   // All observables in model::observables order.
   void snapshot(std::vector<int>& out) const;
+  // The i-th of them (0-based, i < model::observables(matrix()).size()): a
+  // loop that compares a few observables every cycle reads only those.
+  int observable(std::size_t i) const;
 
   // The value of an output tag by name (case-insensitive); nullopt if unknown.
   std::optional<bool> output(std::string_view tag) const;

@@ -51,7 +51,7 @@ TestOutcome replay_on_target(const model::Matrix& m, formats::Scenario sc, TestO
 
 TestOutcome replay_one(const model::Matrix& m, const std::string& name, const std::string& text,
                        const std::vector<model::Observable>& obs, const std::map<std::string, std::size_t>& index,
-                       ReplayTarget* target) {
+                       ReplayTarget* target, bool stop_at_failure) {
   TestOutcome out;
   out.name = name;
   formats::Scenario sc;
@@ -88,6 +88,13 @@ TestOutcome replay_one(const model::Matrix& m, const std::string& name, const st
         out.steps[r.step].passed = false;
         out.steps[r.step].failures.push_back(r.failure_text(m.cycle_ms));
       }
+    if (stop_at_failure && checker.failed() > 0) {
+      out.cycles = k + 1;
+      out.expectations = checker.checked();
+      out.failed = checker.failed();
+      out.passed = false;
+      return out;
+    }
   }
   out.cycles = ex.cycles.size();
   out.expectations = checker.checked();
@@ -112,7 +119,17 @@ ReplayResult replay_texts(const model::Matrix& m, const std::vector<std::pair<st
   std::map<std::string, std::size_t> index;
   for (std::size_t i = 0; i < obs.size(); ++i) index[obs[i].key] = i;
   ReplayResult r;
-  for (const auto& [name, text] : scenarios) r.tests.push_back(replay_one(m, name, text, obs, index, target));
+  for (const auto& [name, text] : scenarios) r.tests.push_back(replay_one(m, name, text, obs, index, target, false));
+  return r;
+}
+
+ReplayResult replay_verdicts(const model::Matrix& m,
+                             const std::vector<std::pair<std::string, std::string>>& scenarios) {
+  const auto obs = model::observables(m);
+  std::map<std::string, std::size_t> index;
+  for (std::size_t i = 0; i < obs.size(); ++i) index[obs[i].key] = i;
+  ReplayResult r;
+  for (const auto& [name, text] : scenarios) r.tests.push_back(replay_one(m, name, text, obs, index, nullptr, true));
   return r;
 }
 

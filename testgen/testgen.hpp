@@ -176,6 +176,12 @@ ReplayResult replay_texts(const model::Matrix& m,
                           const std::vector<std::pair<std::string, std::string>>& scenarios,
                           ReplayTarget* target = nullptr);
 ReplayResult replay_suite(const model::Matrix& m, const TestSuite& suite);
+// Which tests pass on the reference runtime, each test stopped after the
+// cycle of its first failed expectation (a mutant's verdict, cemv mutate
+// --suite): a failed test's steps, expectations, failed and cycles count
+// only up to that cycle; a passed test is the same as replay_texts gives.
+ReplayResult replay_verdicts(const model::Matrix& m,
+                             const std::vector<std::pair<std::string, std::string>>& scenarios);
 // Files, and folders (every *.json in them, by name). A file that cannot be
 // read is a formats::LoadError; one that does not load against `m` is a
 // failed test with its load_error.

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "formats/matrix_json.hpp"
+#include "mutate/mutants.hpp"
 #include "mutate/mutation_report.hpp"
 #include "testgen/testgen.hpp"
 
@@ -71,6 +72,43 @@ TEST(MutationReport, ReferenceObjectiveAndInterfaceOnlyMutants) {
   EXPECT_NE(normal->equivalence.reason.find("cause[3].active"), std::string::npos);
   EXPECT_GE(report.interface_only, 1u);
   EXPECT_EQ(report.survived, 0u);
+}
+
+// `cemv mutate --suite --jobs N`: the report does not depend on N.
+TEST(MutationReport, TheReportDoesNotDependOnJobs) {
+  const model::Matrix m = formats::parse_valid_matrix(kMatrix, "refs.json", "tested");
+  const testgen::TestSuite suite = testgen::generate_tests(m);
+  mutate::MutationOptions one, three;
+  three.jobs = 3;
+  const mutate::MutationReport a = mutate::mutation_report(m, suite, one);
+  EXPECT_GT(a.detected, 0u);
+  EXPECT_EQ(mutate::report_json(a), mutate::report_json(mutate::mutation_report(m, suite, three)));
+}
+
+// A mutant's verdict replay stops each test at its first failure: the same
+// tests fail as when every test runs to its end.
+TEST(MutationReport, VerdictReplayFailsTheTestsAFullReplayFails) {
+  const model::Matrix m = formats::parse_valid_matrix(kMatrix, "refs.json", "tested");
+  const testgen::TestSuite suite = testgen::generate_tests(m);
+  std::vector<std::pair<std::string, std::string>> texts;
+  for (const auto& t : suite.tests) texts.emplace_back(t.file_name, t.scenario_json);
+  std::size_t failures = 0;
+  for (const auto& mu : mutate::mutants(m).mutants) {
+    const testgen::ReplayResult full = testgen::replay_texts(mu.matrix, texts);
+    const testgen::ReplayResult verdicts = testgen::replay_verdicts(mu.matrix, texts);
+    ASSERT_EQ(full.tests.size(), verdicts.tests.size());
+    for (std::size_t i = 0; i < full.tests.size(); ++i) {
+      EXPECT_EQ(full.tests[i].passed, verdicts.tests[i].passed) << mu.id << " " << full.tests[i].name;
+      EXPECT_LE(verdicts.tests[i].cycles, full.tests[i].cycles) << mu.id;
+      if (full.tests[i].passed) {
+        EXPECT_EQ(full.tests[i].cycles, verdicts.tests[i].cycles) << mu.id;
+        EXPECT_EQ(full.tests[i].expectations, verdicts.tests[i].expectations) << mu.id;
+      } else {
+        ++failures;
+      }
+    }
+  }
+  EXPECT_GT(failures, 3u);
 }
 
 }  // namespace
