@@ -71,6 +71,10 @@ class StreamEvaluator {
   // Whether `holds` and `cycle` are decided whatever cycles follow: a
   // violation or witness found, or an assumption failed.
   bool final() const { return result_.cycle.has_value() || frozen_; }
+  // The observables the property and its assumptions read (indices in
+  // model::observables order, ascending): step() reads no other entry of its
+  // vector, so a caller stepping a runtime copies only these each cycle.
+  const std::vector<std::size_t>& observables_read() const { return program_->read; }
 
   // A compiled expression node; its children come before it.
   struct Node {
@@ -84,6 +88,7 @@ class StreamEvaluator {
     std::vector<std::size_t> assumptions;  // roots
     std::size_t antecedent = 0, body = 0, trigger = 0, response = 0;
     bool has_antecedent = false;
+    std::vector<std::size_t> read;  // the Observable nodes' indices, distinct, ascending
   };
   struct Value {
     std::int64_t i = 0;

@@ -69,6 +69,10 @@ StreamEvaluator::StreamEvaluator(const model::Matrix& m, const Property& p,
   } else {
     program->body = c.compile(p.body);
   }
+  for (const Node& n : program->nodes)
+    if (n.expr->kind == Kind::Observable) program->read.push_back(n.observable);
+  std::sort(program->read.begin(), program->read.end());
+  program->read.erase(std::unique(program->read.begin(), program->read.end()), program->read.end());
   memory_.resize(program->nodes.size());
   for (std::size_t i = 0; i < program->nodes.size(); ++i) memory_[i] = initial_memory(*program->nodes[i].expr);
   now_.resize(program->nodes.size());

@@ -322,11 +322,17 @@ class GroupRun {
       open.push_back(i);
       judges.emplace_back(m_, file_.properties[i], file_.assumptions);
     }
+    // Each cycle copies only the observables the open objectives read.
+    std::vector<std::size_t> read;
+    for (const auto& j : judges) read.insert(read.end(), j.observables_read().begin(), j.observables_read().end());
+    std::sort(read.begin(), read.end());
+    read.erase(std::unique(read.begin(), read.end()), read.end());
     runtime::Runtime rt(m_);
     std::vector<int> obs;
+    rt.snapshot(obs);
     for (const auto& in : inputs) {
       rt.step(in);
-      rt.snapshot(obs);
+      for (std::size_t i : read) obs[i] = rt.observable(i);
       bool all_final = true;
       for (auto& j : judges)
         if (!j.final()) {
