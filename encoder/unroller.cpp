@@ -57,7 +57,9 @@ z3::expr Unroller::at(const z3::expr& e, int k) {
     }
     for (unsigned i = 0; i < n; ++i) todo.push_back(x.arg(i));
   }
-  if (from.empty()) return e;
+  // Substituted even when `e` has no variable: Z3 keeps the last term an
+  // API call made, so skipping the call changes when terms are freed, which
+  // term ids are reused, and with them the solvers' work counts in reports.
   z3::expr copy = e;
   return copy.substitute(from, to);
 }
