@@ -1,5 +1,7 @@
 #include "encoder/unroller.hpp"
 
+#include <unordered_set>
+
 namespace cemv::encoder {
 
 Unroller::Unroller(const TransitionSystem& ts) : ts_(ts), from_(ts.ctx()) {
@@ -29,6 +31,40 @@ const std::vector<z3::expr>& Unroller::vars_at(int k) {
 }
 
 z3::expr Unroller::at(const z3::expr& e, int k) {
+  const auto& now = vars_at(k);
+  const auto& later = vars_at(k + 1);
+  const std::size_t n_states = ts_.statevars().size();
+  const std::size_t current = n_states + ts_.inputvars().size();
+  // Only the variables `e` contains are substituted: a substitution builds
+  // its map from every pair it is given, so an invariant candidate over two
+  // variables of a wide cone cost as much as the whole transition relation.
+  z3::expr_vector from(ts_.ctx()), to(ts_.ctx());
+  std::unordered_set<unsigned> seen;
+  std::vector<z3::expr> todo{e};
+  while (!todo.empty()) {
+    const z3::expr x = todo.back();
+    todo.pop_back();
+    if (!seen.insert(x.id()).second) continue;
+    if (x.is_quantifier()) return at_every_variable(e, k);
+    if (!x.is_app()) continue;
+    const unsigned n = x.num_args();
+    if (n == 0) {
+      auto it = position_.find(x.id());
+      if (it == position_.end()) continue;
+      from.push_back(x);
+      to.push_back(it->second < current ? now[it->second] : later[it->second - current]);
+      continue;
+    }
+    for (unsigned i = 0; i < n; ++i) todo.push_back(x.arg(i));
+  }
+  // Substituted even when `e` has no variable: Z3 keeps the last term an
+  // API call made, so skipping the call changes when terms are freed, which
+  // term ids are reused, and with them the solvers' work counts in reports.
+  z3::expr copy = e;
+  return copy.substitute(from, to);
+}
+
+z3::expr Unroller::at_every_variable(const z3::expr& e, int k) {
   const auto& now = vars_at(k);
   const auto& later = vars_at(k + 1);
   z3::expr_vector to(ts_.ctx());

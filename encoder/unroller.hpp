@@ -31,6 +31,7 @@ class Unroller {
 
  private:
   const std::vector<z3::expr>& vars_at(int k);
+  z3::expr at_every_variable(const z3::expr& e, int k);  // `at` for a term with a quantifier
 
   const TransitionSystem& ts_;
   z3::expr_vector from_;                       // state vars, input vars, next vars

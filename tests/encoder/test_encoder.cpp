@@ -358,3 +358,30 @@ TEST(Z3CppApi, MoveAssignmentReleasesTheTermItOverwrites) {
   }
   EXPECT_TRUE(recycled);
 }
+
+// Unroller::at substitutes only the variables a term contains: the result is
+// the term with each state variable at k, each input at k and each primed
+// state variable at k + 1, the others untouched, inside a quantifier too.
+TEST(Unroller, AtPutsEachVariableInItsCycle) {
+  z3::context c;
+  encoder::TransitionSystem ts(c);
+  const z3::expr a = ts.make_statevar("a", c.int_sort());
+  const z3::expr b = ts.make_statevar("b", c.bool_sort());
+  const z3::expr unused = ts.make_statevar("unused", c.int_sort());
+  const z3::expr i = ts.make_inputvar("i", c.int_sort());
+  for (const auto& s : ts.statevars()) {
+    ts.set_init(s.var, s.var.is_bool() ? c.bool_val(false) : c.int_val(0));
+    ts.assign_next(s.var, s.var);
+  }
+  const z3::expr a_next = ts.statevars()[0].next_var;
+  encoder::Unroller u(ts);
+  const z3::expr a2 = c.int_const("a@2"), a3 = c.int_const("a@3"), i2 = c.int_const("i@2");
+  const z3::expr b2 = c.bool_const("b@2");
+  EXPECT_TRUE(z3::eq(u.at(a + i > a_next || b, 2), a2 + i2 > a3 || b2));
+  EXPECT_TRUE(z3::eq(u.at(a_next == a_next + a, 2), a3 == a3 + a2));  // a shared subterm
+  EXPECT_TRUE(z3::eq(u.at(c.int_val(3) > 2, 5), c.int_val(3) > 2));
+  const z3::expr y = c.int_const("y");  // not a variable of the system: kept
+  EXPECT_TRUE(z3::eq(u.at(y + a > unused, 0), y + c.int_const("a@0") > c.int_const("unused@0")));
+  EXPECT_TRUE(z3::eq(u.at(z3::forall(y, y > a || y + i > a_next), 2), z3::forall(y, y > a2 || y + i2 > a3)));
+  EXPECT_TRUE(z3::eq(u.var_at(a_next, 2), a3));
+}
