@@ -3,6 +3,7 @@
 #include "plc_check/correspondence.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <set>
@@ -54,6 +55,15 @@ class Templates {
       for (std::size_t q : bools_)
         if (program(p) && !program(q) && (!supports_ || supports_->related(p, q, true))) bool_pairs_.push_back({p, q});
     equal_everywhere_.assign(2 * bool_pairs_.size(), 0);
+    // Where each pair is equal, and later each guard holds, as bits over the
+    // samples: an equality under a guard is then a few words compared, not a
+    // pass over up to 4,096 sampled states per pair and guard.
+    words_ = (samples_.size() + 63) / 64;
+    equal_at_.assign(bool_pairs_.size() * words_, 0);
+    for (std::size_t i = 0; i < bool_pairs_.size(); ++i)
+      for (std::size_t k = 0; k < samples_.size(); ++k)
+        if (at(samples_[k], bool_pairs_[i].first) == at(samples_[k], bool_pairs_[i].second))
+          equal_at_[i * words_ + k / 64] |= std::uint64_t{1} << (k % 64);
     guards_.push_back({SIZE_MAX, 1});
     for (std::size_t b : bools_)
       for (int pol = 1; pol >= 0; --pol)
@@ -138,6 +148,9 @@ class Templates {
       if (holds(g, samples_[k])) n += w;
     }
     if (4 * n < total) return;
+    std::vector<std::uint64_t> where(words_, 0);
+    for (std::size_t k = 0; k < samples_.size(); ++k)
+      if (holds(g, samples_[k])) where[k / 64] |= std::uint64_t{1} << (k % 64);
     for (std::size_t i = 0; i < bool_pairs_.size(); ++i) {
       const std::size_t p = bool_pairs_[i].first, q = bool_pairs_[i].second;
       if (p == g.var || q == g.var || !worth(g, p, q)) continue;
@@ -146,9 +159,9 @@ class Templates {
         // guard (the guard-free pass comes first and records where it holds).
         char& everywhere = equal_everywhere_[2 * i + static_cast<std::size_t>(same)];
         if (g.var != SIZE_MAX && everywhere) continue;
-        const bool equal = std::all_of(samples_.begin(), samples_.end(), [&](const Sample& s) {
-          return !holds(g, s) || (at(s, p) == at(s, q)) == (same == 1);
-        });
+        const std::uint64_t* eq = equal_at_.data() + i * words_;
+        bool equal = true;
+        for (std::size_t w = 0; w < words_ && equal; ++w) equal = (where[w] & (same ? ~eq[w] : eq[w])) == 0;
         if (!equal) continue;
         if (g.var == SIZE_MAX) everywhere = 1;
         add(g, same ? var(p) == var(q) : var(p) == !var(q));
@@ -214,6 +227,8 @@ class Templates {
   std::vector<std::pair<std::size_t, std::size_t>> int_pairs_;   // (program's, matrix's), worth a relation
   std::vector<std::pair<std::size_t, std::size_t>> bool_pairs_;  // (program's, matrix's), worth a relation
   std::vector<char> equal_everywhere_;  // by bool pair and polarity: equal without a guard
+  std::size_t words_ = 0;               // of a set of samples
+  std::vector<std::uint64_t> equal_at_;  // by bool pair: the samples where its flags are equal
   std::vector<Guard> guards_;
   std::set<std::pair<std::size_t, std::size_t>> unguarded_;  // (x, y) related without a guard
   std::vector<z3::expr> out_;
