@@ -3,6 +3,7 @@
 #include "plc_check/correspondence.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <map>
 #include <optional>
 #include <set>
@@ -44,6 +45,25 @@ class Templates {
       if (v.var.is_int()) (program ? program_ints_ : matrix_ints_).push_back(i);
       else if (v.var.is_bool()) bools_.push_back(i);
     }
+    // The pairs worth a relation, found once, not once per guard: a big
+    // cone's flags are hundreds (a 128 x 128 matrix's widest cone, 709 state
+    // variables), its related pairs a few per flag.
+    for (std::size_t x : program_ints_)
+      for (std::size_t y : matrix_ints_)
+        if (!supports_ || supports_->related(x, y, true)) int_pairs_.push_back({x, y});
+    for (std::size_t p : bools_)
+      for (std::size_t q : bools_)
+        if (program(p) && !program(q) && (!supports_ || supports_->related(p, q, true))) bool_pairs_.push_back({p, q});
+    equal_everywhere_.assign(2 * bool_pairs_.size(), 0);
+    // Where each pair is equal, and later each guard holds, as bits over the
+    // samples: an equality under a guard is then a few words compared, not a
+    // pass over up to 4,096 sampled states per pair and guard.
+    words_ = (samples_.size() + 63) / 64;
+    equal_at_.assign(bool_pairs_.size() * words_, 0);
+    for (std::size_t i = 0; i < bool_pairs_.size(); ++i)
+      for (std::size_t k = 0; k < samples_.size(); ++k)
+        if (at(samples_[k], bool_pairs_[i].first) == at(samples_[k], bool_pairs_[i].second))
+          equal_at_[i * words_ + k / 64] |= std::uint64_t{1} << (k % 64);
     guards_.push_back({SIZE_MAX, 1});
     for (std::size_t b : bools_)
       for (int pol = 1; pol >= 0; --pol)
@@ -84,32 +104,31 @@ class Templates {
   // x = a * y + b, x the program's, y the matrix's: a timer's elapsed time
   // and the matrix's delay counter (a = the scan time), a count and a count.
   void linear(const Guard& g) {
-    for (std::size_t x : program_ints_)
-      for (std::size_t y : matrix_ints_) {
-        if (g.var != SIZE_MAX && unguarded_.count({x, y})) continue;  // holds without the guard
-        if (!worth(g, x, y)) continue;
-        const Sample* first = nullptr;
-        std::optional<std::int64_t> a, b;
-        bool fits = true;
-        for (const auto& s : samples_) {
-          if (!holds(g, s)) continue;
-          if (!first) {
-            first = &s;
-          } else if (!a && at(s, y) != at(*first, y)) {
-            const std::int64_t dx = at(s, x) - at(*first, x), dy = at(s, y) - at(*first, y);
-            if (dx == 0 || dx % dy != 0) fits = false;
-            a = dx / (dy == 0 ? 1 : dy);
-            b = at(*first, x) - *a * at(*first, y);
-          }
-          if (!fits) break;
+    for (const auto& [x, y] : int_pairs_) {
+      if (g.var != SIZE_MAX && unguarded_.count({x, y})) continue;  // holds without the guard
+      if (!worth(g, x, y)) continue;
+      const Sample* first = nullptr;
+      std::optional<std::int64_t> a, b;
+      bool fits = true;
+      for (const auto& s : samples_) {
+        if (!holds(g, s)) continue;
+        if (!first) {
+          first = &s;
+        } else if (!a && at(s, y) != at(*first, y)) {
+          const std::int64_t dx = at(s, x) - at(*first, x), dy = at(s, y) - at(*first, y);
+          if (dx == 0 || dx % dy != 0) fits = false;
+          a = dx / (dy == 0 ? 1 : dy);
+          b = at(*first, x) - *a * at(*first, y);
         }
-        if (!fits || !a) continue;
-        for (const auto& s : samples_)
-          if (holds(g, s) && at(s, x) != *a * at(s, y) + *b) fits = false;
-        if (!fits) continue;
-        add(g, var(x) == num(*a) * var(y) + num(*b));
-        if (g.var == SIZE_MAX) unguarded_.insert({x, y});
+        if (!fits) break;
       }
+      if (!fits || !a) continue;
+      for (const auto& s : samples_)
+        if (holds(g, s) && at(s, x) != *a * at(s, y) + *b) fits = false;
+      if (!fits) continue;
+      add(g, var(x) == num(*a) * var(y) + num(*b));
+      if (g.var == SIZE_MAX) unguarded_.insert({x, y});
+    }
   }
 
   // p = q or p = not q, p the program's flag, q the matrix's, everywhere
@@ -129,20 +148,23 @@ class Templates {
       if (holds(g, samples_[k])) n += w;
     }
     if (4 * n < total) return;
-    for (std::size_t p : bools_) {
-      if (!program(p) || p == g.var) continue;
-      for (std::size_t q : bools_) {
-        if (program(q) || q == g.var || !worth(g, p, q)) continue;
-        for (int same = 1; same >= 0; --same) {
-          auto equal_where = [&](const Guard& w) {
-            return std::all_of(samples_.begin(), samples_.end(), [&](const Sample& s) {
-              return !holds(w, s) || (at(s, p) == at(s, q)) == (same == 1);
-            });
-          };
-          // Not where it holds without the guard: one candidate, not one per guard.
-          if (equal_where(g) && (g.var == SIZE_MAX || !equal_where(Guard{SIZE_MAX, 1})))
-            add(g, same ? var(p) == var(q) : var(p) == !var(q));
-        }
+    std::vector<std::uint64_t> where(words_, 0);
+    for (std::size_t k = 0; k < samples_.size(); ++k)
+      if (holds(g, samples_[k])) where[k / 64] |= std::uint64_t{1} << (k % 64);
+    for (std::size_t i = 0; i < bool_pairs_.size(); ++i) {
+      const std::size_t p = bool_pairs_[i].first, q = bool_pairs_[i].second;
+      if (p == g.var || q == g.var || !worth(g, p, q)) continue;
+      for (int same = 1; same >= 0; --same) {
+        // Not where it holds without the guard: one candidate, not one per
+        // guard (the guard-free pass comes first and records where it holds).
+        char& everywhere = equal_everywhere_[2 * i + static_cast<std::size_t>(same)];
+        if (g.var != SIZE_MAX && everywhere) continue;
+        const std::uint64_t* eq = equal_at_.data() + i * words_;
+        bool equal = true;
+        for (std::size_t w = 0; w < words_ && equal; ++w) equal = (where[w] & (same ? ~eq[w] : eq[w])) == 0;
+        if (!equal) continue;
+        if (g.var == SIZE_MAX) everywhere = 1;
+        add(g, same ? var(p) == var(q) : var(p) == !var(q));
       }
     }
   }
@@ -202,6 +224,11 @@ class Templates {
   const std::vector<std::size_t>* weights_;
   std::vector<std::size_t> col_;  // a state variable's place in a sample
   std::vector<std::size_t> program_ints_, matrix_ints_, bools_;
+  std::vector<std::pair<std::size_t, std::size_t>> int_pairs_;   // (program's, matrix's), worth a relation
+  std::vector<std::pair<std::size_t, std::size_t>> bool_pairs_;  // (program's, matrix's), worth a relation
+  std::vector<char> equal_everywhere_;  // by bool pair and polarity: equal without a guard
+  std::size_t words_ = 0;               // of a set of samples
+  std::vector<std::uint64_t> equal_at_;  // by bool pair: the samples where its flags are equal
   std::vector<Guard> guards_;
   std::set<std::pair<std::size_t, std::size_t>> unguarded_;  // (x, y) related without a guard
   std::vector<z3::expr> out_;
