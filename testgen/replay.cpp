@@ -88,19 +88,24 @@ TestOutcome replay_one(const model::Matrix& m, const std::string& name, const st
         out.steps[r.step].passed = false;
         out.steps[r.step].failures.push_back(r.failure_text(m.cycle_ms));
       }
-    if (stop_at_failure && checker.failed() > 0) {
-      out.cycles = k + 1;
-      out.expectations = checker.checked();
-      out.failed = checker.failed();
-      out.passed = false;
-      return out;
-    }
+    out.cycles = k + 1;
+    if (stop_at_failure && checker.failed() > 0) break;
   }
-  out.cycles = ex.cycles.size();
   out.expectations = checker.checked();
   out.failed = checker.failed();
   out.passed = out.failed == 0;
   return out;
+}
+
+ReplayResult replay_all(const model::Matrix& m, const std::vector<std::pair<std::string, std::string>>& scenarios,
+                        ReplayTarget* target, bool stop_at_failure) {
+  const auto obs = model::observables(m);
+  std::map<std::string, std::size_t> index;
+  for (std::size_t i = 0; i < obs.size(); ++i) index[obs[i].key] = i;
+  ReplayResult r;
+  for (const auto& [name, text] : scenarios)
+    r.tests.push_back(replay_one(m, name, text, obs, index, target, stop_at_failure));
+  return r;
 }
 
 }  // namespace
@@ -115,22 +120,12 @@ std::size_t ReplayResult::passed() const {
 
 ReplayResult replay_texts(const model::Matrix& m, const std::vector<std::pair<std::string, std::string>>& scenarios,
                           ReplayTarget* target) {
-  const auto obs = model::observables(m);
-  std::map<std::string, std::size_t> index;
-  for (std::size_t i = 0; i < obs.size(); ++i) index[obs[i].key] = i;
-  ReplayResult r;
-  for (const auto& [name, text] : scenarios) r.tests.push_back(replay_one(m, name, text, obs, index, target, false));
-  return r;
+  return replay_all(m, scenarios, target, false);
 }
 
 ReplayResult replay_verdicts(const model::Matrix& m,
                              const std::vector<std::pair<std::string, std::string>>& scenarios) {
-  const auto obs = model::observables(m);
-  std::map<std::string, std::size_t> index;
-  for (std::size_t i = 0; i < obs.size(); ++i) index[obs[i].key] = i;
-  ReplayResult r;
-  for (const auto& [name, text] : scenarios) r.tests.push_back(replay_one(m, name, text, obs, index, nullptr, true));
-  return r;
+  return replay_all(m, scenarios, nullptr, true);
 }
 
 ReplayResult replay_suite(const model::Matrix& m, const TestSuite& suite) {
