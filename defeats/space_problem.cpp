@@ -46,34 +46,6 @@ z3::expr in_range(const encoder::Encoding& enc, const z3::expr& var) {
          z3::expr(ctx, Z3_mk_fpa_leq(ctx, var, enc.ts.float_const(range)));
 }
 
-// The texts [from, to) read over the variables of `ts`, in one parse where
-// they all read (a parse declares every variable of the system: one parse per
-// candidate of a wide cone cost as much as their mining); a range that does
-// not read is halved, down to the candidates left out.
-void read_back(const encoder::TransitionSystem& ts, const std::vector<std::string>& texts, std::size_t from,
-               std::size_t to, std::vector<z3::expr>& out) {
-  if (from >= to) return;
-  z3::context& ctx = ts.ctx();
-  z3::sort_vector sorts(ctx);
-  z3::func_decl_vector decls(ctx);
-  for (const auto& s : ts.statevars()) decls.push_back(s.var.decl());
-  for (const auto& i : ts.inputvars()) decls.push_back(i.var.decl());
-  std::string text;
-  for (std::size_t i = from; i < to; ++i) text.append("(assert ").append(texts[i]).append(")\n");
-  try {
-    const z3::expr_vector parsed = ctx.parse_string(text.c_str(), sorts, decls);
-    if (parsed.size() == to - from) {
-      for (unsigned i = 0; i < parsed.size(); ++i) out.push_back(parsed[i]);
-      return;
-    }
-  } catch (const z3::exception&) {
-  }
-  if (to - from == 1) return;
-  const std::size_t mid = from + (to - from) / 2;
-  read_back(ts, texts, from, mid, out);
-  read_back(ts, texts, mid, to, out);
-}
-
 }  // namespace
 
 Builder::Builder(const model::Matrix& m, const PathDefeats& pd) : m_(m), file_(requirement_file(m, pd)) {
@@ -129,9 +101,7 @@ std::vector<z3::expr> mined_without_actions(const Builder& b, const encoder::Tra
     mining.bool_implications = true;
     for (const auto& c : checker::mine_candidates(none.problem.problem, mining)) texts.push_back(checker::to_smtlib(c));
   }
-  std::vector<z3::expr> out;
-  read_back(ts, texts, 0, texts.size(), out);
-  return out;
+  return checker::from_smtlib_readable(ts, texts);
 }
 
 }  // namespace cemv::defeats

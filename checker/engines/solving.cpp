@@ -113,15 +113,50 @@ std::string to_smtlib(const z3::expr& e) {
   return e.to_string();
 }
 
-z3::expr from_smtlib(const encoder::TransitionSystem& ts, const std::string& term) {
+namespace {
+
+z3::expr_vector parse_terms(const encoder::TransitionSystem& ts, const std::vector<std::string>& terms,
+                            std::size_t from, std::size_t to) {
   z3::context& ctx = ts.ctx();
   z3::sort_vector sorts(ctx);
   z3::func_decl_vector decls(ctx);
   for (const auto& s : ts.statevars()) decls.push_back(s.var.decl());
   for (const auto& i : ts.inputvars()) decls.push_back(i.var.decl());
-  z3::expr_vector parsed = ctx.parse_string(("(assert " + term + ")").c_str(), sorts, decls);
+  std::string text;
+  for (std::size_t i = from; i < to; ++i) text.append("(assert ").append(terms[i]).append(")\n");
+  return ctx.parse_string(text.c_str(), sorts, decls);
+}
+
+// [from, to) in one parse, or halved until the terms that do not read are alone.
+void read_readable(const encoder::TransitionSystem& ts, const std::vector<std::string>& terms, std::size_t from,
+                   std::size_t to, std::vector<z3::expr>& out) {
+  if (from >= to) return;
+  try {
+    const z3::expr_vector parsed = parse_terms(ts, terms, from, to);
+    if (parsed.size() == to - from) {
+      for (unsigned i = 0; i < parsed.size(); ++i) out.push_back(parsed[i]);
+      return;
+    }
+  } catch (const z3::exception&) {
+  }
+  if (to - from == 1) return;
+  const std::size_t mid = from + (to - from) / 2;
+  read_readable(ts, terms, from, mid, out);
+  read_readable(ts, terms, mid, to, out);
+}
+
+}  // namespace
+
+z3::expr from_smtlib(const encoder::TransitionSystem& ts, const std::string& term) {
+  z3::expr_vector parsed = parse_terms(ts, {term}, 0, 1);
   if (parsed.size() != 1) throw InternalError("cannot read invariant clause: " + term);
   return parsed[0];
+}
+
+std::vector<z3::expr> from_smtlib_readable(const encoder::TransitionSystem& ts, const std::vector<std::string>& terms) {
+  std::vector<z3::expr> out;
+  read_readable(ts, terms, 0, terms.size(), out);
+  return out;
 }
 
 z3::expr invariant_term(const encoder::TransitionSystem& ts, const Invariant& inv) {

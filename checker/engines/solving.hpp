@@ -70,6 +70,10 @@ Trace trace_from_model(const encoder::TransitionSystem& ts, encoder::Unroller& u
 // holding a system with the same variable names.
 std::string to_smtlib(const z3::expr& e);
 z3::expr from_smtlib(const encoder::TransitionSystem& ts, const std::string& term);
+// The terms that read, in their order, read in one parse where all of them
+// do (a parse declares every variable of the system); the ones that do not
+// read are left out.
+std::vector<z3::expr> from_smtlib_readable(const encoder::TransitionSystem& ts, const std::vector<std::string>& terms);
 z3::expr invariant_term(const encoder::TransitionSystem& ts, const Invariant& inv);
 
 // Seconds since `start`.

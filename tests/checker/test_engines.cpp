@@ -15,6 +15,7 @@
 #include "checker/engines/invariants.hpp"
 #include "checker/engines/kinduction.hpp"
 #include "checker/engines/pdr.hpp"
+#include "checker/engines/solving.hpp"
 #include "tests/checker/problems.hpp"
 #include "tests/support/random_matrix.hpp"
 #include <chrono>
@@ -241,3 +242,19 @@ TEST(WorkMeter, TheSmtKernelsReadingSpendsNoWorkTheDefaultSolversDoes) {
 }
 
 }  // namespace
+
+// Mined candidates come back from their SMT-LIB text in one parse; a text
+// that does not read is left out, the others keep their order.
+TEST(Solving, ReadableTermsKeepTheirOrderAndTheUnreadableAreLeftOut) {
+  z3::context ctx;
+  encoder::TransitionSystem ts(ctx);
+  const z3::expr x = ts.make_statevar("x", ctx.int_sort());
+  const z3::expr flag = ts.make_statevar("flag", ctx.bool_sort());
+  const std::vector<std::string> texts{to_smtlib(x >= 0), "(>= y 0)", to_smtlib(!flag), "(and flag", to_smtlib(x <= 5)};
+  const std::vector<z3::expr> read = from_smtlib_readable(ts, texts);
+  ASSERT_EQ(read.size(), 3u);
+  EXPECT_TRUE(z3::eq(read[0], x >= 0));
+  EXPECT_TRUE(z3::eq(read[1], !flag));
+  EXPECT_TRUE(z3::eq(read[2], x <= 5));
+  EXPECT_EQ(from_smtlib_readable(ts, {to_smtlib(x >= 0), to_smtlib(flag)}).size(), 2u);
+}
