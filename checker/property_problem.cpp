@@ -64,7 +64,7 @@ ProblemFactory property_problem(const model::Matrix& m, const properties::Proper
     for (std::size_t i = 0; i < options.analog_values.size() && i < enc->tag_value.size(); ++i)
       if (enc->tag_value[i] && enc->tag_value[i]->is_fpa())
         assumption = assumption && one_of(*enc, *enc->tag_value[i], options.analog_values[i]);
-    if (!options.prefix.empty()) start_after(*enc, options.prefix);
+    if (options.prefix && !options.prefix->empty()) start_after(*enc, *options.prefix);
     z3::expr good = mon.good;
     if (options.goal == Goal::Antecedent) good = mon.antecedent ? !*mon.antecedent : ctx.bool_val(true);
     if (options.goal == Goal::Assumptions) good = ctx.bool_val(false);

@@ -40,8 +40,11 @@ struct ProblemOptions {
   std::vector<std::vector<float>> analog_values;
   // The initial state is the state these cycles leave, computed by the
   // encoding's own Evaluator, the monitor included, so that the past-time
-  // operators see them: how a test is extended.
-  std::vector<model::CycleInput> prefix;
+  // operators see them: how a test is extended. Pointed at, not copied (an
+  // 8 h test is 576,000 cycles, copied once more by every copy of the
+  // options and of the factory holding them): it must outlive the factory.
+  // nullptr or empty: from start-up.
+  const std::vector<model::CycleInput>* prefix = nullptr;
   // Each removable cell guarded by an activation literal
   // (encoder::EncodeOptions::guard_cells): the support's core query.
   bool guard_cells = false;

@@ -50,7 +50,7 @@ checker::ProblemFactory problem(const model::Matrix& m, const Goal& g, const std
   o.sliced = !g.roots.empty();
   o.roots = g.roots;
   o.analog_range = kAnalogRange;
-  o.prefix = prefix;
+  o.prefix = prefix.empty() ? nullptr : &prefix;  // the caller's, alive while the factory is used
   if (engineer) {
     const model::CycleInput hold = prefix.empty() ? model::default_cycle_input(m) : prefix.back();
     const model::InputTable table(m);
