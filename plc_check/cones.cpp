@@ -10,6 +10,28 @@
 
 namespace cemv::plc_check {
 
+TermReads::TermReads(const encoder::TransitionSystem& ts, bool inputs) {
+  if (inputs)
+    for (std::size_t i = 0; i < ts.inputvars().size(); ++i) index_.emplace(ts.inputvars()[i].var.id(), i);
+  else
+    for (std::size_t i = 0; i < ts.statevars().size(); ++i) index_.emplace(ts.statevars()[i].var.id(), i);
+}
+
+std::vector<std::size_t> TermReads::of(const z3::expr& e) {
+  seen_.clear();
+  std::vector<std::size_t> out;
+  std::vector<z3::expr> todo{e};
+  while (!todo.empty()) {
+    const z3::expr t = todo.back();
+    todo.pop_back();
+    if (!seen_.insert(t.id()).second) continue;
+    if (const auto it = index_.find(t.id()); it != index_.end()) out.push_back(it->second);
+    if (t.is_app())
+      for (unsigned i = 0; i < t.num_args(); ++i) todo.push_back(t.arg(i));
+  }
+  return out;
+}
+
 namespace {
 
 // A closed term: no variable (an initial value that is a constant).
@@ -20,41 +42,11 @@ bool variables_free(const z3::expr& e) {
   return true;
 }
 
-// The state variables (indices) a term reads, each DAG node visited once;
-// with `inputs`, the input variables (indices) instead.
-class Reads {
- public:
-  explicit Reads(const encoder::TransitionSystem& ts, bool inputs = false) {
-    if (inputs)
-      for (std::size_t i = 0; i < ts.inputvars().size(); ++i) index_.emplace(ts.inputvars()[i].var.id(), i);
-    else
-      for (std::size_t i = 0; i < ts.statevars().size(); ++i) index_.emplace(ts.statevars()[i].var.id(), i);
-  }
-  std::vector<std::size_t> of(const z3::expr& e) {
-    seen_.clear();
-    std::vector<std::size_t> out;
-    std::vector<z3::expr> todo{e};
-    while (!todo.empty()) {
-      const z3::expr t = todo.back();
-      todo.pop_back();
-      if (!seen_.insert(t.id()).second) continue;
-      if (const auto it = index_.find(t.id()); it != index_.end()) out.push_back(it->second);
-      if (t.is_app())
-        for (unsigned i = 0; i < t.num_args(); ++i) todo.push_back(t.arg(i));
-    }
-    return out;
-  }
-
- private:
-  std::unordered_map<unsigned, std::size_t> index_;
-  std::unordered_set<unsigned> seen_;
-};
-
 // What each state variable's next-state and initial functions read; with
 // `constants`, after each of those is replaced by its initial value.
 std::vector<std::vector<std::size_t>> direct_reads(const encoder::TransitionSystem& ts, bool inputs,
                                                    const std::vector<std::size_t>& constants = {}) {
-  Reads reads(ts, inputs);
+  TermReads reads(ts, inputs);
   z3::expr_vector from(ts.ctx()), to(ts.ctx());
   for (std::size_t c : constants) {
     from.push_back(ts.statevars()[c].var);
@@ -75,7 +67,7 @@ std::vector<std::vector<std::size_t>> direct_reads(const encoder::TransitionSyst
 
 std::vector<std::vector<std::size_t>> cones_of(const encoder::TransitionSystem& ts, const std::vector<z3::expr>& terms) {
   const auto& vars = ts.statevars();
-  Reads reads(ts);
+  TermReads reads(ts);
   const std::vector<std::vector<std::size_t>> next_reads = direct_reads(ts, false);
   std::vector<std::vector<std::size_t>> out;
   for (const auto& t : terms) {

@@ -10,6 +10,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include <z3++.h>
@@ -20,6 +22,19 @@
 #include "plc_check/sampling.hpp"
 
 namespace cemv::plc_check {
+
+// The state variables (indices into ts.statevars()) a term reads, each DAG
+// node visited once; with `inputs`, the input variables (indices into
+// ts.inputvars()) instead.
+class TermReads {
+ public:
+  explicit TermReads(const encoder::TransitionSystem& ts, bool inputs = false);
+  std::vector<std::size_t> of(const z3::expr& e);
+
+ private:
+  std::unordered_map<unsigned, std::size_t> index_;
+  std::unordered_set<unsigned> seen_;
+};
 
 // For each term, the indices (into ts.statevars(), ascending) of the state
 // variables it reaches.

@@ -4,11 +4,11 @@
 #include <algorithm>
 #include <optional>
 #include <string>
-#include <unordered_map>
 #include <unordered_set>
 
 #include "checker/engines/invariants.hpp"
 #include "encoder/unroller.hpp"
+#include "plc_check/cones.hpp"
 
 namespace cemv::plc_check {
 
@@ -56,30 +56,6 @@ void drop_until_unsat(z3::solver& s, std::vector<Candidate>& cands, const checke
     cands = std::move(keep);
   }
 }
-
-// The state variables (indices into ts.statevars()) a term reads.
-class StateReads {
- public:
-  explicit StateReads(const encoder::TransitionSystem& ts) {
-    for (std::size_t v = 0; v < ts.statevars().size(); ++v) index_.emplace(ts.statevars()[v].var.id(), v);
-  }
-  std::vector<std::size_t> operator()(const z3::expr& e) const {
-    std::vector<std::size_t> out;
-    std::unordered_set<unsigned> seen;
-    std::vector<z3::expr> todo{e};
-    while (!todo.empty()) {
-      const z3::expr t = todo.back();
-      todo.pop_back();
-      if (!t.is_app() || !seen.insert(t.id()).second) continue;
-      if (const auto it = index_.find(t.id()); it != index_.end()) out.push_back(it->second);
-      for (unsigned i = 0; i < t.num_args(); ++i) todo.push_back(t.arg(i));
-    }
-    return out;
-  }
-
- private:
-  std::unordered_map<unsigned, std::size_t> index_;
-};
 
 // The conjuncts of `e`.
 std::vector<z3::expr> conjuncts(const z3::expr& e) {
@@ -147,9 +123,9 @@ std::vector<z3::expr> product_houdini_by_cones(const checker::SafetyProblem& p,
   std::vector<z3::expr> kept;
   std::vector<z3::expr> kept_at_0;  // each unrolled once, not once per later cone
   std::vector<std::vector<std::size_t>> kept_vars;  // the state variables each reads
-  const StateReads reads(ts);
+  TermReads reads(ts);
   std::vector<std::pair<z3::expr, std::vector<std::size_t>>> cone_facts;  // in cycle 0, with the state read
-  for (const auto& f : conjuncts(ts.constraint_formula() && p.assumption)) cone_facts.push_back({u.at(f, 0), reads(f)});
+  for (const auto& f : conjuncts(ts.constraint_formula() && p.assumption)) cone_facts.push_back({u.at(f, 0), reads.of(f)});
   for (std::size_t i = 0; i < cones.size() && i < candidates.size(); ++i) {
     std::vector<bool> in(ts.statevars().size(), false);
     for (std::size_t v : cones[i]) in[v] = true;
@@ -196,7 +172,7 @@ std::vector<z3::expr> product_houdini_by_cones(const checker::SafetyProblem& p,
     for (const auto& c : cands) {
       kept.push_back(c.term);
       kept_at_0.push_back(u.at(c.term, 0));
-      kept_vars.push_back(reads(c.term));
+      kept_vars.push_back(reads.of(c.term));
     }
   }
   return kept;
