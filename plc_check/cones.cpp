@@ -2,6 +2,8 @@
 #include "plc_check/cones.hpp"
 
 #include <algorithm>
+#include <map>
+#include <set>
 #include <numeric>
 #include <unordered_map>
 #include <unordered_set>
@@ -86,6 +88,31 @@ std::vector<std::vector<std::size_t>> cones_of(const encoder::TransitionSystem& 
       if (in[v]) cone.push_back(v);
     out.push_back(std::move(cone));
   }
+  return out;
+}
+
+std::vector<std::vector<std::size_t>> layers_of(const encoder::TransitionSystem& ts,
+                                                const std::vector<std::vector<std::size_t>>& cones,
+                                                const Supports& supports) {
+  const std::vector<std::vector<std::size_t>> reads = direct_reads(ts, false);
+  std::set<std::vector<std::size_t>> distinct;
+  for (const auto& cone : cones) {
+    std::map<std::vector<std::uint64_t>, std::vector<std::size_t>> by_inputs;
+    for (std::size_t v : cone) by_inputs[supports.inputs_of(v)].push_back(v);
+    for (const auto& [inputs, top] : by_inputs) {
+      std::set<std::size_t> vars(top.begin(), top.end());
+      std::vector<std::size_t> todo = top;
+      while (!todo.empty()) {
+        const std::size_t v = todo.back();
+        todo.pop_back();
+        for (std::size_t w : reads[v])
+          if (vars.insert(w).second) todo.push_back(w);
+      }
+      distinct.emplace(vars.begin(), vars.end());
+    }
+  }
+  std::vector<std::vector<std::size_t>> out(distinct.begin(), distinct.end());
+  std::stable_sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.size() < b.size(); });
   return out;
 }
 

@@ -72,6 +72,37 @@ TEST(PlcCones, SupportsRelateVariablesOfTheSameInputs) {
   EXPECT_TRUE(sup.may_guard(c, a, a));    // exactly the pair's i1
 }
 
+// A layer is the variables of one cone that read exactly the same inputs,
+// with what they read: c (i1, reading a) and a (i1) are one layer, b (i2)
+// and k (no input) one each, smallest first, then by their variables.
+TEST(PlcCones, LayersComeBeforeTheLayersThatReadThem) {
+  System s;
+  const std::size_t a = 0, b = 1, c = 2, k = 3;
+  EXPECT_EQ(cemv::plc_check::layers_of(s.ts, cones_of(s.ts, {s.c, s.b, s.k}), Supports(s.ts)),
+            (Sets{{b}, {k}, {a, c}}));
+  // A cone over c and b together: the pair's layers alone, no layer of both
+  // (no variable reads both i1 and i2).
+  EXPECT_EQ(cemv::plc_check::layers_of(s.ts, cones_of(s.ts, {s.c && s.b}), Supports(s.ts)), (Sets{{b}, {a, c}}));
+}
+
+// d' = d or (a and b) reads i1 and i2: its layer holds the two causes'
+// below it and comes after them.
+TEST(PlcCones, AnEffectsLayerHoldsItsCausesLayers) {
+  z3::context ctx;
+  TransitionSystem ts{ctx};
+  const z3::expr i1 = ts.make_inputvar("i1", ctx.bool_sort());
+  const z3::expr i2 = ts.make_inputvar("i2", ctx.bool_sort());
+  const z3::expr a = ts.make_statevar("a", ctx.bool_sort());
+  const z3::expr b = ts.make_statevar("b", ctx.bool_sort());
+  const z3::expr d = ts.make_statevar("d", ctx.bool_sort());
+  for (const auto& v : {a, b, d}) ts.set_init(v, ctx.bool_val(false));
+  ts.assign_next(a, a || i1);
+  ts.assign_next(b, i2);
+  ts.assign_next(d, d || (a && b));
+  ts.check_complete();
+  EXPECT_EQ(cemv::plc_check::layers_of(ts, cones_of(ts, {d}), Supports(ts)), (Sets{{0}, {1}, {0, 1, 2}}));
+}
+
 // z' = (a or i2) and not (a or i2): constant FALSE, as the matrix encodes an
 // effect's output delay of 0 ms (E.7), and o' = ite(z, i2, a) reads i2 only
 // through it. y' = y or i2 stays FALSE in the samples below without being
