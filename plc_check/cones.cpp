@@ -2,6 +2,7 @@
 #include "plc_check/cones.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <map>
 #include <set>
 #include <numeric>
@@ -91,11 +92,18 @@ std::vector<std::vector<std::size_t>> cones_of(const encoder::TransitionSystem& 
   return out;
 }
 
-std::vector<std::vector<std::size_t>> layers_of(const encoder::TransitionSystem& ts,
-                                                const std::vector<std::vector<std::size_t>>& cones,
-                                                const Supports& supports) {
+std::vector<Layer> layers_of(const encoder::TransitionSystem& ts, const std::vector<std::vector<std::size_t>>& cones,
+                             const Supports& supports) {
   const std::vector<std::vector<std::size_t>> reads = direct_reads(ts, false);
-  std::set<std::vector<std::size_t>> distinct;
+  // The variables that depend on no input (the first scan's flags) may guard
+  // a relation of any layer (Supports::may_guard): each layer holds them.
+  std::set<std::size_t> inputless;
+  for (const auto& cone : cones)
+    for (std::size_t v : cone) {
+      const auto in = supports.inputs_of(v);
+      if (std::all_of(in.begin(), in.end(), [](std::uint64_t w) { return w == 0; })) inputless.insert(v);
+    }
+  std::map<std::vector<std::size_t>, std::pair<std::size_t, std::vector<std::size_t>>> distinct;  // top -> inputs, vars
   for (const auto& cone : cones) {
     std::map<std::vector<std::uint64_t>, std::vector<std::size_t>> by_inputs;
     for (std::size_t v : cone) by_inputs[supports.inputs_of(v)].push_back(v);
@@ -108,11 +116,19 @@ std::vector<std::vector<std::size_t>> layers_of(const encoder::TransitionSystem&
         for (std::size_t w : reads[v])
           if (vars.insert(w).second) todo.push_back(w);
       }
-      distinct.emplace(vars.begin(), vars.end());
+      vars.insert(inputless.begin(), inputless.end());
+      std::size_t n = 0;
+      for (std::uint64_t w : inputs) n += static_cast<std::size_t>(std::popcount(w));
+      distinct.emplace(top, std::make_pair(n, std::vector<std::size_t>(vars.begin(), vars.end())));
     }
   }
-  std::vector<std::vector<std::size_t>> out(distinct.begin(), distinct.end());
-  std::stable_sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.size() < b.size(); });
+  std::vector<std::pair<std::size_t, Layer>> order;
+  for (const auto& [top, nv] : distinct) order.push_back({nv.first, Layer{top, nv.second}});
+  std::stable_sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
+    return a.first != b.first ? a.first < b.first : a.second.vars.size() < b.second.vars.size();
+  });
+  std::vector<Layer> out;
+  for (auto& [n, l] : order) out.push_back(std::move(l));
   return out;
 }
 

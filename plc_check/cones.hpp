@@ -83,14 +83,18 @@ class Supports {
 
 // The layers of a group's cones (docs/plc.md "A cone group's Houdini"): in
 // each cone, the variables that depend on exactly the same inputs (a cause's
-// state on both sides, an effect's) with every state variable they read,
-// transitively (ascending indices); distinct, smallest first. A variable
-// reads only variables of fewer or the same inputs, so a cause's layer comes
-// before the layers of the effects that read it, and a Houdini over the
+// state on both sides, an effect's), `top`, with every state variable they
+// read, transitively, and those that depend on no input (which may guard a
+// relation of any layer), `vars`. A variable reads only variables of fewer
+// or the same inputs, so the layers by the number of their inputs (then by
+// size) put a cause's before the effects' that read it: a Houdini over the
 // layers in this order proves each cause's correspondence once, on its own
 // state, and each effect's given its causes' (product_houdini_by_layers).
-std::vector<std::vector<std::size_t>> layers_of(const encoder::TransitionSystem& ts,
-                                                const std::vector<std::vector<std::size_t>>& cones,
-                                                const Supports& supports);
+struct Layer {
+  std::vector<std::size_t> top;   // ascending
+  std::vector<std::size_t> vars;  // ascending, top included
+};
+std::vector<Layer> layers_of(const encoder::TransitionSystem& ts, const std::vector<std::vector<std::size_t>>& cones,
+                             const Supports& supports);
 
 }  // namespace cemv::plc_check

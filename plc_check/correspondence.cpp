@@ -300,9 +300,9 @@ std::vector<std::vector<z3::expr>> layered_candidates(const checker::SafetyProbl
   const auto& ts = *p.ts;
   const std::vector<std::size_t> constants = constant_states(p, samples, limits, meter);
   const Supports supports(ts, constants);
+  const std::vector<Layer> layers = layers_of(ts, cones, supports);
   SamplingOptions lo = o;
-  lo.cones = layers_of(ts, cones, supports);
-  const auto& layers = lo.cones;
+  for (const auto& l : layers) lo.cones.push_back(l.vars);
   const Samples states = sample(p, lo);
   checker::MiningOptions mo = mining_options(o, limits, true);
   mo.related = [&](std::size_t x, std::size_t y) { return supports.related(x, y); };
@@ -317,15 +317,24 @@ std::vector<std::vector<z3::expr>> layered_candidates(const checker::SafetyProbl
     const auto vars = reads.of(l.term);
     for (std::size_t i = 0; i < layers.size(); ++i)
       if (std::all_of(vars.begin(), vars.end(), [&](std::size_t v) {
-            return std::binary_search(layers[i].begin(), layers[i].end(), v);
+            return std::binary_search(layers[i].vars.begin(), layers[i].vars.end(), v);
           })) {
         out[i].push_back(l.term);
         break;
       }
   }
   for (std::size_t i = 0; i < layers.size(); ++i) {
-    out[i].insert(out[i].end(), mined[i].begin(), mined[i].end());
-    for (const auto& c : correspondence_candidates(p, states, layers[i], &supports)) out[i].push_back(c);
+    // Only what reads the layer's top: the rest is an earlier layer's.
+    auto own = [&](const z3::expr& c) {
+      const auto vars = reads.of(c);
+      return std::any_of(vars.begin(), vars.end(), [&](std::size_t v) {
+        return std::binary_search(layers[i].top.begin(), layers[i].top.end(), v);
+      });
+    };
+    for (const auto& c : mined[i])
+      if (own(c)) out[i].push_back(c);
+    for (const auto& c : correspondence_candidates(p, states, layers[i].vars, &supports))
+      if (own(c)) out[i].push_back(c);
   }
   return out;
 }
