@@ -103,12 +103,14 @@ std::vector<Layer> layers_of(const encoder::TransitionSystem& ts, const std::vec
       const auto in = supports.inputs_of(v);
       if (std::all_of(in.begin(), in.end(), [](std::uint64_t w) { return w == 0; })) inputless.insert(v);
     }
-  std::map<std::vector<std::size_t>, std::pair<std::size_t, std::vector<std::size_t>>> distinct;  // top -> inputs, vars
+  std::map<std::vector<std::size_t>, std::pair<std::size_t, Layer>> distinct;  // by top: inputs, layer
   for (const auto& cone : cones) {
     std::map<std::vector<std::uint64_t>, std::vector<std::size_t>> by_inputs;
     for (std::size_t v : cone) by_inputs[supports.inputs_of(v)].push_back(v);
     for (const auto& [inputs, top] : by_inputs) {
-      std::set<std::size_t> vars(top.begin(), top.end());
+      std::set<std::size_t> vars(top.begin(), top.end()), near = vars;
+      for (std::size_t v : top) near.insert(reads[v].begin(), reads[v].end());
+      near.insert(inputless.begin(), inputless.end());
       std::vector<std::size_t> todo = top;
       while (!todo.empty()) {
         const std::size_t v = todo.back();
@@ -119,11 +121,11 @@ std::vector<Layer> layers_of(const encoder::TransitionSystem& ts, const std::vec
       vars.insert(inputless.begin(), inputless.end());
       std::size_t n = 0;
       for (std::uint64_t w : inputs) n += static_cast<std::size_t>(std::popcount(w));
-      distinct.emplace(top, std::make_pair(n, std::vector<std::size_t>(vars.begin(), vars.end())));
+      distinct.emplace(top, std::make_pair(n, Layer{top, {vars.begin(), vars.end()}, {near.begin(), near.end()}}));
     }
   }
   std::vector<std::pair<std::size_t, Layer>> order;
-  for (const auto& [top, nv] : distinct) order.push_back({nv.first, Layer{top, nv.second}});
+  for (auto& [top, nl] : distinct) order.push_back(std::move(nl));
   std::stable_sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
     return a.first != b.first ? a.first < b.first : a.second.vars.size() < b.second.vars.size();
   });

@@ -93,6 +93,7 @@ class Supports {
 struct Layer {
   std::vector<std::size_t> top;   // ascending
   std::vector<std::size_t> vars;  // ascending, top included
+  std::vector<std::size_t> near;  // top, what it reads directly, the inputless: ascending
 };
 std::vector<Layer> layers_of(const encoder::TransitionSystem& ts, const std::vector<std::vector<std::size_t>>& cones,
                              const Supports& supports);

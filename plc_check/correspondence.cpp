@@ -329,6 +329,8 @@ std::vector<std::vector<z3::expr>> layered_candidates(const checker::SafetyProbl
       const auto vars = reads.of(c);
       return std::any_of(vars.begin(), vars.end(), [&](std::size_t v) {
         return std::binary_search(layers[i].top.begin(), layers[i].top.end(), v);
+      }) && std::all_of(vars.begin(), vars.end(), [&](std::size_t v) {
+        return std::binary_search(layers[i].near.begin(), layers[i].near.end(), v);
       });
     };
     for (const auto& c : mined[i])
