@@ -85,7 +85,8 @@ class Supports {
 // each cone, the variables that depend on exactly the same inputs (a cause's
 // state on both sides, an effect's), `top`, with every state variable they
 // read, transitively, and those that depend on no input (which may guard a
-// relation of any layer), `vars`. A variable reads only variables of fewer
+// relation of any layer), `vars`; its top, what the top reads directly and
+// those of no input, `near` (what a layer's candidates may read). A variable reads only variables of fewer
 // or the same inputs, so the layers by the number of their inputs (then by
 // size) put a cause's before the effects' that read it: a Houdini over the
 // layers in this order proves each cause's correspondence once, on its own

@@ -289,10 +289,14 @@ checker::MiningOptions mining_options(const SamplingOptions& o, const checker::L
   return mo;
 }
 
-// A group's candidates by layers (cones.hpp): each layer's templates and
-// mined relations over its variables, sampled on them alone, kept in the
-// layer of the latest top among the variables they read (a candidate over
-// earlier layers' variables alone is theirs); the encoder's lemmas likewise.
+// A group's candidates by layers (cones.hpp, Layer): each layer's templates
+// and mined relations over its variables, sampled on them alone, those that
+// read its top and nothing beyond its `near` variables (a candidate over
+// earlier layers' variables alone is theirs; one that relates an effect's
+// state to its causes' several layers below was most of the generated 32 x
+// 32 program's candidates and Houdini rounds, and no proof of the smaller
+// programs needs it); the encoder's lemmas in the first layer that holds
+// what they read.
 std::vector<std::vector<z3::expr>> layered_candidates(const checker::SafetyProblem& p, const Samples& samples,
                                                       const std::vector<std::vector<std::size_t>>& cones,
                                                       const SamplingOptions& o, const checker::Limits& limits,
@@ -308,9 +312,6 @@ std::vector<std::vector<z3::expr>> layered_candidates(const checker::SafetyProbl
   mo.related = [&](std::size_t x, std::size_t y) { return supports.related(x, y); };
   mo.may_guard = [&](std::size_t g, std::size_t x, std::size_t y) { return supports.may_guard(g, x, y); };
   const auto mined = checker::mine_candidates_within(p, mo, lo.cones);
-  // Each layer's candidates over its variables; a candidate an earlier
-  // layer also states is asked there (product_houdini_by_layers); the
-  // encoder's lemmas in the first layer that holds what they read.
   TermReads reads(ts);
   std::vector<std::vector<z3::expr>> out(layers.size());
   for (const auto& l : ts.lemmas()) {
@@ -324,7 +325,6 @@ std::vector<std::vector<z3::expr>> layered_candidates(const checker::SafetyProbl
       }
   }
   for (std::size_t i = 0; i < layers.size(); ++i) {
-    // Only what reads the layer's top: the rest is an earlier layer's.
     auto own = [&](const z3::expr& c) {
       const auto vars = reads.of(c);
       return std::any_of(vars.begin(), vars.end(), [&](std::size_t v) {
