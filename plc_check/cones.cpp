@@ -2,6 +2,9 @@
 #include "plc_check/cones.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <map>
+#include <set>
 #include <numeric>
 #include <unordered_map>
 #include <unordered_set>
@@ -86,6 +89,48 @@ std::vector<std::vector<std::size_t>> cones_of(const encoder::TransitionSystem& 
       if (in[v]) cone.push_back(v);
     out.push_back(std::move(cone));
   }
+  return out;
+}
+
+std::vector<Layer> layers_of(const encoder::TransitionSystem& ts, const std::vector<std::vector<std::size_t>>& cones,
+                             const Supports& supports) {
+  const std::vector<std::vector<std::size_t>> reads = direct_reads(ts, false);
+  // The variables that depend on no input (the first scan's flags) may guard
+  // a relation of any layer (Supports::may_guard): each layer holds them.
+  std::set<std::size_t> inputless;
+  for (const auto& cone : cones)
+    for (std::size_t v : cone) {
+      const auto in = supports.inputs_of(v);
+      if (std::all_of(in.begin(), in.end(), [](std::uint64_t w) { return w == 0; })) inputless.insert(v);
+    }
+  std::map<std::vector<std::size_t>, std::pair<std::size_t, Layer>> distinct;  // by top: inputs, layer
+  for (const auto& cone : cones) {
+    std::map<std::vector<std::uint64_t>, std::vector<std::size_t>> by_inputs;
+    for (std::size_t v : cone) by_inputs[supports.inputs_of(v)].push_back(v);
+    for (const auto& [inputs, top] : by_inputs) {
+      std::set<std::size_t> vars(top.begin(), top.end()), near = vars;
+      for (std::size_t v : top) near.insert(reads[v].begin(), reads[v].end());
+      near.insert(inputless.begin(), inputless.end());
+      std::vector<std::size_t> todo = top;
+      while (!todo.empty()) {
+        const std::size_t v = todo.back();
+        todo.pop_back();
+        for (std::size_t w : reads[v])
+          if (vars.insert(w).second) todo.push_back(w);
+      }
+      vars.insert(inputless.begin(), inputless.end());
+      std::size_t n = 0;
+      for (std::uint64_t w : inputs) n += static_cast<std::size_t>(std::popcount(w));
+      distinct.emplace(top, std::make_pair(n, Layer{top, {vars.begin(), vars.end()}, {near.begin(), near.end()}}));
+    }
+  }
+  std::vector<std::pair<std::size_t, Layer>> order;
+  for (auto& [top, nl] : distinct) order.push_back(std::move(nl));
+  std::stable_sort(order.begin(), order.end(), [](const auto& a, const auto& b) {
+    return a.first != b.first ? a.first < b.first : a.second.vars.size() < b.second.vars.size();
+  });
+  std::vector<Layer> out;
+  for (auto& [n, l] : order) out.push_back(std::move(l));
   return out;
 }
 

@@ -72,11 +72,31 @@ class Supports {
   // `g` reads no input, or exactly those of x and y together (y = SIZE_MAX:
   // x alone).
   bool may_guard(std::size_t g, std::size_t x, std::size_t y) const;
+  // The inputs x depends on, as bits over ts.inputvars().
+  std::vector<std::uint64_t> inputs_of(std::size_t x) const { return {of(x), of(x) + words_}; }
 
  private:
   std::size_t words_ = 0;
   std::vector<std::uint64_t> bits_;  // words_ per state variable
   const std::uint64_t* of(std::size_t v) const { return bits_.data() + v * words_; }
 };
+
+// The layers of a group's cones (docs/plc.md "A cone group's Houdini"): in
+// each cone, the variables that depend on exactly the same inputs (a cause's
+// state on both sides, an effect's), `top`, with every state variable they
+// read, transitively, and those that depend on no input (which may guard a
+// relation of any layer), `vars`; its top, what the top reads directly and
+// those of no input, `near` (what a layer's candidates may read). A variable reads only variables of fewer
+// or the same inputs, so the layers by the number of their inputs (then by
+// size) put a cause's before the effects' that read it: a Houdini over the
+// layers in this order proves each cause's correspondence once, on its own
+// state, and each effect's given its causes' (product_houdini_by_layers).
+struct Layer {
+  std::vector<std::size_t> top;   // ascending
+  std::vector<std::size_t> vars;  // ascending, top included
+  std::vector<std::size_t> near;  // top, what it reads directly, the inputless: ascending
+};
+std::vector<Layer> layers_of(const encoder::TransitionSystem& ts, const std::vector<std::vector<std::size_t>>& cones,
+                             const Supports& supports);
 
 }  // namespace cemv::plc_check

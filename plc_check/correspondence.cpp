@@ -277,11 +277,76 @@ std::vector<std::size_t> every_state_variable(const checker::SafetyProblem& p) {
   return all;
 }
 
+namespace {
+
+checker::MiningOptions mining_options(const SamplingOptions& o, const checker::Limits& limits, bool clauses) {
+  checker::MiningOptions mo;
+  mo.runs = o.runs;
+  mo.cycles_per_run = o.cycles_per_run;
+  mo.seed = o.seed;
+  mo.limits = &limits;
+  mo.bool_implications = clauses;
+  return mo;
+}
+
+// A group's candidates by layers (cones.hpp, Layer): each layer's templates
+// and mined relations over its variables, sampled on them alone, those that
+// read its top and nothing beyond its `near` variables (a candidate over
+// earlier layers' variables alone is theirs; one that relates an effect's
+// state to its causes' several layers below was most of the generated 32 x
+// 32 program's candidates and Houdini rounds, and no proof of the smaller
+// programs needs it); the encoder's lemmas in the first layer that holds
+// what they read.
+std::vector<std::vector<z3::expr>> layered_candidates(const checker::SafetyProblem& p, const Samples& samples,
+                                                      const std::vector<std::vector<std::size_t>>& cones,
+                                                      const SamplingOptions& o, const checker::Limits& limits,
+                                                      checker::WorkMeter& meter) {
+  const auto& ts = *p.ts;
+  const std::vector<std::size_t> constants = constant_states(p, samples, limits, meter);
+  const Supports supports(ts, constants);
+  const std::vector<Layer> layers = layers_of(ts, cones, supports);
+  SamplingOptions lo = o;
+  for (const auto& l : layers) lo.cones.push_back(l.vars);
+  const Samples states = sample(p, lo);
+  checker::MiningOptions mo = mining_options(o, limits, true);
+  mo.related = [&](std::size_t x, std::size_t y) { return supports.related(x, y); };
+  mo.may_guard = [&](std::size_t g, std::size_t x, std::size_t y) { return supports.may_guard(g, x, y); };
+  const auto mined = checker::mine_candidates_within(p, mo, lo.cones);
+  TermReads reads(ts);
+  std::vector<std::vector<z3::expr>> out(layers.size());
+  for (const auto& l : ts.lemmas()) {
+    const auto vars = reads.of(l.term);
+    for (std::size_t i = 0; i < layers.size(); ++i)
+      if (std::all_of(vars.begin(), vars.end(), [&](std::size_t v) {
+            return std::binary_search(layers[i].vars.begin(), layers[i].vars.end(), v);
+          })) {
+        out[i].push_back(l.term);
+        break;
+      }
+  }
+  for (std::size_t i = 0; i < layers.size(); ++i) {
+    auto own = [&](const z3::expr& c) {
+      const auto vars = reads.of(c);
+      return std::any_of(vars.begin(), vars.end(), [&](std::size_t v) {
+        return std::binary_search(layers[i].top.begin(), layers[i].top.end(), v);
+      }) && std::all_of(vars.begin(), vars.end(), [&](std::size_t v) {
+        return std::binary_search(layers[i].near.begin(), layers[i].near.end(), v);
+      });
+    };
+    for (const auto& c : mined[i])
+      if (own(c)) out[i].push_back(c);
+    for (const auto& c : correspondence_candidates(p, states, layers[i].vars, &supports))
+      if (own(c)) out[i].push_back(c);
+  }
+  return out;
+}
+
+}  // namespace
+
 Correspondence prove_by_correspondence(const checker::SafetyProblem& p, const Samples& samples,
                                        const checker::Limits& limits, const SamplingOptions& o,
                                        std::vector<std::vector<std::size_t>> cones) {
   // Cones given: a group's, whose candidates must grow with its cones' sizes.
-  std::optional<Supports> supports;
   const bool group = !cones.empty();
   if (cones.empty()) cones.push_back(every_state_variable(p));
   const auto start = checker::Clock::now();
@@ -291,57 +356,31 @@ Correspondence prove_by_correspondence(const checker::SafetyProblem& p, const Sa
   z3::context& ctx = p.ts->ctx();
   checker::WorkMeter meter(ctx, limits.work);
   try {
-    if (group) supports.emplace(*p.ts, constant_states(p, samples, limits, meter));
-    // Two rounds, cheaper first: without the checker's clauses over pairs of
-    // Booleans (most of the candidates and of Houdini's rounds), then with
-    // them when the output does not follow.
     std::optional<int> k;
-    // A group's candidates are few enough for the clauses from the start:
-    // with them Houdini needs fewer rounds than without (they strengthen
-    // what is kept), and a group without them rarely proves.
-    for (int round = supports ? 1 : 0; round < 2 && !k; ++round) {
+    if (group) {
+      // A group: Houdini one layer at a time over the layers' candidates,
+      // with the checker's clauses over pairs of Booleans from the start
+      // (they strengthen what is kept; a group rarely proves without them).
+      out.invariant = product_houdini_by_layers(p, layered_candidates(p, samples, cones, o, limits, meter), limits, meter);
+      checker::Watchdog watchdog(ctx, limits);
+      z3::expr_vector all(ctx);
+      for (const auto& c : out.invariant) all.push_back(c);
+      k = good_from(p, z3::mk_and(all), limits, meter);
+    }
+    // One output: two rounds, cheaper first: without the checker's clauses
+    // over pairs of Booleans (most of the candidates and of Houdini's
+    // rounds), then with them when the output does not follow.
+    for (int round = 0; !group && round < 2 && !k; ++round) {
       std::vector<z3::expr> cands;
       std::unordered_set<unsigned> ids;
       auto add = [&](const z3::expr& e) {
         if (ids.insert(e.id()).second) cands.push_back(e);
       };
-      if (!supports)
-        for (const auto& l : p.ts->lemmas()) add(l.term);
-      checker::MiningOptions mo;
-      mo.runs = o.runs;
-      mo.cycles_per_run = o.cycles_per_run;
-      mo.seed = o.seed;
-      mo.limits = &limits;
-      mo.bool_implications = round == 1;
-      if (supports) {
-        mo.related = [&](std::size_t x, std::size_t y) { return supports->related(x, y); };
-        mo.may_guard = [&](std::size_t g, std::size_t x, std::size_t y) { return supports->may_guard(g, x, y); };
-      }
-      const auto mined = checker::mine_candidates_within(p, mo, cones);
-      std::vector<z3::expr> kept;
-      if (!supports) {
-        for (const auto& c : mined.front()) add(c);
-        for (const auto& c : correspondence_candidates(p, samples, cones.front())) add(c);
-        kept = product_houdini(p, std::move(cands), limits, meter);
-      } else {
-        // A group: each cone's candidates (the encoder's lemmas in the first
-        // cone that holds their variables), Houdini one cone at a time.
-        std::vector<z3::expr> lemmas;
-        for (const auto& l : p.ts->lemmas()) lemmas.push_back(l.term);
-        const auto lemma_cones = cones_of(*p.ts, lemmas);
-        std::vector<bool> placed(lemmas.size(), false);
-        std::vector<std::vector<z3::expr>> per_cone(cones.size());
-        for (std::size_t i = 0; i < cones.size(); ++i) {
-          for (std::size_t l = 0; l < lemmas.size(); ++l)
-            if (!placed[l] && std::includes(cones[i].begin(), cones[i].end(), lemma_cones[l].begin(), lemma_cones[l].end())) {
-              placed[l] = true;
-              per_cone[i].push_back(lemmas[l]);
-            }
-          per_cone[i].insert(per_cone[i].end(), mined[i].begin(), mined[i].end());
-          for (const auto& c : correspondence_candidates(p, samples, cones[i], &*supports)) per_cone[i].push_back(c);
-        }
-        kept = product_houdini_by_cones(p, per_cone, cones, limits, meter);
-      }
+      for (const auto& l : p.ts->lemmas()) add(l.term);
+      const auto mined = checker::mine_candidates_within(p, mining_options(o, limits, round == 1), cones);
+      for (const auto& c : mined.front()) add(c);
+      for (const auto& c : correspondence_candidates(p, samples, cones.front())) add(c);
+      std::vector<z3::expr> kept = product_houdini(p, std::move(cands), limits, meter);
       checker::Watchdog watchdog(ctx, limits);
       z3::expr_vector all(ctx);
       for (const auto& c : kept) all.push_back(c);

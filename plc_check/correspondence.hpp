@@ -48,10 +48,12 @@ struct Correspondence {
 // Houdini over the candidates (those above and the checker's mined ones, with
 // the runs `o` describes), then `good` from what is kept; in two rounds, the
 // second with the checker's clauses over pairs of Booleans, only when `good`
-// does not follow from the first's. With `cones` (plc_check/cones.hpp), the
-// candidates are the union of each cone's, every template and mined pair
-// within one cone whose variables' inputs are related (Supports in
-// plc_check/cones.hpp); without, those of every state variable.
+// does not follow from the first's. With `cones` (a group's, plc_check/cones.hpp),
+// in one round by the cones' layers (layers_of): each layer sampled again on
+// its own variables, its templates and mined pairs of related inputs
+// (Supports) that read its top, Houdini one layer at a time
+// (product_houdini_by_layers); without, the candidates of every state
+// variable.
 Correspondence prove_by_correspondence(const checker::SafetyProblem& p, const Samples& samples,
                                        const checker::Limits& limits, const SamplingOptions& o = {},
                                        std::vector<std::vector<std::size_t>> cones = {});

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <optional>
+#include <set>
 #include <string>
 #include <unordered_set>
 
@@ -103,10 +104,9 @@ std::vector<z3::expr> product_houdini(const checker::SafetyProblem& p, std::vect
   return kept;
 }
 
-std::vector<z3::expr> product_houdini_by_cones(const checker::SafetyProblem& p,
-                                               const std::vector<std::vector<z3::expr>>& candidates,
-                                               const std::vector<std::vector<std::size_t>>& cones,
-                                               const checker::Limits& limits, checker::WorkMeter& meter) {
+std::vector<z3::expr> product_houdini_by_layers(const checker::SafetyProblem& p,
+                                                const std::vector<std::vector<z3::expr>>& candidates,
+                                                const checker::Limits& limits, checker::WorkMeter& meter) {
   const auto& ts = *p.ts;
   if (has_floats(ts)) {
     std::vector<z3::expr> all;
@@ -119,51 +119,54 @@ std::vector<z3::expr> product_houdini_by_cones(const checker::SafetyProblem& p,
   z3::context& ctx = ts.ctx();
   encoder::Unroller u(ts);
   checker::Watchdog watchdog(ctx, limits);
-  std::unordered_set<unsigned> asked;  // kept or dropped by an earlier cone
-  std::vector<z3::expr> kept;
-  std::vector<z3::expr> kept_at_0;  // each unrolled once, not once per later cone
-  std::vector<std::vector<std::size_t>> kept_vars;  // the state variables each reads
   TermReads reads(ts);
-  std::vector<std::pair<z3::expr, std::vector<std::size_t>>> cone_facts;  // in cycle 0, with the state read
-  for (const auto& f : conjuncts(ts.constraint_formula() && p.assumption)) cone_facts.push_back({u.at(f, 0), reads.of(f)});
-  for (std::size_t i = 0; i < cones.size() && i < candidates.size(); ++i) {
-    std::vector<bool> in(ts.statevars().size(), false);
-    for (std::size_t v : cones[i]) in[v] = true;
+  std::vector<std::vector<std::size_t>> next_reads(ts.statevars().size());
+  for (std::size_t v = 0; v < next_reads.size(); ++v) next_reads[v] = reads.of(ts.statevars()[v].next);
+  std::unordered_set<unsigned> asked;  // kept or dropped by an earlier layer
+  std::vector<z3::expr> kept;
+  // Every fact in cycle 0 (the constraints and the assumption, then what the
+  // layers keep), with the state variables it reads.
+  std::vector<std::pair<z3::expr, std::vector<std::size_t>>> facts;
+  for (const auto& f : conjuncts(ts.constraint_formula() && p.assumption)) facts.push_back({u.at(f, 0), reads.of(f)});
+  std::vector<char> in(ts.statevars().size(), 0);
+  for (std::size_t i = 0; i < candidates.size(); ++i) {
     std::vector<Candidate> cands;
+    std::set<std::size_t> stepped;  // the variables the candidates read
     for (const auto& c : candidates[i])
-      if (asked.insert(c.id()).second) cands.push_back(Candidate{c, u.at(c, 0), std::nullopt});
+      if (asked.insert(c.id()).second) {
+        cands.push_back(Candidate{c, u.at(c, 0), std::nullopt});
+        for (std::size_t v : reads.of(c)) stepped.insert(v);
+      }
     if (cands.empty()) continue;
+    // The query holds the transitions of the variables the candidates read,
+    // and the facts over those and what their next-state functions read:
+    // no other variable decides a candidate in the next scan. Every fact
+    // left out (and every other transition) only weakens what the query
+    // assumes, so what is kept is inductive still; the query is the size
+    // of a layer and its frontier, not of the cone below it.
+    std::fill(in.begin(), in.end(), 0);
     z3::expr_vector init(ctx), trans(ctx);
-    for (std::size_t v : cones[i]) {
+    for (std::size_t v : stepped) {
       const auto& s = ts.statevars()[v];
       init.push_back(s.var == s.init);
       trans.push_back(s.next_var == s.next);
+      in[v] = 1;
+      for (std::size_t w : next_reads[v]) in[w] = 1;
     }
     {
       z3::solver s(ctx, "QF_LIA");
       s.add(u.at(z3::mk_and(init), 0));
       drop_until_unsat(s, cands, limits, meter);
     }
-    // Only the facts over this cone's state (the constraints and the
-    // assumption on its inputs, what earlier cones kept of its variables):
-    // the others speak of variables its transitions do not read, and
-    // leaving a fact out only weakens what the cone may assume, so what it
-    // keeps is inductive still. Each round's query is then the cone's size,
-    // not the product's (a later cone of a generated 16 x 16 program
-    // assumed 3,646 invariants, most of other cones).
-    auto within = [&](const std::vector<std::size_t>& vars) {
-      return std::all_of(vars.begin(), vars.end(), [&](std::size_t v) { return in[v]; });
-    };
-    z3::expr_vector facts(ctx);
-    for (const auto& f : cone_facts)
-      if (within(f.second)) facts.push_back(f.first);
-    for (std::size_t k = 0; k < kept_at_0.size(); ++k)
-      if (within(kept_vars[k])) facts.push_back(kept_at_0[k]);
+    z3::expr_vector assumed(ctx);
+    for (const auto& f : facts)
+      if (std::all_of(f.second.begin(), f.second.end(), [&](std::size_t v) { return in[v] != 0; }))
+        assumed.push_back(f.first);
     z3::solver s(ctx, "QF_LIA");
     s.add(u.at(z3::mk_and(trans), 0));
-    s.add(facts);
+    s.add(assumed);
     for (std::size_t j = 0; j < cands.size(); ++j) {
-      const z3::expr l = ctx.bool_const(("plc.houdini.cone." + std::to_string(i) + "." + std::to_string(j)).c_str());
+      const z3::expr l = ctx.bool_const(("plc.houdini.layer." + std::to_string(i) + "." + std::to_string(j)).c_str());
       s.add(z3::implies(l, cands[j].decided));
       cands[j].literal = l;
       cands[j].decided = u.at(cands[j].term, 1);
@@ -171,8 +174,7 @@ std::vector<z3::expr> product_houdini_by_cones(const checker::SafetyProblem& p,
     drop_until_unsat(s, cands, limits, meter);
     for (const auto& c : cands) {
       kept.push_back(c.term);
-      kept_at_0.push_back(u.at(c.term, 0));
-      kept_vars.push_back(reads.of(c.term));
+      facts.push_back({u.at(c.term, 0), reads.of(c.term)});
     }
   }
   return kept;

@@ -23,18 +23,16 @@ namespace cemv::plc_check {
 std::vector<z3::expr> product_houdini(const checker::SafetyProblem& p, std::vector<z3::expr> candidates,
                                       const checker::Limits& limits, checker::WorkMeter& meter);
 
-// The same one cone at a time (plc_check/cones.hpp: each cone's state
-// variables are closed under their next-state functions): cone i's
-// candidates, every one over cone i's variables alone, checked on cone i's
-// own initial values and transitions, assuming what the cones before it kept
-// (invariants of the product); a candidate an earlier cone kept or dropped is
-// not asked again. Each kept set is inductive given the earlier ones, so
-// their union is inductive on the product; each solver call is the size of
-// one cone, not of their union. A candidate over variables of no single cone
-// is left out. Returns the union, in the cones' order.
-std::vector<z3::expr> product_houdini_by_cones(const checker::SafetyProblem& p,
-                                               const std::vector<std::vector<z3::expr>>& candidates,
-                                               const std::vector<std::vector<std::size_t>>& cones,
-                                               const checker::Limits& limits, checker::WorkMeter& meter);
+// The same one layer at a time (plc_check/cones.hpp, Layer): layer i's
+// candidates checked on the transitions of the state variables they read,
+// assuming the facts (constraints, assumption, what earlier layers kept:
+// invariants of the product) over those and what their next-state functions
+// read; a candidate an earlier layer kept or dropped is not asked again.
+// Each kept set is inductive given the earlier ones, so their union is
+// inductive on the product; each solver call is the size of one layer and
+// its frontier. Returns the union, in the layers' order.
+std::vector<z3::expr> product_houdini_by_layers(const checker::SafetyProblem& p,
+                                                const std::vector<std::vector<z3::expr>>& candidates,
+                                                const checker::Limits& limits, checker::WorkMeter& meter);
 
 }  // namespace cemv::plc_check

@@ -22,6 +22,12 @@ namespace cemv::plc_check {
 namespace {
 
 using Groups = std::vector<std::vector<std::size_t>>;
+
+// The most state variables (after the reduction) a whole product is tried
+// with every candidate (docs/plc.md "A cone group's Houdini"). Random matrix
+// 1036's product, which needs it, has fewer than a hundred; the generated
+// 16 x 16 program's group 363.
+constexpr std::size_t kWholeProductStates = 512;
 using Cones = std::vector<std::vector<std::size_t>>;
 
 // The goods of `qs` in `reduced`'s terms, and `reduced`: the product of
@@ -53,13 +59,24 @@ SharedProof prove_group(const model::Matrix& m, const plc::Program& program, con
   z3::context ctx;
   std::vector<z3::expr> goods;
   const checker::OwnedProblem reduced = reduce_product(make, ctx, goods);
+  // The whole product's candidates grow with the square of its state and
+  // its sampled states with its runs, not with a cone: on the generated
+  // 32 x 32 program (1,047 state variables) 3,074,918 candidates, 15.2 GB
+  // and past the time limit before Houdini began. Above the bound its
+  // outputs go on alone, each with its own cone's candidates.
+  if (whole && reduced.problem.ts->statevars().size() > kWholeProductStates) return out;
   // `whole`: every candidate of the product in two rounds, as one output's
   // cone gets them; else each cone's related candidates, sampled and mined
   // on each cone's variables alone.
   const Cones cones = whole ? Cones{} : cones_of(*reduced.problem.ts, goods);
-  SamplingOptions so = at_rest(m);
-  so.cones = cones;
-  const Samples s = sample(reduced.problem, so);
+  // A first pass finds a difference and the variables that never change
+  // (cones.hpp, constant_states); the layers are sampled again on their own
+  // variables (correspondence.hpp). The first keeps one state of each cone.
+  const SamplingOptions so = at_rest(m);
+  SamplingOptions first = so;
+  first.cones = cones;
+  first.max_states = 1;
+  const Samples s = sample(reduced.problem, whole ? so : first);
   if (s.violation) return out;  // an output differs: each is decided alone, its run replayed
   const checker::Work work = o.work * static_cast<checker::Work>(qs.size());
   const Correspondence c = prove_by_correspondence(reduced.problem, s, o.limits.with_work(work), so, cones);

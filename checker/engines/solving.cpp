@@ -160,9 +160,13 @@ std::vector<z3::expr> from_smtlib_readable(const encoder::TransitionSystem& ts, 
 }
 
 z3::expr invariant_term(const encoder::TransitionSystem& ts, const Invariant& inv) {
-  z3::expr_vector parts(ts.ctx());
-  for (const auto& c : inv.clauses) parts.push_back(from_smtlib(ts, c));
-  return parts.empty() ? ts.ctx().bool_val(true) : z3::mk_and(parts);
+  if (inv.clauses.empty()) return ts.ctx().bool_val(true);
+  // One parse for every clause: a parse declares every variable of the
+  // system again, which for thousands of clauses over hundreds of
+  // variables cost more than the re-check's solver.
+  const z3::expr_vector parts = parse_terms(ts, inv.clauses, 0, inv.clauses.size());
+  if (parts.size() != inv.clauses.size()) throw InternalError("cannot read the invariant's clauses");
+  return z3::mk_and(parts);
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {

@@ -72,6 +72,44 @@ TEST(PlcCones, SupportsRelateVariablesOfTheSameInputs) {
   EXPECT_TRUE(sup.may_guard(c, a, a));    // exactly the pair's i1
 }
 
+// Each layer as its top, then its variables.
+std::vector<Sets> layers(const TransitionSystem& ts, const std::vector<z3::expr>& outputs) {
+  std::vector<Sets> out;
+  for (const auto& l : cemv::plc_check::layers_of(ts, cones_of(ts, outputs), Supports(ts))) out.push_back({l.top, l.vars});
+  return out;
+}
+
+// A layer's top is the variables of one cone that read exactly the same
+// inputs: c (i1, reading a) and a (i1) are one, b (i2) and k (no input) one
+// each. Its variables are those and what they read, and k, which reads no
+// input and may guard any relation. Fewest inputs first, then smallest.
+TEST(PlcCones, LayersComeByTheirInputs) {
+  System s;
+  const std::size_t a = 0, b = 1, c = 2, k = 3;
+  EXPECT_EQ(layers(s.ts, {s.c, s.b, s.k}), (std::vector<Sets>{{{k}, {k}}, {{b}, {b, k}}, {{a, c}, {a, c, k}}}));
+  // A cone over c and b together: the pair's layers alone, no layer of both
+  // (no variable reads both i1 and i2).
+  EXPECT_EQ(layers(s.ts, {s.c && s.b}), (std::vector<Sets>{{{b}, {b}}, {{a, c}, {a, c}}}));
+}
+
+// d' = d or (a and b) reads i1 and i2: its layer holds the two causes'
+// variables and comes after their layers.
+TEST(PlcCones, AnEffectsLayerComesAfterItsCauses) {
+  z3::context ctx;
+  TransitionSystem ts{ctx};
+  const z3::expr i1 = ts.make_inputvar("i1", ctx.bool_sort());
+  const z3::expr i2 = ts.make_inputvar("i2", ctx.bool_sort());
+  const z3::expr a = ts.make_statevar("a", ctx.bool_sort());
+  const z3::expr b = ts.make_statevar("b", ctx.bool_sort());
+  const z3::expr d = ts.make_statevar("d", ctx.bool_sort());
+  for (const auto& v : {a, b, d}) ts.set_init(v, ctx.bool_val(false));
+  ts.assign_next(a, a || i1);
+  ts.assign_next(b, i2);
+  ts.assign_next(d, d || (a && b));
+  ts.check_complete();
+  EXPECT_EQ(layers(ts, {d}), (std::vector<Sets>{{{0}, {0}}, {{1}, {1}}, {{2}, {0, 1, 2}}}));
+}
+
 // z' = (a or i2) and not (a or i2): constant FALSE, as the matrix encodes an
 // effect's output delay of 0 ms (E.7), and o' = ite(z, i2, a) reads i2 only
 // through it. y' = y or i2 stays FALSE in the samples below without being
