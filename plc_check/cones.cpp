@@ -66,28 +66,29 @@ std::vector<std::vector<std::size_t>> direct_reads(const encoder::TransitionSyst
   return out;
 }
 
+// The state variables `todo` holds and those they reach through what each
+// reads (`reads`, by state variable).
+std::set<std::size_t> reached(const std::vector<std::vector<std::size_t>>& reads, std::vector<std::size_t> todo) {
+  std::set<std::size_t> out;
+  while (!todo.empty()) {
+    const std::size_t v = todo.back();
+    todo.pop_back();
+    if (!out.insert(v).second) continue;
+    for (std::size_t w : reads[v])
+      if (!out.count(w)) todo.push_back(w);
+  }
+  return out;
+}
+
 }  // namespace
 
 std::vector<std::vector<std::size_t>> cones_of(const encoder::TransitionSystem& ts, const std::vector<z3::expr>& terms) {
-  const auto& vars = ts.statevars();
   TermReads reads(ts);
   const std::vector<std::vector<std::size_t>> next_reads = direct_reads(ts, false);
   std::vector<std::vector<std::size_t>> out;
   for (const auto& t : terms) {
-    std::vector<bool> in(vars.size(), false);
-    std::vector<std::size_t> todo = reads.of(t);
-    while (!todo.empty()) {
-      const std::size_t v = todo.back();
-      todo.pop_back();
-      if (in[v]) continue;
-      in[v] = true;
-      for (std::size_t w : next_reads[v])
-        if (!in[w]) todo.push_back(w);
-    }
-    std::vector<std::size_t> cone;
-    for (std::size_t v = 0; v < vars.size(); ++v)
-      if (in[v]) cone.push_back(v);
-    out.push_back(std::move(cone));
+    const std::set<std::size_t> cone = reached(next_reads, reads.of(t));
+    out.emplace_back(cone.begin(), cone.end());
   }
   return out;
 }
@@ -108,16 +109,9 @@ std::vector<Layer> layers_of(const encoder::TransitionSystem& ts, const std::vec
     std::map<std::vector<std::uint64_t>, std::vector<std::size_t>> by_inputs;
     for (std::size_t v : cone) by_inputs[supports.inputs_of(v)].push_back(v);
     for (const auto& [inputs, top] : by_inputs) {
-      std::set<std::size_t> vars(top.begin(), top.end()), near = vars;
+      std::set<std::size_t> vars = reached(reads, top), near(top.begin(), top.end());
       for (std::size_t v : top) near.insert(reads[v].begin(), reads[v].end());
       near.insert(inputless.begin(), inputless.end());
-      std::vector<std::size_t> todo = top;
-      while (!todo.empty()) {
-        const std::size_t v = todo.back();
-        todo.pop_back();
-        for (std::size_t w : reads[v])
-          if (vars.insert(w).second) todo.push_back(w);
-      }
       vars.insert(inputless.begin(), inputless.end());
       std::size_t n = 0;
       for (std::uint64_t w : inputs) n += static_cast<std::size_t>(std::popcount(w));
