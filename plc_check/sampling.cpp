@@ -227,6 +227,17 @@ class Keeper {
 
 }  // namespace
 
+namespace {
+
+// An input's value by name (SamplingOptions::rest, a trip's inputs) as the
+// product takes it: a Float32 value of a reduced input as its ordered integer.
+encoder::Evaluator::Value input_value(const z3::expr& var, const checker::Value& v) {
+  if (var.is_int() && v.is_float) return {checker::float_key(v.f), 0.0f};
+  return {v.i, v.f};
+}
+
+}  // namespace
+
 Samples sample(const checker::SafetyProblem& p, const SamplingOptions& o) {
   Samples out;
   try {
@@ -258,10 +269,7 @@ Samples sample(const checker::SafetyProblem& p, const SamplingOptions& o) {
     states.add(runner.ev().state());
     Inputs rest(ins.size());
     for (std::size_t i = 0; i < ins.size() && o.rest; ++i)
-      if (const auto v = o.rest(ins[i].name)) {
-        if (ins[i].var.is_int() && v->is_float) rest[i].i = checker::float_key(v->f);  // reduced: ordered integers
-        else rest[i] = {v->i, v->f};
-      }
+      if (const auto v = o.rest(ins[i].name)) rest[i] = input_value(ins[i].var, *v);
     bool near_limits = false;  // this run draws an input near its own limits
     auto draw = [&](Inputs& in, std::size_t i) {
       if (ins[i].var.is_bool()) in[i].i = static_cast<std::int64_t>(pick(2));
@@ -272,40 +280,97 @@ Samples sample(const checker::SafetyProblem& p, const SamplingOptions& o) {
       }
       else in[i].f = static_cast<float>(values[pick(values.size())]);
     };
-    for (int r = 0; r < o.runs; ++r) {
+    std::vector<Inputs> run;
+    int refused = 0;  // draws that broke the constraints or the assumption
+    // Holds `in` up to `hold` scans, or up to `length` scans of the run; false
+    // when a scan breaks `good` (out.violation is the run, shortened).
+    auto play = [&](const Inputs& in, int hold, int length) {
+      for (int h = 0; h < hold && static_cast<int>(run.size()) < length; ++h) {
+        if (!runner.step(in)) {
+          // Back to the state before this scan, and another draw.
+          ++refused;
+          runner.ev().reset();
+          for (const auto& earlier : run) runner.step(earlier);
+          return true;
+        }
+        run.push_back(in);
+        if (!runner.good()) {
+          out.violation = runner.trace(runner.shorten(std::move(run)));
+          return false;
+        }
+        states.add(runner.ev().state());
+      }
+      return true;
+    };
+    auto start_run = [&] {
       runner.ev().reset();
-      std::vector<Inputs> run;
+      run.clear();
+      refused = 0;
+    };
+    // One to three inputs changed, each back to `base` one time in three.
+    auto change_around = [&](Inputs& in, const Inputs& base) {
+      for (std::size_t n = 1 + pick(3); n > 0 && !in.empty(); --n) {
+        const std::size_t i = pick(in.size());
+        if (pick(3) == 0) in[i] = base[i];
+        else draw(in, i);
+      }
+    };
+    auto pick_hold = [&] { return pick(2) == 0 ? holds[pick(holds.size())] : 1 + static_cast<int>(pick(4)); };
+    for (int r = 0; r < o.runs; ++r) {
+      start_run();
       const bool from_rest = o.rest && r % 2 == 1;
       near_limits = !from_rest;
       Inputs in = rest;
-      int refused = 0;  // draws that broke the constraints or the assumption
       while (refused < 8 && static_cast<int>(run.size()) < o.cycles_per_run) {
         if (from_rest) {
-          for (std::size_t n = 1 + pick(3); n > 0 && !in.empty(); --n) {
-            const std::size_t i = pick(in.size());
-            if (pick(3) == 0) in[i] = rest[i];
-            else draw(in, i);
-          }
+          change_around(in, rest);
         } else {
           for (std::size_t i = 0; i < in.size(); ++i)
             if (run.empty() || pick(2) == 0) draw(in, i);
         }
-        const int hold = pick(2) == 0 ? holds[pick(holds.size())] : 1 + static_cast<int>(pick(4));
-        for (int h = 0; h < hold && static_cast<int>(run.size()) < o.cycles_per_run; ++h) {
-          if (!runner.step(in)) {
-            // Back to the state before this scan, and another draw.
-            ++refused;
-            runner.ev().reset();
-            for (const auto& earlier : run) runner.step(earlier);
-            break;
-          }
-          run.push_back(in);
-          if (!runner.good()) {
-            out.violation = runner.trace(runner.shorten(std::move(run)));
-            return out;
-          }
-          states.add(runner.ev().state());
+        if (!play(in, pick_hold(), o.cycles_per_run)) return out;
+      }
+    }
+    // The trips' runs draw from a stream of their own: the runs above are
+    // the same with or without them.
+    rng.seed(o.seed + 2);
+    near_limits = false;
+    for (const auto& trip : o.trips) {
+      start_run();
+      auto over = [&](Inputs in, const std::map<std::string, checker::Value>& set) {
+        for (std::size_t i = 0; i < ins.size(); ++i)
+          if (const auto it = set.find(ins[i].name); it != set.end()) in[i] = input_value(ins[i].var, it->second);
+        return in;
+      };
+      const Inputs tripped = over(rest, trip.inputs);
+      // The trip without the pulses' inputs: a reset tag's rising edge comes
+      // only from a source at rest before.
+      Inputs apart = tripped;
+      for (const auto& p : trip.pulses)
+        for (std::size_t i = 0; i < ins.size(); ++i)
+          if (p.count(ins[i].name) != 0) apart[i] = rest[i];
+      const int length = o.cycles_per_trip +
+                         3 * (trip.hold + (trip.hold + trip.pulse) * static_cast<int>(trip.pulses.size()));
+      // Held, then each pulse over it and held again.
+      auto pulsed = [&](const Inputs& base) {
+        if (!play(base, trip.hold, length)) return false;
+        for (const auto& p : trip.pulses)
+          if (!play(over(base, p), trip.pulse, length) || !play(base, trip.hold, length)) return false;
+        return true;
+      };
+      // From rest: a latch a pulse's source sets in the whole trip (an effect
+      // the reset tag names, latched by a cause of both) holds it after.
+      if (!pulsed(apart) || !play(tripped, trip.hold, length)) return out;
+      Inputs in = tripped;
+      const Inputs* base = &tripped;
+      while (refused < 8 && static_cast<int>(run.size()) < length) {
+        if (base == &tripped && static_cast<int>(run.size()) >= length / 2) {
+          base = &rest;
+          in = rest;
+          if (!pulsed(rest)) return out;
         }
+        change_around(in, *base);
+        if (!play(in, pick_hold(), length)) return out;
       }
     }
     states.finish(out);

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -34,6 +35,26 @@ struct SamplingOptions {
   // of variables). Empty: every distinct state of the product, unbounded.
   std::vector<std::vector<std::size_t>> cones;
   std::size_t max_states = 4096;
+  // Runs that trip causes together, one run each after the others, as an
+  // acceptance test does: an effect voted 11oo11 is never tripped by
+  // independent draws, so its output delay never runs in them and nothing
+  // relates the two sides' timers; an override is started only by its
+  // command or reset tag while the effect is active. A trip's inputs (by
+  // name, over the rest) but those the pulses set (a reset tag's edge needs
+  // its source at rest before) are held `hold` scans; each pulse (what
+  // overrides or resets the effect) is set over them for `pulse` scans and
+  // they are held again; then the whole trip is held `hold` scans, and one
+  // to three inputs change a stretch around it.
+  // Half-way every input goes back to rest and the pulses are repeated
+  // there (the latches reset), and the changes go on around the rest.
+  struct Trip {
+    std::map<std::string, checker::Value> inputs;
+    int hold = 1;
+    std::vector<std::map<std::string, checker::Value>> pulses;
+    int pulse = 1;
+  };
+  std::vector<Trip> trips;
+  int cycles_per_trip = 120;
 };
 
 // The distinct states of one cone's variables (values in the cone's order),
@@ -67,7 +88,8 @@ struct Samples {
 // is drawn three times in four among the numerals it is itself compared
 // with, and one either side, from a stream of its own (the runs from rest
 // draw as without it). A draw that breaks the constraints or the assumption
-// is drawn again.
+// is drawn again. Then the trips' runs (SamplingOptions::trips), from a
+// stream of their own.
 Samples sample(const checker::SafetyProblem& p, const SamplingOptions& o = {});
 
 }  // namespace cemv::plc_check

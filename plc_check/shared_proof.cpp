@@ -194,6 +194,104 @@ SharedProof shared_proof(const model::Matrix& m, const plc::Program& program, co
   return shared->whole.get([&] { return prove_group(m, program, pou, map, qs, options, true); });
 }
 
+namespace {
+
+// The value of a cause's input that trips it: a discrete DTT input FALSE, an
+// ETT input TRUE (6.3.4), an analog input one past its limit and hysteresis
+// (6.3.5), as default_tag_value keeps it one short of them.
+checker::Value tripping_value(const model::Cause& c, const model::CauseTag& t) {
+  checker::Value v;
+  if (c.input == model::InputKind::Analog && c.analog) {
+    const double limit = c.analog->limit, hyst = c.analog->hysteresis;
+    v.is_float = true;
+    v.f = static_cast<float>(c.analog->limit_type == model::LimitType::High ? limit + hyst + 1.0 : limit - hyst - 1.0);
+  } else {
+    v.i = t.ett ? 1 : 0;
+  }
+  return v;
+}
+
+using Inputs = std::map<std::string, checker::Value>;
+
+// The scans that cover `ms` on a scan of `scan` ms, and one more.
+int scans(std::uint32_t ms, std::uint32_t scan) { return static_cast<int>((ms + scan - 1) / scan) + 1; }
+
+// What trips an effect: the inputs of its causes (those of a processed
+// intersection), each at its tripping value, and the scans their longest
+// delay takes.
+struct Tripping {
+  Inputs inputs;
+  std::uint32_t delay_ms = 0;
+};
+
+void add_cause(const model::InputTable& table, const model::Cause& c, Tripping& t) {
+  if (c.function == model::CauseFunction::Comment) return;
+  for (const auto& tag : c.tags)
+    if (const auto i = table.find(tag.name)) t.inputs.emplace("input." + table.tags()[*i].name, tripping_value(c, tag));
+  t.delay_ms = std::max(t.delay_ms, c.time.ms);
+}
+
+Tripping tripping(const model::Matrix& m, const model::InputTable& table, const model::Effect& e) {
+  Tripping t;
+  for (const model::Intersection* x : m.intersections_of_effect(e.id)) {
+    const model::Cause* c = m.find_cause(x->cause);
+    if (c && x->type != model::IntersectionType::X && x->type != model::IntersectionType::Note)
+      add_cause(table, *c, t);
+  }
+  return t;
+}
+
+// What resets an effect or starts its override (O.2, O.3, E.1): its reset
+// tag's rising edge, the tag itself or what it refers to (a cause, an
+// effect) tripped; without a reset tag the operator's two commands. The
+// scans a pulse lasts: the referred element's delays.
+std::vector<Inputs> reset_pulses(const model::Matrix& m, const model::InputTable& table, const model::Effect& e,
+                                 int& length) {
+  const std::uint32_t scan = std::max<std::uint32_t>(m.cycle_ms, 1);
+  length = 1;
+  if (!e.reset_tag) {
+    const std::string id = std::to_string(e.id);
+    return {{{"cmd.override_effect[" + id + "]", checker::Value{.i = 1}}},
+            {{"cmd.reset_effect[" + id + "]", checker::Value{.i = 1}}}};
+  }
+  Tripping t;
+  const auto ref = model::parse_internal_ref(*e.reset_tag);
+  if (!ref) {
+    if (const auto i = table.find(*e.reset_tag)) t.inputs.emplace("input." + table.tags()[*i].name, checker::Value{.i = 1});
+  } else if (ref->kind == model::InternalRef::Kind::Cause) {
+    if (const model::Cause* c = m.find_cause(ref->id)) add_cause(table, *c, t);
+  } else if (const model::Effect* x = m.find_effect(ref->id)) {
+    t = tripping(m, table, *x);
+    if (ref->kind == model::InternalRef::Kind::EffectTag) t.delay_ms += x->output_delay_ms;
+  }
+  if (t.inputs.empty()) return {};
+  length = scans(t.delay_ms, scan);
+  return {t.inputs};
+}
+
+// For each effect, an acceptance test's run: its causes tripped together,
+// held through their longest delay, the output delay and the override's
+// longest time; its reset pulsed, tripped and released.
+std::vector<SamplingOptions::Trip> trips_of(const model::Matrix& m) {
+  std::vector<SamplingOptions::Trip> out;
+  const std::uint32_t scan = std::max<std::uint32_t>(m.cycle_ms, 1);
+  const model::InputTable table(m);
+  for (const auto& e : m.effects) {
+    if (e.function == model::EffectFunction::Comment) continue;
+    Tripping t = tripping(m, table, e);
+    if (t.inputs.empty()) continue;
+    SamplingOptions::Trip trip;
+    trip.inputs = std::move(t.inputs);
+    const std::uint32_t override_ms = e.override_time ? e.override_time->max_s * 1000 : 0;
+    trip.hold = scans(std::max(t.delay_ms + e.output_delay_ms, override_ms), scan) + 1;
+    trip.pulses = reset_pulses(m, table, e, trip.pulse);
+    out.push_back(std::move(trip));
+  }
+  return out;
+}
+
+}  // namespace
+
 SamplingOptions at_rest(const model::Matrix& m) {
   auto rest = std::make_shared<std::map<std::string, checker::Value>>();
   const model::InputTable table(m);
@@ -206,6 +304,7 @@ SamplingOptions at_rest(const model::Matrix& m) {
     (*rest)["input." + table.tags()[i].name] = v;
   }
   SamplingOptions o;
+  o.trips = trips_of(m);
   o.rest = [rest](const std::string& name) -> std::optional<checker::Value> {
     const auto it = rest->find(name);
     if (it == rest->end()) return std::nullopt;

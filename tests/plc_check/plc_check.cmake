@@ -58,3 +58,10 @@ if(TARGET cemv_plc_check AND TARGET cemv_plc)
     MATCH "tank_t100.st: error: operator commands the matrix accepts without a program variable"
     COMMAND $<TARGET_FILE:cemv> plc-check ${PLC_TANK}/matrix.json ${PLC_TANK}/plc/tank_t100.st)
 endif()
+# The runs that trip an effect's causes together.
+if(TARGET cemv_plc_check AND TARGET cemv_plc)
+  add_executable(test_plc_sampling ${CMAKE_CURRENT_LIST_DIR}/test_plc_sampling.cpp)
+  target_link_libraries(test_plc_sampling PRIVATE cemv_plc_check cemv_formats GTest::gtest_main)
+  target_compile_definitions(test_plc_sampling PRIVATE CEMV_SOURCE_DIR="${PROJECT_SOURCE_DIR}")
+  gtest_discover_tests(test_plc_sampling DISCOVERY_TIMEOUT 60)
+endif()
