@@ -252,4 +252,62 @@ TEST(SmtlibExport, Cvc5ConfirmsTheProofObligations) {
   EXPECT_GE(confirmed, 9);
 }
 
+// A large invariant (kChunkedClauses or more) is re-checked a chunk of
+// clauses at a time, each first under the premise cut to what decides it.
+// The system: a shift register x0 <- FALSE, xi <- x(i-1) of 1,100 stages,
+// and a <- b, b <- b, d <- d; everything FALSE initially.
+struct ShiftRegister {
+  z3::context ctx;
+  encoder::TransitionSystem ts{ctx};
+  static constexpr int kStages = 1100;
+  ShiftRegister() {
+    z3::expr prev = ctx.bool_val(false);
+    for (int i = 0; i < kStages; ++i) {
+      const z3::expr x = ts.make_statevar(("x" + std::to_string(i)).c_str(), ctx.bool_sort());
+      ts.set_init(x, ctx.bool_val(false));
+      ts.assign_next(x, prev);
+      prev = x;
+    }
+    const z3::expr a = ts.make_statevar("a", ctx.bool_sort());
+    const z3::expr b = ts.make_statevar("b", ctx.bool_sort());
+    const z3::expr d = ts.make_statevar("d", ctx.bool_sort());
+    for (const auto& v : {a, b, d}) ts.set_init(v, ctx.bool_val(false));
+    ts.assign_next(a, b);
+    ts.assign_next(b, b);
+    ts.assign_next(d, d);
+    ts.check_complete();
+  }
+  SafetyProblem problem() { return SafetyProblem{&ts, ctx.bool_val(true), ctx.bool_val(true)}; }
+  // Every stage FALSE, but `skip`; `not a` first, and last the clause it
+  // needs, which also reads d: beyond a's next-state function, so a's
+  // chunk is decided only under the whole premise.
+  static ProverResult proof(int skip = -1) {
+    ProverResult r;
+    r.verdict = Verdict::Proved;
+    r.method = Method::InvariantsInduction;
+    r.k = 0;
+    r.invariant.clauses.push_back("(not a)");
+    for (int i = 0; i < kStages; ++i)
+      if (i != skip) r.invariant.clauses.push_back("(not x" + std::to_string(i) + ")");
+    r.invariant.clauses.push_back("(not (or b d))");
+    return r;
+  }
+};
+
+TEST(Recheck, AcceptsALargeInvariantChunkByChunk) {
+  ShiftRegister s;
+  EXPECT_NO_THROW(check::recheck_proof(s.problem(), ShiftRegister::proof()));
+}
+
+TEST(Recheck, RejectsALargeInvariantWithOneClauseNotInductive) {
+  ShiftRegister s;
+  // Without stage 500's clause, stage 501's is not inductive.
+  try {
+    check::recheck_proof(s.problem(), ShiftRegister::proof(500));
+    ADD_FAILURE() << "the re-check passed";
+  } catch (const InternalError& e) {
+    EXPECT_NE(std::string(e.what()).find("invariant-step (clauses 385 to 512)"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
