@@ -36,7 +36,9 @@ SharedProof shared_proof(const model::Matrix& m, const plc::Program& program, co
                          const ResolvedMap& map, const CheckOptions& options, const OutputQuestion& q);
 
 // The plant at rest for a product's inputs: each tag (named "input.TAG" on
-// both sides) at its scenario default, good quality, no command.
+// both sides) at its scenario default, good quality, no command; and, for
+// each effect, an acceptance test's run (SamplingOptions::trips): its causes
+// tripped together and its reset pulsed, held by the matrix's cycle time.
 SamplingOptions at_rest(const model::Matrix& m);
 
 }  // namespace cemv::plc_check
