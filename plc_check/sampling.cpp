@@ -225,10 +225,6 @@ class Keeper {
   std::vector<char> unchanged_;
 };
 
-}  // namespace
-
-namespace {
-
 // An input's value by name (SamplingOptions::rest, a trip's inputs) as the
 // product takes it: a Float32 value of a reduced input as its ordered integer.
 encoder::Evaluator::Value input_value(const z3::expr& var, const checker::Value& v) {
@@ -335,13 +331,14 @@ Samples sample(const checker::SafetyProblem& p, const SamplingOptions& o) {
     // the same with or without them.
     rng.seed(o.seed + 2);
     near_limits = false;
+    // `in` with the inputs `set` names at its values.
+    auto over = [&](Inputs in, const std::map<std::string, checker::Value>& set) {
+      for (std::size_t i = 0; i < ins.size(); ++i)
+        if (const auto it = set.find(ins[i].name); it != set.end()) in[i] = input_value(ins[i].var, it->second);
+      return in;
+    };
     for (const auto& trip : o.trips) {
       start_run();
-      auto over = [&](Inputs in, const std::map<std::string, checker::Value>& set) {
-        for (std::size_t i = 0; i < ins.size(); ++i)
-          if (const auto it = set.find(ins[i].name); it != set.end()) in[i] = input_value(ins[i].var, it->second);
-        return in;
-      };
       const Inputs tripped = over(rest, trip.inputs);
       // The trip without the pulses' inputs: a reset tag's rising edge comes
       // only from a source at rest before.

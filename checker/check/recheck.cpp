@@ -4,12 +4,13 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <map>
 #include <optional>
 #include <set>
+#include <unordered_map>
 
 #include "checker/context_pool.hpp"
 #include "checker/engines/solving.hpp"
+#include "checker/reduce_terms.hpp"
 #include "encoder/encode.hpp"
 #include "encoder/evaluate.hpp"
 #include "encoder/unroller.hpp"
@@ -80,7 +81,7 @@ auto in_fresh_context(const ProblemFactory& make, F&& f) {
 constexpr std::size_t kChunkedClauses = 1024;
 constexpr std::size_t kChunkClauses = 128;
 
-// The state variables `e` reads (indices into ts.statevars()).
+// The state variables a term reads (indices into ts.statevars()).
 class StateReads {
  public:
   explicit StateReads(const encoder::TransitionSystem& ts) {
@@ -88,33 +89,19 @@ class StateReads {
   }
   std::set<std::size_t> of(const z3::expr& e) const {
     std::set<std::size_t> out;
-    std::set<unsigned> seen;
-    std::vector<z3::expr> todo{e};
-    while (!todo.empty()) {
-      const z3::expr t = todo.back();
-      todo.pop_back();
-      if (!t.is_app() || !seen.insert(t.id()).second) continue;
-      if (const auto it = index_.find(t.id()); it != index_.end()) out.insert(it->second);
-      for (unsigned i = 0; i < t.num_args(); ++i) todo.push_back(t.arg(i));
-    }
+    for (unsigned id : reduce_terms::variables_of(e))
+      if (const auto it = index_.find(id); it != index_.end()) out.insert(it->second);
     return out;
   }
 
  private:
-  std::map<unsigned, std::size_t> index_;
+  std::unordered_map<unsigned, std::size_t> index_;
 };
 
 // The conjuncts of `e`.
 std::vector<z3::expr> conjuncts_of(const z3::expr& e) {
-  std::vector<z3::expr> out, todo{e};
-  while (!todo.empty()) {
-    const z3::expr t = todo.back();
-    todo.pop_back();
-    if (t.is_app() && t.decl().decl_kind() == Z3_OP_AND)
-      for (unsigned i = t.num_args(); i-- > 0;) todo.push_back(t.arg(i));
-    else
-      out.push_back(t);
-  }
+  std::vector<z3::expr> out;
+  reduce_terms::conjuncts(e, out);
   return out;
 }
 
