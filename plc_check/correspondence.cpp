@@ -15,6 +15,7 @@
 #include "plc_check/cones.hpp"
 #include "plc_check/houdini.hpp"
 #include "plc_check/product.hpp"
+#include "plc_check/sample_test.hpp"
 
 namespace cemv::plc_check {
 
@@ -289,6 +290,27 @@ checker::MiningOptions mining_options(const SamplingOptions& o, const checker::L
   return mo;
 }
 
+// The sampled states of the cone of `vars`, if the runs kept them.
+const ConeStates* states_of(const Samples& s, const std::vector<std::size_t>& vars) {
+  for (const auto& c : s.cones)
+    if (c.vars == vars) return c.states.empty() ? nullptr : &c;
+  return nullptr;
+}
+
+// A cone's variables by Z3 AST id: their columns in its sampled states.
+std::unordered_map<unsigned, std::size_t> columns_of(const ConeStates& cone, const encoder::TransitionSystem& ts) {
+  std::unordered_map<unsigned, std::size_t> column;
+  for (std::size_t k = 0; k < cone.vars.size(); ++k) column.emplace(ts.statevars()[cone.vars[k]].var.id(), k);
+  return column;
+}
+
+// Whether `c` holds in every state of `cone` (sample_test.hpp); true when
+// it cannot be evaluated there (Houdini decides it).
+bool holds_in_every(const z3::expr& c, const ConeStates& cone, const std::unordered_map<unsigned, std::size_t>& column) {
+  const std::optional<SampleTest> test = SampleTest::compile(c, column);
+  return !test || std::all_of(cone.states.begin(), cone.states.end(), [&](const Sample& s) { return test->holds(s); });
+}
+
 // A group's candidates by layers (cones.hpp, Layer): each layer's templates
 // and mined relations over its variables, sampled on them alone, those that
 // read its top and nothing beyond its `near` variables (a candidate over
@@ -333,8 +355,12 @@ std::vector<std::vector<z3::expr>> layered_candidates(const checker::SafetyProbl
         return std::binary_search(layers[i].near.begin(), layers[i].near.end(), v);
       });
     };
+    // The mined candidates from the checker's own runs, tested on these
+    // runs' states too (the acceptance tests' among them).
+    const ConeStates* sampled = states_of(states, layers[i].vars);
+    const auto column = sampled ? columns_of(*sampled, ts) : std::unordered_map<unsigned, std::size_t>{};
     for (const auto& c : mined[i])
-      if (own(c)) out[i].push_back(c);
+      if (own(c) && (!sampled || holds_in_every(c, *sampled, column))) out[i].push_back(c);
     for (const auto& c : correspondence_candidates(p, states, layers[i].vars, &supports))
       if (own(c)) out[i].push_back(c);
   }
