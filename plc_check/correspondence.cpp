@@ -318,11 +318,14 @@ bool holds_in_every(const z3::expr& c, const ConeStates& cone, const std::unorde
 // state to its causes' several layers below was most of the generated 32 x
 // 32 program's candidates and Houdini rounds, and no proof of the smaller
 // programs needs it); the encoder's lemmas in the first layer that holds
-// what they read.
-std::vector<std::vector<z3::expr>> layered_candidates(const checker::SafetyProblem& p, const Samples& samples,
-                                                      const std::vector<std::vector<std::size_t>>& cones,
-                                                      const SamplingOptions& o, const checker::Limits& limits,
-                                                      checker::WorkMeter& meter) {
+// what they read. `samples`: which variables change (the layers' states
+// are sampled here). nullopt when these runs break an output's relation.
+std::optional<std::vector<std::vector<z3::expr>>> layered_candidates(const checker::SafetyProblem& p,
+                                                                     const Samples& samples,
+                                                                     const std::vector<std::vector<std::size_t>>& cones,
+                                                                     const SamplingOptions& o,
+                                                                     const checker::Limits& limits,
+                                                                     checker::WorkMeter& meter) {
   const auto& ts = *p.ts;
   const std::vector<std::size_t> constants = constant_states(p, samples, limits, meter);
   const Supports supports(ts, constants);
@@ -330,6 +333,7 @@ std::vector<std::vector<z3::expr>> layered_candidates(const checker::SafetyProbl
   SamplingOptions lo = o;
   for (const auto& l : layers) lo.cones.push_back(l.vars);
   const Samples states = sample(p, lo);
+  if (states.violation) return std::nullopt;
   checker::MiningOptions mo = mining_options(o, limits, true);
   mo.related = [&](std::size_t x, std::size_t y) { return supports.related(x, y); };
   mo.may_guard = [&](std::size_t g, std::size_t x, std::size_t y) { return supports.may_guard(g, x, y); };
@@ -393,7 +397,14 @@ Correspondence prove_by_correspondence(const checker::SafetyProblem& p, const Sa
       // A group: Houdini one layer at a time over the layers' candidates,
       // with the checker's clauses over pairs of Booleans from the start
       // (they strengthen what is kept; a group rarely proves without them).
-      out.invariant = product_houdini_by_layers(p, layered_candidates(p, samples, cones, o, limits, meter), limits, meter);
+      const auto candidates = layered_candidates(p, samples, cones, o, limits, meter);
+      if (!candidates) {
+        r.work = meter.spent();
+        r.seconds = checker::seconds_since(start);
+        r = unknown(r, UnknownReason::BoundReached);  // an output differs in a run: each is decided alone
+        return out;
+      }
+      out.invariant = product_houdini_by_layers(p, *candidates, limits, meter);
       checker::Watchdog watchdog(ctx, limits);
       z3::expr_vector all(ctx);
       for (const auto& c : out.invariant) all.push_back(c);

@@ -52,8 +52,9 @@ struct Correspondence {
 // in one round by the cones' layers (layers_of): each layer sampled again on
 // its own variables, its templates and mined pairs of related inputs
 // (Supports) that read its top, Houdini one layer at a time
-// (product_houdini_by_layers); without, the candidates of every state
-// variable.
+// (product_houdini_by_layers), Unknown (BoundReached, nothing kept) when
+// those runs break `good`; with cones, `samples` need only say which
+// variables change. Without cones, the candidates of every state variable.
 Correspondence prove_by_correspondence(const checker::SafetyProblem& p, const Samples& samples,
                                        const checker::Limits& limits, const SamplingOptions& o = {},
                                        std::vector<std::vector<std::size_t>> cones = {});

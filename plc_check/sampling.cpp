@@ -182,6 +182,7 @@ class Keeper {
     }
     for (std::size_t v = 0; v < s.size(); ++v)
       if (s[v].i != initial_[v].i) unchanged_[v] = 0;
+    if (max_ == 0) return;
     if (cones_.empty()) {
       all_.push_back(s);
       return;

@@ -34,6 +34,8 @@ struct SamplingOptions {
   // 128 x 128 x 1024 matrix's generated program: 25,600 states of thousands
   // of variables). Empty: every distinct state of the product, unbounded.
   std::vector<std::vector<std::size_t>> cones;
+  // 0: no state kept, only which variables change (Samples::unchanged) and
+  // a difference.
   std::size_t max_states = 4096;
   // Runs that trip causes together, one run each after the others, as an
   // acceptance test does: an effect voted 11oo11 is never tripped by

@@ -68,13 +68,16 @@ SharedProof prove_group(const model::Matrix& m, const plc::Program& program, con
   // cone gets them; else each cone's related candidates, sampled and mined
   // on each cone's variables alone.
   const Cones cones = whole ? Cones{} : cones_of(*reduced.problem.ts, goods);
-  // A first pass finds a difference and the variables that never change
-  // (cones.hpp, constant_states); the layers are sampled again on their own
-  // variables (correspondence.hpp). The first keeps one state of each cone.
+  // For a group, a first pass of the seeded runs (not the acceptance
+  // tests') finds a difference and which variables change: the others are
+  // asked of a solver (cones.hpp, constant_states), which finds the same
+  // constants from any superset of them. It keeps no state: the layers are
+  // sampled on their own variables by every run (correspondence.hpp), and a
+  // difference found there ends the group's proof as one found here does.
   const SamplingOptions so = at_rest(m);
   SamplingOptions first = so;
-  first.cones = cones;
-  first.max_states = 1;
+  first.trips.clear();
+  first.max_states = 0;
   const Samples s = sample(reduced.problem, whole ? so : first);
   if (s.violation) return out;  // an output differs: each is decided alone, its run replayed
   const checker::Work work = o.work * static_cast<checker::Work>(qs.size());
