@@ -171,8 +171,16 @@ std::uint64_t hash_of(const State& s) {
 class Keeper {
  public:
   explicit Keeper(const SamplingOptions& o) : max_(o.max_states) {
-    for (const auto& c : o.cones) cones_.push_back(ConeStates{c, {}, {}});
+    for (std::size_t c = 0; c < o.cones.size(); ++c) {
+      cones_.push_back(ConeStates{o.cones[c], {}, {}});
+      for (std::size_t v : o.cones[c]) {
+        if (v >= cones_of_.size()) cones_of_.resize(v + 1);
+        cones_of_[v].push_back(c);
+      }
+    }
     index_.resize(cones_.size());
+    last_index_.assign(cones_.size(), kNotKept);
+    changed_.assign(cones_.size(), 1);
   }
 
   void add(const State& s) {
@@ -191,9 +199,23 @@ class Keeper {
     // counted by a 64-bit hash of the whole state; a collision only lowers
     // a weight).
     if (!seen_.insert(hash_of(s)).second) return;
+    // A cone none of whose variables changed since the last state kept here
+    // has the same values as then: the same entry, found without a hash (a
+    // scan of a trip changes a few cones of hundreds).
+    if (!last_.empty())
+      for (std::size_t v = 0; v < s.size() && v < cones_of_.size(); ++v)
+        if (s[v].i != last_[v].i || std::bit_cast<std::uint32_t>(s[v].f) != std::bit_cast<std::uint32_t>(last_[v].f))
+          for (std::size_t c : cones_of_[v]) changed_[c] = 1;
+    last_ = s;
     State projected;
     for (std::size_t c = 0; c < cones_.size(); ++c) {
       ConeStates& cs = cones_[c];
+      if (!changed_[c]) {
+        if (last_index_[c] != kNotKept) ++cs.weights[last_index_[c]];
+        continue;
+      }
+      changed_[c] = 0;
+      last_index_[c] = kNotKept;
       projected.clear();
       for (std::size_t v : cs.vars) projected.push_back(s[v]);
       // By a 64-bit hash of the cone's values, not the values: a collision
@@ -201,9 +223,11 @@ class Keeper {
       const std::uint64_t key = hash_of(projected);
       if (const auto it = index_[c].find(key); it != index_[c].end()) {
         ++cs.weights[it->second];
+        last_index_[c] = it->second;
         continue;
       }
       if (cs.states.size() >= max_) continue;
+      last_index_[c] = cs.states.size();
       index_[c].emplace(key, cs.states.size());
       cs.states.push_back(projected);
       cs.weights.push_back(1);
@@ -222,6 +246,11 @@ class Keeper {
   std::vector<std::unordered_map<std::uint64_t, std::size_t>> index_;
   std::unordered_set<std::uint64_t> seen_;
   std::vector<State> all_;
+  static constexpr std::size_t kNotKept = SIZE_MAX;
+  std::vector<std::vector<std::size_t>> cones_of_;  // by state variable: the cones that hold it
+  State last_;                                      // the last state past `seen_`
+  std::vector<std::size_t> last_index_;             // by cone: its entry for `last_`, or kNotKept
+  std::vector<char> changed_;                       // by cone: a variable changed since `last_`
   State initial_;
   std::vector<char> unchanged_;
 };

@@ -248,5 +248,9 @@ TEST(PlcCones, SampledConesAreTheProjectionsOfTheProductsStates) {
   const auto bounded = cemv::plc_check::sample(p, o);
   EXPECT_EQ(bounded.cones[0].states.size(), 5u);
   EXPECT_EQ(bounded.cones[1].states.size(), by_cones.cones[1].states.size());  // 2 distinct: under the bound
+  EXPECT_EQ(bounded.cones[1].weights, by_cones.cones[1].weights);
+  // A full cone's kept states still count every state of the product they
+  // stand for, also in the scans where none of the cone's variables changed.
+  for (std::size_t k = 0; k < 5; ++k) EXPECT_EQ(bounded.cones[0].weights[k], by_cones.cones[0].weights[k]) << k;
   EXPECT_EQ(bounded.unchanged, whole.unchanged);
 }
