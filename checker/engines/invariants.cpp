@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <optional>
 #include <random>
@@ -309,15 +310,32 @@ class CandidateMiner {
   }
 
   void bool_implications() {
+    // Each flag's values over the samples as bits: a clause over two flags
+    // is then a few words compared, not a pass over up to 4,096 samples per
+    // pair and polarity (most of the mining of a 128 x 128 program's layers).
+    const std::size_t words = (samples_.size() + 63) / 64;
+    std::vector<std::uint64_t> set(bools_.size() * words, 0);
+    for (std::size_t j = 0; j < bools_.size(); ++j)
+      for (std::size_t k = 0; k < samples_.size(); ++k)
+        if (iv(samples_[k], bools_[j]) != 0) set[j * words + k / 64] |= std::uint64_t{1} << (k % 64);
+    auto every = [&](std::size_t w) {
+      const std::size_t left = samples_.size() - 64 * w;
+      return left >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << left) - 1;
+    };
+    // The clause (x == pa) or (y == pb) on every sample.
+    auto holds = [&](std::size_t a, int pa, std::size_t b, int pb) {
+      for (std::size_t w = 0; w < words; ++w) {
+        const std::uint64_t x = set[a * words + w], y = set[b * words + w];
+        const std::uint64_t either = (pa ? x : ~x) | (pb ? y : ~y);
+        if ((~either & every(w)) != 0) return false;
+      }
+      return true;
+    };
     for (std::size_t a = 0; a < bools_.size() && !stop(); ++a)
       for (std::size_t b = a + 1; b < bools_.size(); ++b)
         for (int pa = 0; pa < 2 && related(bools_[a], bools_[b]); ++pa)
           for (int pb = 0; pb < 2; ++pb) {
-            // The clause (x == pa) or (y == pb) on every sample.
-            bool holds = std::all_of(samples_.begin(), samples_.end(), [&](const Sample& s) {
-              return iv(s, bools_[a]) == pa || iv(s, bools_[b]) == pb;
-            });
-            if (!holds) continue;
+            if (!holds(a, pa, b, pb)) continue;
             z3::expr la = pa ? var(bools_[a]) : !var(bools_[a]);
             z3::expr lb = pb ? var(bools_[b]) : !var(bools_[b]);
             add(la || lb);

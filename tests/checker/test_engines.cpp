@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <functional>
 #include <memory>
+#include <set>
+#include <string>
 
 #include "checker/check/recheck.hpp"
 #include "checker/engines/accelerated_bmc.hpp"
@@ -257,4 +259,41 @@ TEST(Solving, ReadableTermsKeepTheirOrderAndTheUnreadableAreLeftOut) {
   EXPECT_TRUE(z3::eq(read[1], !flag));
   EXPECT_TRUE(z3::eq(read[2], x <= 5));
   EXPECT_EQ(from_smtlib_readable(ts, {to_smtlib(x >= 0), to_smtlib(flag)}).size(), 2u);
+}
+
+// The miner's clauses over pairs of flags are exactly those that hold in
+// every sampled state: `e` is always `not a` (both clauses over them, the
+// one of two positive literals included: the last word of the samples'
+// bits is not padded with ones), `c` implies `a`, and `a` and `b` (a scan
+// apart) reach every combination, so no clause relates them.
+TEST(Mining, ClausesOverTwoFlagsAreThoseOfEverySample) {
+  z3::context ctx;
+  encoder::TransitionSystem ts(ctx);
+  const z3::expr in = ts.make_inputvar("in", ctx.bool_sort());
+  const z3::expr a = ts.make_statevar("a", ctx.bool_sort());
+  const z3::expr b = ts.make_statevar("b", ctx.bool_sort());
+  const z3::expr c = ts.make_statevar("c", ctx.bool_sort());
+  const z3::expr e = ts.make_statevar("e", ctx.bool_sort());
+  for (const z3::expr& v : {a, b, c}) ts.set_init(v, ctx.bool_val(false));
+  ts.set_init(e, ctx.bool_val(true));
+  ts.assign_next(a, in);
+  ts.assign_next(b, a);
+  ts.assign_next(c, in && a);
+  ts.assign_next(e, !in);
+  ts.check_complete();
+  const SafetyProblem p{&ts, ctx.bool_val(true), ctx.bool_val(true)};
+  for (const int cycles : {800, 61}) {  // 25,601 and 1,953 samples: neither a multiple of 64
+    MiningOptions o;
+    o.cycles_per_run = cycles;
+    std::set<std::string> clauses;
+    for (const z3::expr& m : mine_candidates(p, o))
+      if (m.is_app() && m.decl().decl_kind() == Z3_OP_OR && m.num_args() == 2) clauses.insert(m.to_string());
+    EXPECT_TRUE(clauses.count((a || e).to_string())) << cycles;
+    EXPECT_TRUE(clauses.count((!a || !e).to_string())) << cycles;
+    EXPECT_TRUE(clauses.count((a || !c).to_string())) << cycles;
+    for (const std::string& s : clauses) {
+      const bool ab = s.find(" a") != std::string::npos && s.find(" b") != std::string::npos;
+      EXPECT_FALSE(ab && s.find(" c") == std::string::npos && s.find(" e") == std::string::npos) << s;
+    }
+  }
 }
