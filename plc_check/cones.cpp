@@ -223,4 +223,19 @@ bool Supports::may_guard(std::size_t g, std::size_t x, std::size_t y) const {
   return none || same;
 }
 
+std::vector<z3::expr> conjuncts_of(const z3::expr& e) {
+  std::vector<z3::expr> out;
+  std::vector<z3::expr> todo{e};
+  while (!todo.empty()) {
+    const z3::expr t = todo.back();
+    todo.pop_back();
+    if (t.is_app() && t.decl().decl_kind() == Z3_OP_AND) {
+      for (unsigned i = t.num_args(); i-- > 0;) todo.push_back(t.arg(i));
+    } else {
+      out.push_back(t);
+    }
+  }
+  return out;
+}
+
 }  // namespace cemv::plc_check

@@ -36,6 +36,9 @@ class TermReads {
   std::unordered_set<unsigned> seen_;
 };
 
+// The conjuncts of `e`, in order (a conjunction's arguments, flattened).
+std::vector<z3::expr> conjuncts_of(const z3::expr& e);
+
 // For each term, the indices (into ts.statevars(), ascending) of the state
 // variables it reaches.
 std::vector<std::vector<std::size_t>> cones_of(const encoder::TransitionSystem& ts, const std::vector<z3::expr>& terms);

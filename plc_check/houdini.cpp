@@ -58,22 +58,6 @@ void drop_until_unsat(z3::solver& s, std::vector<Candidate>& cands, const checke
   }
 }
 
-// The conjuncts of `e`.
-std::vector<z3::expr> conjuncts(const z3::expr& e) {
-  std::vector<z3::expr> out;
-  std::vector<z3::expr> todo{e};
-  while (!todo.empty()) {
-    const z3::expr t = todo.back();
-    todo.pop_back();
-    if (t.is_app() && t.decl().decl_kind() == Z3_OP_AND) {
-      for (unsigned i = t.num_args(); i-- > 0;) todo.push_back(t.arg(i));
-    } else {
-      out.push_back(t);
-    }
-  }
-  return out;
-}
-
 }  // namespace
 
 std::vector<z3::expr> product_houdini(const checker::SafetyProblem& p, std::vector<z3::expr> candidates,
@@ -127,7 +111,7 @@ std::vector<z3::expr> product_houdini_by_layers(const checker::SafetyProblem& p,
   // Every fact in cycle 0 (the constraints and the assumption, then what the
   // layers keep), with the state variables it reads.
   std::vector<std::pair<z3::expr, std::vector<std::size_t>>> facts;
-  for (const auto& f : conjuncts(ts.constraint_formula() && p.assumption)) facts.push_back({u.at(f, 0), reads.of(f)});
+  for (const auto& f : conjuncts_of(ts.constraint_formula() && p.assumption)) facts.push_back({u.at(f, 0), reads.of(f)});
   std::vector<char> in(ts.statevars().size(), 0);
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     std::vector<Candidate> cands;
