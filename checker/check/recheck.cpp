@@ -113,6 +113,34 @@ std::vector<z3::expr> conjuncts_of(const z3::expr& e) {
 // unsat there is unsat under the whole premise; anything else asks the
 // chunk again under the whole premise. Each query is unsat, or the proof
 // fails: the name of the failed chunk, nullopt when none.
+// Whether `premise` and not `goal` is unsat, asked in a scope of `s`.
+bool unsat_under(z3::solver& s, const z3::expr& premise, const z3::expr& goal, const Limits* limits) {
+  z3::check_result cr = z3::unknown;
+  try {
+    s.push();
+    s.add(premise);
+    s.add(!goal);
+    cr = s.check();
+    s.pop();
+  } catch (const z3::exception&) {
+    if (limits) stop_if_interrupted(*limits);
+    throw;
+  }
+  if (cr == z3::unknown && limits) stop_if_interrupted(*limits);
+  return cr == z3::unsat;
+}
+
+// The premises of a large invariant's queries: its clauses, then the
+// conjuncts of the facts, each with the state variables it reads.
+std::vector<std::pair<z3::expr, std::set<std::size_t>>> premises_of(const SafetyProblem& p,
+                                                                     const std::vector<z3::expr>& clauses,
+                                                                     const StateReads& reads) {
+  std::vector<std::pair<z3::expr, std::set<std::size_t>>> premises;
+  for (const auto& c : clauses) premises.push_back({c, reads.of(c)});
+  for (const auto& f : conjuncts_of(p.ts->constraint_formula() && p.assumption)) premises.push_back({f, reads.of(f)});
+  return premises;
+}
+
 std::optional<std::string> step_by_chunks(const SafetyProblem& p, const std::vector<z3::expr>& clauses,
                                           z3::solver& s, const Limits* limits) {
   const auto& ts = *p.ts;
@@ -121,28 +149,12 @@ std::optional<std::string> step_by_chunks(const SafetyProblem& p, const std::vec
   const StateReads reads(ts);
   std::vector<std::set<std::size_t>> next_reads;
   for (const auto& v : ts.statevars()) next_reads.push_back(reads.of(v.next));
-  std::vector<std::pair<z3::expr, std::set<std::size_t>>> premises;
-  for (const auto& c : clauses) premises.push_back({c, reads.of(c)});
-  for (const auto& f : conjuncts_of(ts.constraint_formula() && p.assumption)) premises.push_back({f, reads.of(f)});
+  const auto premises = premises_of(p, clauses, reads);
   z3::expr_vector whole(ctx);
   for (const auto& [f, vars] : premises) whole.push_back(f);
   whole.push_back(ts.trans_formula());
   const z3::expr whole_premise = u.at(z3::mk_and(whole), 0);
-  auto unsat = [&](const z3::expr& premise, const z3::expr& goal) {
-    z3::check_result cr = z3::unknown;
-    try {
-      s.push();
-      s.add(premise);
-      s.add(!goal);
-      cr = s.check();
-      s.pop();
-    } catch (const z3::exception&) {
-      if (limits) stop_if_interrupted(*limits);
-      throw;
-    }
-    if (cr == z3::unknown && limits) stop_if_interrupted(*limits);
-    return cr == z3::unsat;
-  };
+  auto unsat = [&](const z3::expr& premise, const z3::expr& goal) { return unsat_under(s, premise, goal, limits); };
   std::vector<char> in(ts.statevars().size());
   for (std::size_t first = 0; first < clauses.size(); first += kChunkClauses) {
     const std::size_t last = std::min(clauses.size(), first + kChunkClauses);
@@ -167,6 +179,33 @@ std::optional<std::string> step_by_chunks(const SafetyProblem& p, const std::vec
   return std::nullopt;
 }
 
+// The step of a proof at k = 0 (S and the facts imply `good` in the same
+// cycle) for a large invariant, one conjunct of `good` at a time (an output
+// of a group), each first under the clauses and facts over the state
+// variables it reads, then, when that is not unsat, under the whole
+// premise. The name of the conjunct that fails, nullopt when none.
+std::optional<std::string> good_by_conjuncts(const SafetyProblem& p, const std::vector<z3::expr>& clauses,
+                                             z3::solver& s, const Limits* limits) {
+  const auto& ts = *p.ts;
+  encoder::Unroller u(ts);
+  const StateReads reads(ts);
+  const auto premises = premises_of(p, clauses, reads);
+  z3::expr_vector whole(ts.ctx());
+  for (const auto& [f, vars] : premises) whole.push_back(f);
+  const z3::expr whole_premise = u.at(z3::mk_and(whole), 0);
+  const std::vector<z3::expr> goods = conjuncts_of(p.good);
+  for (std::size_t i = 0; i < goods.size(); ++i) {
+    const std::set<std::size_t> in = reads.of(goods[i]);
+    z3::expr_vector cut(ts.ctx());
+    for (const auto& [f, vars] : premises)
+      if (std::includes(in.begin(), in.end(), vars.begin(), vars.end())) cut.push_back(f);
+    const z3::expr goal = u.at(goods[i], 0);
+    if (unsat_under(s, u.at(z3::mk_and(cut), 0), goal, limits) || unsat_under(s, whole_premise, goal, limits)) continue;
+    return "step (conjunct " + std::to_string(i + 1) + " of " + std::to_string(goods.size()) + " of the property)";
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 void recheck_proof(const SafetyProblem& problem, const ProverResult& result, const Limits* limits) {
@@ -186,8 +225,10 @@ void recheck_proof(const SafetyProblem& problem, const ProverResult& result, con
   if (limits) watchdog.emplace(problem.ts->ctx(), *limits);
   const bool chunked = result.invariant.clauses.size() >= kChunkedClauses;
   for (const auto& o : obs) {
-    if (chunked && o.name == "invariant-step") {
-      const auto failed = step_by_chunks(problem, conjuncts_of(invariant_term(*problem.ts, result.invariant)), s, limits);
+    if (chunked && (o.name == "invariant-step" || (o.name == "step" && result.k == 0))) {
+      const std::vector<z3::expr> clauses = conjuncts_of(invariant_term(*problem.ts, result.invariant));
+      const auto failed = o.name == "step" ? good_by_conjuncts(problem, clauses, s, limits)
+                                           : step_by_chunks(problem, clauses, s, limits);
       if (failed)
         throw InternalError(result.method_text() + " proof (k=" + std::to_string(result.k) + ") fails its re-check: " +
                             *failed + " is not unsat\ninvariant:\n" + result.invariant.text());

@@ -310,4 +310,27 @@ TEST(Recheck, RejectsALargeInvariantWithOneClauseNotInductive) {
   }
 }
 
+// At k = 0 a large invariant's outputs are re-checked one conjunct of the
+// property at a time: `not b` reads b alone, and its clause also reads d,
+// so it follows only under the whole premise; `x0` does not follow.
+TEST(Recheck, AcceptsALargeInvariantsPropertyConjunctByConjunct) {
+  ShiftRegister s;
+  const z3::expr x3 = s.ts.statevars()[3].var, b = s.ts.statevars()[ShiftRegister::kStages + 1].var;
+  const z3::expr a = s.ts.statevars()[ShiftRegister::kStages].var;
+  const SafetyProblem p{&s.ts, (!a || x3) && !b && !x3, s.ctx.bool_val(true)};
+  EXPECT_NO_THROW(check::recheck_proof(p, ShiftRegister::proof()));
+}
+
+TEST(Recheck, RejectsALargeInvariantsPropertyNamingTheConjunct) {
+  ShiftRegister s;
+  const z3::expr x0 = s.ts.statevars()[0].var, b = s.ts.statevars()[ShiftRegister::kStages + 1].var;
+  const SafetyProblem p{&s.ts, !b && x0 && !x0.ctx().bool_val(false), s.ctx.bool_val(true)};
+  try {
+    check::recheck_proof(p, ShiftRegister::proof());
+    ADD_FAILURE() << "the re-check passed";
+  } catch (const InternalError& e) {
+    EXPECT_NE(std::string(e.what()).find("step (conjunct 2 of 3 of the property)"), std::string::npos) << e.what();
+  }
+}
+
 }  // namespace
