@@ -302,12 +302,19 @@ std::optional<int> good_from(const checker::SafetyProblem& p, const std::vector<
   return std::nullopt;
 }
 
+// The sampled states of the cone of `vars`, if the runs kept them.
+const ConeStates* states_of(const Samples& s, const std::vector<std::size_t>& vars) {
+  for (const auto& c : s.cones)
+    if (c.vars == vars) return c.states.empty() ? nullptr : &c;
+  return nullptr;
+}
+
 }  // namespace
 
 std::vector<z3::expr> correspondence_candidates(const checker::SafetyProblem& p, const Samples& samples,
                                                 const std::vector<std::size_t>& cone, const Supports* supports) {
-  for (const auto& c : samples.cones)
-    if (c.vars == cone) return c.states.empty() ? std::vector<z3::expr>{} : Templates(*p.ts, c.states, cone, supports, &c.weights).make();
+  if (const ConeStates* c = states_of(samples, cone))
+    return Templates(*p.ts, c->states, cone, supports, &c->weights).make();
   if (samples.states.empty()) return {};
   return Templates(*p.ts, samples.states, cone, supports).make();
 }
@@ -328,13 +335,6 @@ checker::MiningOptions mining_options(const SamplingOptions& o, const checker::L
   mo.limits = &limits;
   mo.bool_implications = clauses;
   return mo;
-}
-
-// The sampled states of the cone of `vars`, if the runs kept them.
-const ConeStates* states_of(const Samples& s, const std::vector<std::size_t>& vars) {
-  for (const auto& c : s.cones)
-    if (c.vars == vars) return c.states.empty() ? nullptr : &c;
-  return nullptr;
 }
 
 // A cone's variables by Z3 AST id: their columns in its sampled states.
@@ -437,16 +437,12 @@ Correspondence prove_by_correspondence(const checker::SafetyProblem& p, const Sa
       // A group: Houdini one layer at a time over the layers' candidates,
       // with the checker's clauses over pairs of Booleans from the start
       // (they strengthen what is kept; a group rarely proves without them).
-      const auto candidates = layered_candidates(p, samples, cones, o, limits, meter);
-      if (!candidates) {
-        r.work = meter.spent();
-        r.seconds = checker::seconds_since(start);
-        r = unknown(r, UnknownReason::BoundReached);  // an output differs in a run: each is decided alone
-        return out;
+      // No candidates: an output differs in a run, and each is decided alone.
+      if (const auto candidates = layered_candidates(p, samples, cones, o, limits, meter)) {
+        out.invariant = product_houdini_by_layers(p, *candidates, limits, meter);
+        checker::Watchdog watchdog(ctx, limits);
+        k = good_from(p, out.invariant, limits, meter);
       }
-      out.invariant = product_houdini_by_layers(p, *candidates, limits, meter);
-      checker::Watchdog watchdog(ctx, limits);
-      k = good_from(p, out.invariant, limits, meter);
     }
     // One output: two rounds, cheaper first: without the checker's clauses
     // over pairs of Booleans (most of the candidates and of Houdini's

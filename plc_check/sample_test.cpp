@@ -10,9 +10,10 @@ constexpr Z3_decl_kind kColumn = Z3_OP_UNINTERPRETED;
 
 bool evaluated(Z3_decl_kind k) {
   switch (k) {
-    case Z3_OP_TRUE: case Z3_OP_FALSE: case Z3_OP_NOT: case Z3_OP_AND: case Z3_OP_OR: case Z3_OP_IMPLIES:
-    case Z3_OP_XOR: case Z3_OP_ITE: case Z3_OP_EQ: case Z3_OP_DISTINCT: case Z3_OP_IFF: case Z3_OP_LE: case Z3_OP_GE: case Z3_OP_LT:
-    case Z3_OP_GT: case Z3_OP_ADD: case Z3_OP_SUB: case Z3_OP_UMINUS: case Z3_OP_MUL:
+    case Z3_OP_TRUE: case Z3_OP_FALSE: case Z3_OP_NOT: case Z3_OP_AND: case Z3_OP_OR:
+    case Z3_OP_IMPLIES: case Z3_OP_XOR: case Z3_OP_ITE:
+    case Z3_OP_EQ: case Z3_OP_DISTINCT: case Z3_OP_IFF: case Z3_OP_LE: case Z3_OP_GE: case Z3_OP_LT: case Z3_OP_GT:
+    case Z3_OP_ADD: case Z3_OP_SUB: case Z3_OP_UMINUS: case Z3_OP_MUL:
       return true;
     default:
       return false;

@@ -105,14 +105,6 @@ std::vector<z3::expr> conjuncts_of(const z3::expr& e) {
   return out;
 }
 
-// The induction step of invariant `clauses` (S and facts and trans implies
-// S'), one chunk of consecutive clauses at a time, each first asked under
-// a premise cut to what can decide it: the transitions of the variables the
-// chunk reads, and the clauses and facts over those and what their
-// next-state functions read. A premise cut only weakens what is assumed, so
-// unsat there is unsat under the whole premise; anything else asks the
-// chunk again under the whole premise. Each query is unsat, or the proof
-// fails: the name of the failed chunk, nullopt when none.
 // Whether `premise` and not `goal` is unsat, asked in a scope of `s`.
 bool unsat_under(z3::solver& s, const z3::expr& premise, const z3::expr& goal, const Limits* limits) {
   z3::check_result cr = z3::unknown;
@@ -141,6 +133,14 @@ std::vector<std::pair<z3::expr, std::set<std::size_t>>> premises_of(const Safety
   return premises;
 }
 
+// The induction step of invariant `clauses` (S and facts and trans implies
+// S'), one chunk of consecutive clauses at a time, each first asked under
+// a premise cut to what can decide it: the transitions of the variables the
+// chunk reads, and the clauses and facts over those and what their
+// next-state functions read. A premise cut only weakens what is assumed, so
+// unsat there is unsat under the whole premise; anything else asks the
+// chunk again under the whole premise. Each query is unsat, or the proof
+// fails: the name of the failed chunk, nullopt when none.
 std::optional<std::string> step_by_chunks(const SafetyProblem& p, const std::vector<z3::expr>& clauses,
                                           z3::solver& s, const Limits* limits) {
   const auto& ts = *p.ts;
@@ -224,9 +224,11 @@ void recheck_proof(const SafetyProblem& problem, const ProverResult& result, con
   std::optional<Watchdog> watchdog;
   if (limits) watchdog.emplace(problem.ts->ctx(), *limits);
   const bool chunked = result.invariant.clauses.size() >= kChunkedClauses;
+  // A large invariant's clauses, read once for the obligations asked in parts.
+  const std::vector<z3::expr> clauses =
+      chunked ? conjuncts_of(invariant_term(*problem.ts, result.invariant)) : std::vector<z3::expr>{};
   for (const auto& o : obs) {
     if (chunked && (o.name == "invariant-step" || (o.name == "step" && result.k == 0))) {
-      const std::vector<z3::expr> clauses = conjuncts_of(invariant_term(*problem.ts, result.invariant));
       const auto failed = o.name == "step" ? good_by_conjuncts(problem, clauses, s, limits)
                                            : step_by_chunks(problem, clauses, s, limits);
       if (failed)
