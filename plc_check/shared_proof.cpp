@@ -272,6 +272,22 @@ std::vector<Inputs> reset_pulses(const model::Matrix& m, const model::InputTable
   return {t.inputs};
 }
 
+// An effect's output tag follows its trip only while its process value is
+// healthy (E.8, E.9: TRUE gives a DTT tag TRUE and an ETT tag FALSE when the
+// effect is not active); at rest a BPCS tag is FALSE, so a pass-through
+// ETT tag is TRUE and never rises. The process value an effect's reset tag
+// `Effect[x][y]` needs held TRUE through the trip's run, if any.
+Inputs healthy_source(const model::Matrix& m, const model::InputTable& table, const model::Effect& e) {
+  if (!e.reset_tag) return {};
+  const auto ref = model::parse_internal_ref(*e.reset_tag);
+  if (!ref || ref->kind != model::InternalRef::Kind::EffectTag) return {};
+  const model::Effect* x = m.find_effect(ref->id);
+  if (!x || !x->process_data || !x->process_data->pass_through || !x->process_data->tag) return {};
+  const auto i = table.find(*x->process_data->tag);
+  if (!i) return {};
+  return {{"input." + table.tags()[*i].name, checker::Value{.i = 1}}};
+}
+
 // For each effect, an acceptance test's run: its causes tripped together,
 // held through their longest delay, the output delay and the override's
 // longest time; its reset pulsed, tripped and released.
@@ -288,6 +304,7 @@ std::vector<SamplingOptions::Trip> trips_of(const model::Matrix& m) {
     const std::uint32_t override_ms = e.override_time ? e.override_time->max_s * 1000 : 0;
     trip.hold = scans(std::max(t.delay_ms + e.output_delay_ms, override_ms), scan) + 1;
     trip.pulses = reset_pulses(m, table, e, trip.pulse);
+    trip.inputs.merge(healthy_source(m, table, e));  // a cause's own tripping value first
     out.push_back(std::move(trip));
   }
   return out;

@@ -106,4 +106,21 @@ TEST(PlcSampling, TripsTripEachEffectsCausesAndPulseItsReset) {
   EXPECT_EQ(low.hold, 52);
 }
 
+// An effect reset by another effect's output tag (`Effect[x][y]`, E.1) sees
+// a rising edge only when that tag follows its effect: with pass-through,
+// while the process value is TRUE (E.8, E.9). The trip's run holds it so.
+TEST(PlcSampling, AResetByAPassThroughTagHoldsItsProcessValueHealthy) {
+  auto m = cemv::formats::load_valid_matrix(std::string(CEMV_SOURCE_DIR) + "/examples/tank-overfill/matrix.json", "test");
+  ASSERT_EQ(m.effects.size(), 3u);
+  EXPECT_EQ(cemv::plc_check::at_rest(m).trips[2].inputs.count("input.XV_101_BPCS"), 0u);
+  m.effects[2].reset_tag = "Effect[1][1]";  // XV_101, pass-through of XV_101_BPCS
+  const SamplingOptions o = cemv::plc_check::at_rest(m);
+  const auto& low = o.trips[2];
+  ASSERT_EQ(low.inputs.count("input.XV_101_BPCS"), 1u);
+  EXPECT_EQ(low.inputs.at("input.XV_101_BPCS").i, 1);
+  EXPECT_EQ(low.inputs.at("input.LT_102").f, 6.0f) << "the trip's own inputs as before";
+  m.effects[0].process_data.reset();
+  EXPECT_EQ(cemv::plc_check::at_rest(m).trips[2].inputs.count("input.XV_101_BPCS"), 0u) << "no process value";
+}
+
 }  // namespace
