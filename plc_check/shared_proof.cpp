@@ -253,9 +253,17 @@ std::vector<Inputs> reset_pulses(const model::Matrix& m, const model::InputTable
   const std::uint32_t scan = std::max<std::uint32_t>(m.cycle_ms, 1);
   length = 1;
   if (!e.reset_tag) {
+    // The commands count only with secure write enabled (M.3).
     const std::string id = std::to_string(e.id);
-    return {{{"cmd.override_effect[" + id + "]", checker::Value{.i = 1}}},
-            {{"cmd.reset_effect[" + id + "]", checker::Value{.i = 1}}}};
+    Inputs override_cmd{{"cmd.override_effect[" + id + "]", checker::Value{.i = 1}}};
+    Inputs reset_cmd{{"cmd.reset_effect[" + id + "]", checker::Value{.i = 1}}};
+    if (m.secure_write)
+      if (const auto i = table.find(m.secure_write->enable_tag)) {
+        const std::string enable = "input." + table.tags()[*i].name;
+        override_cmd.emplace(enable, checker::Value{.i = 1});
+        reset_cmd.emplace(enable, checker::Value{.i = 1});
+      }
+    return {override_cmd, reset_cmd};
   }
   Tripping t;
   const auto ref = model::parse_internal_ref(*e.reset_tag);

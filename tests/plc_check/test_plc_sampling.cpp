@@ -106,6 +106,26 @@ TEST(PlcSampling, TripsTripEachEffectsCausesAndPulseItsReset) {
   EXPECT_EQ(low.hold, 52);
 }
 
+// Without a reset tag an effect is reset and overridden by the operator's
+// commands, which count only while secure write is enabled (M.3): the
+// pulses set its enable tag with the command.
+TEST(PlcSampling, CommandPulsesEnableSecureWrite) {
+  auto m = cemv::formats::load_valid_matrix(std::string(CEMV_SOURCE_DIR) + "/examples/tank-overfill/matrix.json", "test");
+  const auto plain = cemv::plc_check::at_rest(m).trips[1].pulses;  // P_101_RUN: no reset tag
+  ASSERT_EQ(plain.size(), 2u);
+  EXPECT_EQ(plain[0].size(), 1u) << "no secure write: the command alone";
+  m.secure_write = cemv::model::SecureWrite{"EN_SWC"};
+  const auto pulses = cemv::plc_check::at_rest(m).trips[1].pulses;
+  ASSERT_EQ(pulses.size(), 2u);
+  for (const auto& p : pulses) {
+    ASSERT_EQ(p.count("input.EN_SWC"), 1u);
+    EXPECT_EQ(p.at("input.EN_SWC").i, 1);
+    EXPECT_EQ(p.size(), 2u);
+  }
+  EXPECT_EQ(pulses[0].count("cmd.override_effect[2]"), 1u);
+  EXPECT_EQ(pulses[1].count("cmd.reset_effect[2]"), 1u);
+}
+
 // An effect reset by another effect's output tag (`Effect[x][y]`, E.1) sees
 // a rising edge only when that tag follows its effect: with pass-through,
 // while the process value is TRUE (E.8, E.9). The trip's run holds it so.
