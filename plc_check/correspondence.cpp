@@ -375,7 +375,17 @@ std::optional<std::vector<std::vector<z3::expr>>> layered_candidates(const check
   const Samples states = sample(p, lo);
   if (states.violation) return std::nullopt;
   checker::MiningOptions mo = mining_options(o, limits, true);
-  mo.related = [&](std::size_t x, std::size_t y) { return supports.related(x, y); };
+  // Two integers only when they depend on the same inputs (a program's
+  // timer and the matrix's delay counter of one element): a bound or a
+  // difference between two elements' counts (an override's scans against
+  // a cause's delay, both mostly zero in the runs) holds in the samples by
+  // chance, no correspondence needs one, and Houdini spent most of the
+  // largest layers' rounds dropping them. Booleans when the inputs of one
+  // include the other's: an effect's latch and the causes it reads.
+  mo.related = [&](std::size_t x, std::size_t y) {
+    const bool ints = ts.statevars()[x].var.is_int() && ts.statevars()[y].var.is_int();
+    return supports.related(x, y, ints);
+  };
   mo.may_guard = [&](std::size_t g, std::size_t x, std::size_t y) { return supports.may_guard(g, x, y); };
   const auto mined = checker::mine_candidates_within(p, mo, lo.cones);
   TermReads reads(ts);
