@@ -15,7 +15,6 @@
 #include "plc_check/cones.hpp"
 #include "plc_check/houdini.hpp"
 #include "plc_check/product.hpp"
-#include "plc_check/sample_test.hpp"
 
 namespace cemv::plc_check {
 
@@ -337,20 +336,6 @@ checker::MiningOptions mining_options(const SamplingOptions& o, const checker::L
   return mo;
 }
 
-// A cone's variables by Z3 AST id: their columns in its sampled states.
-std::unordered_map<unsigned, std::size_t> columns_of(const ConeStates& cone, const encoder::TransitionSystem& ts) {
-  std::unordered_map<unsigned, std::size_t> column;
-  for (std::size_t k = 0; k < cone.vars.size(); ++k) column.emplace(ts.statevars()[cone.vars[k]].var.id(), k);
-  return column;
-}
-
-// Whether `c` holds in every state of `cone` (sample_test.hpp); true when
-// it cannot be evaluated there (Houdini decides it).
-bool holds_in_every(const z3::expr& c, const ConeStates& cone, const std::unordered_map<unsigned, std::size_t>& column) {
-  const std::optional<SampleTest> test = SampleTest::compile(c, column);
-  return !test || std::all_of(cone.states.begin(), cone.states.end(), [&](const Sample& s) { return test->holds(s); });
-}
-
 // A group's candidates by layers (cones.hpp, Layer): each layer's templates
 // and mined relations over its variables, sampled on them alone, those that
 // read its top and nothing beyond its `near` variables (a candidate over
@@ -387,7 +372,16 @@ std::optional<std::vector<std::vector<z3::expr>>> layered_candidates(const check
     return supports.related(x, y, ints);
   };
   mo.may_guard = [&](std::size_t g, std::size_t x, std::size_t y) { return supports.may_guard(g, x, y); };
-  const auto mined = checker::mine_candidates_within(p, mo, lo.cones);
+  // Mined from the layers' own samples, the acceptance tests' runs among
+  // them: the miner's own runs never trip an effect's causes together nor
+  // start its override, so a clause over a flag they leave at rest held in
+  // all of them, and Houdini dropped such clauses by the thousand.
+  std::vector<const std::vector<Sample>*> layer_states;
+  for (const auto& l : layers) {
+    const ConeStates* c = states_of(states, l.vars);
+    layer_states.push_back(c ? &c->states : nullptr);
+  }
+  const auto mined = checker::mine_candidates_from(p, mo, lo.cones, layer_states);
   TermReads reads(ts);
   std::vector<std::vector<z3::expr>> out(layers.size());
   for (const auto& l : ts.lemmas()) {
@@ -409,12 +403,8 @@ std::optional<std::vector<std::vector<z3::expr>>> layered_candidates(const check
         return std::binary_search(layers[i].near.begin(), layers[i].near.end(), v);
       });
     };
-    // The mined candidates from the checker's own runs, tested on these
-    // runs' states too (the acceptance tests' among them).
-    const ConeStates* sampled = states_of(states, layers[i].vars);
-    const auto column = sampled ? columns_of(*sampled, ts) : std::unordered_map<unsigned, std::size_t>{};
     for (const auto& c : mined[i])
-      if (own(c) && (!sampled || holds_in_every(c, *sampled, column))) out[i].push_back(c);
+      if (own(c)) out[i].push_back(c);
     for (const auto& c : correspondence_candidates(p, states, layers[i].vars, &supports))
       if (own(c)) out[i].push_back(c);
   }

@@ -496,6 +496,17 @@ std::vector<std::vector<z3::expr>> mine_candidates_within(const SafetyProblem& p
   return out;
 }
 
+std::vector<std::vector<z3::expr>> mine_candidates_from(const SafetyProblem& problem, const MiningOptions& options,
+                                                        const std::vector<std::vector<std::size_t>>& subsets,
+                                                        const std::vector<const std::vector<Sample>*>& states) {
+  std::vector<std::vector<z3::expr>> out(subsets.size());
+  const Constants k = constants_of(problem);
+  for (std::size_t i = 0; i < subsets.size(); ++i)
+    if (states[i] && !states[i]->empty())
+      out[i] = CandidateMiner(problem, *states[i], options, k, &subsets[i], true).mine();
+  return out;
+}
+
 std::vector<z3::expr> houdini(const SafetyProblem& problem, std::vector<z3::expr> candidates,
                               const Limits& limits, WorkMeter& meter) {
   const auto& ts = *problem.ts;

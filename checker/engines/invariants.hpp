@@ -18,6 +18,7 @@
 #include <z3++.h>
 
 #include "checker/prover.hpp"
+#include "encoder/evaluate.hpp"
 
 namespace cemv::checker {
 
@@ -56,6 +57,13 @@ std::vector<z3::expr> mine_candidates(const SafetyProblem& problem, const Mining
 // size of their union).
 std::vector<std::vector<z3::expr>> mine_candidates_within(const SafetyProblem& problem, const MiningOptions& options,
                                                           const std::vector<std::vector<std::size_t>>& subsets);
+
+// The same from states sampled elsewhere: `states[i]` holds distinct states
+// of subsets[i]'s variables, each in the subset's order (an empty list
+// gives no candidates for that subset).
+std::vector<std::vector<z3::expr>> mine_candidates_from(
+    const SafetyProblem& problem, const MiningOptions& options, const std::vector<std::vector<std::size_t>>& subsets,
+    const std::vector<const std::vector<std::vector<encoder::Evaluator::Value>>*>& states);
 
 // The largest subset of `candidates` that holds initially and is inductive
 // (under the constraints and the assumption of the cycle). Candidates are

@@ -266,6 +266,58 @@ TEST(Solving, ReadableTermsKeepTheirOrderAndTheUnreadableAreLeftOut) {
 // one of two positive literals included: the last word of the samples'
 // bits is not padded with ones), `c` implies `a`, and `a` and `b` (a scan
 // apart) reach every combination, so no clause relates them.
+// Mined from states sampled elsewhere (plc-check's layers): every candidate
+// holds in each given state, and a relation that one of them breaks is not
+// formed, though every other state has it.
+TEST(Mining, FromGivenStatesEachCandidateHoldsInEveryOne) {
+  z3::context ctx;
+  encoder::TransitionSystem ts(ctx);
+  const z3::expr in = ts.make_inputvar("in", ctx.bool_sort());
+  const z3::expr a = ts.make_statevar("a", ctx.bool_sort());
+  const z3::expr b = ts.make_statevar("b", ctx.bool_sort());
+  const z3::expr x = ts.make_statevar("x", ctx.int_sort());
+  const z3::expr y = ts.make_statevar("y", ctx.int_sort());
+  ts.set_init(a, ctx.bool_val(false));
+  ts.set_init(b, ctx.bool_val(false));
+  ts.set_init(x, ctx.int_val(0));
+  ts.set_init(y, ctx.int_val(0));
+  ts.assign_next(a, in);
+  ts.assign_next(b, a);
+  ts.assign_next(x, z3::ite(in, x + 1, ctx.int_val(0)));
+  ts.assign_next(y, z3::ite(in, y + 1, ctx.int_val(0)));
+  ts.check_complete();
+  const SafetyProblem p{&ts, ctx.bool_val(true), ctx.bool_val(true)};
+  using V = encoder::Evaluator::Value;
+  auto state = [](bool av, bool bv, std::int64_t xv, std::int64_t yv) {
+    return std::vector<V>{V{.i = av}, V{.i = bv}, V{.i = xv}, V{.i = yv}};
+  };
+  // a and b in the subset's order, then x and y; in the last state a holds
+  // without b and x runs one ahead of y.
+  const std::vector<std::vector<V>> states = {state(false, false, 0, 0), state(true, true, 1, 1),
+                                              state(true, true, 2, 2), state(true, false, 3, 2)};
+  const std::vector<std::vector<std::size_t>> subsets = {{0, 1, 2, 3}, {0, 1}};
+  const std::vector<std::vector<V>> none;
+  const auto mined = mine_candidates_from(p, MiningOptions{}, subsets, {&states, &none});
+  ASSERT_EQ(mined.size(), 2u);
+  EXPECT_TRUE(mined[1].empty()) << "no states, no candidates";
+  ASSERT_FALSE(mined[0].empty());
+  const z3::expr vars[] = {a, b, x, y};
+  for (const auto& c : mined[0])
+    for (const auto& s : states) {
+      z3::expr_vector from(ctx), to(ctx);
+      for (std::size_t k = 0; k < 4; ++k) {
+        from.push_back(vars[k]);
+        to.push_back(k < 2 ? ctx.bool_val(s[k].i != 0) : ctx.int_val(s[k].i));
+      }
+      EXPECT_TRUE(z3::expr(c).substitute(from, to).simplify().is_true()) << c.to_string();
+    }
+  std::set<std::string> formed;
+  for (const auto& c : mined[0]) formed.insert(c.to_string());
+  EXPECT_FALSE(formed.count((!a || b).to_string())) << "broken by the last state alone";
+  EXPECT_FALSE(formed.count((x == y + 0).to_string())) << "broken by the last state alone";
+  EXPECT_TRUE(formed.count((a || !b).to_string()));
+}
+
 TEST(Mining, ClausesOverTwoFlagsAreThoseOfEverySample) {
   z3::context ctx;
   encoder::TransitionSystem ts(ctx);

@@ -58,12 +58,6 @@ if(TARGET cemv_plc_check AND TARGET cemv_plc)
     MATCH "tank_t100.st: error: operator commands the matrix accepts without a program variable"
     COMMAND $<TARGET_FILE:cemv> plc-check ${PLC_TANK}/matrix.json ${PLC_TANK}/plc/tank_t100.st)
 endif()
-# A mined candidate tested on sampled states, against Z3's evaluation.
-if(TARGET cemv_plc_check AND TARGET cemv_plc)
-  add_executable(test_plc_sample_test ${CMAKE_CURRENT_LIST_DIR}/test_plc_sample_test.cpp)
-  target_link_libraries(test_plc_sample_test PRIVATE cemv_plc_check GTest::gtest_main)
-  gtest_discover_tests(test_plc_sample_test DISCOVERY_TIMEOUT 60)
-endif()
 # The runs that trip an effect's causes together.
 if(TARGET cemv_plc_check AND TARGET cemv_plc)
   add_executable(test_plc_sampling ${CMAKE_CURRENT_LIST_DIR}/test_plc_sampling.cpp)
