@@ -150,10 +150,17 @@ std::optional<std::string> step_by_chunks(const SafetyProblem& p, const std::vec
   std::vector<std::set<std::size_t>> next_reads;
   for (const auto& v : ts.statevars()) next_reads.push_back(reads.of(v.next));
   const auto premises = premises_of(p, clauses, reads);
-  z3::expr_vector whole(ctx);
-  for (const auto& [f, vars] : premises) whole.push_back(f);
-  whole.push_back(ts.trans_formula());
-  const z3::expr whole_premise = u.at(z3::mk_and(whole), 0);
+  // The whole premise is built only for a chunk its cut does not decide.
+  std::optional<z3::expr> whole_premise;
+  auto whole = [&]() -> const z3::expr& {
+    if (!whole_premise) {
+      z3::expr_vector all(ctx);
+      for (const auto& [f, vars] : premises) all.push_back(f);
+      all.push_back(ts.trans_formula());
+      whole_premise = u.at(z3::mk_and(all), 0);
+    }
+    return *whole_premise;
+  };
   auto unsat = [&](const z3::expr& premise, const z3::expr& goal) { return unsat_under(s, premise, goal, limits); };
   std::vector<char> in(ts.statevars().size());
   for (std::size_t first = 0; first < clauses.size(); first += kChunkClauses) {
@@ -173,7 +180,7 @@ std::optional<std::string> step_by_chunks(const SafetyProblem& p, const std::vec
     for (const auto& [f, vars] : premises)
       if (std::all_of(vars.begin(), vars.end(), [&](std::size_t v) { return in[v] != 0; })) local.push_back(f);
     const z3::expr goal = u.at(z3::mk_and(chunk), 1);
-    if (unsat(u.at(z3::mk_and(local), 0), goal) || unsat(whole_premise, goal)) continue;
+    if (unsat(u.at(z3::mk_and(local), 0), goal) || unsat(whole(), goal)) continue;
     return "invariant-step (clauses " + std::to_string(first + 1) + " to " + std::to_string(last) + ")";
   }
   return std::nullopt;
@@ -190,9 +197,15 @@ std::optional<std::string> good_by_conjuncts(const SafetyProblem& p, const std::
   encoder::Unroller u(ts);
   const StateReads reads(ts);
   const auto premises = premises_of(p, clauses, reads);
-  z3::expr_vector whole(ts.ctx());
-  for (const auto& [f, vars] : premises) whole.push_back(f);
-  const z3::expr whole_premise = u.at(z3::mk_and(whole), 0);
+  std::optional<z3::expr> whole_premise;
+  auto whole = [&]() -> const z3::expr& {
+    if (!whole_premise) {
+      z3::expr_vector all(ts.ctx());
+      for (const auto& [f, vars] : premises) all.push_back(f);
+      whole_premise = u.at(z3::mk_and(all), 0);
+    }
+    return *whole_premise;
+  };
   const std::vector<z3::expr> goods = conjuncts_of(p.good);
   for (std::size_t i = 0; i < goods.size(); ++i) {
     const std::set<std::size_t> in = reads.of(goods[i]);
@@ -200,7 +213,7 @@ std::optional<std::string> good_by_conjuncts(const SafetyProblem& p, const std::
     for (const auto& [f, vars] : premises)
       if (std::includes(in.begin(), in.end(), vars.begin(), vars.end())) cut.push_back(f);
     const z3::expr goal = u.at(goods[i], 0);
-    if (unsat_under(s, u.at(z3::mk_and(cut), 0), goal, limits) || unsat_under(s, whole_premise, goal, limits)) continue;
+    if (unsat_under(s, u.at(z3::mk_and(cut), 0), goal, limits) || unsat_under(s, whole(), goal, limits)) continue;
     return "step (conjunct " + std::to_string(i + 1) + " of " + std::to_string(goods.size()) + " of the property)";
   }
   return std::nullopt;
