@@ -124,14 +124,40 @@ bool unsat_under(z3::solver& s, const z3::expr& premise, const z3::expr& goal, c
 
 // The premises of a large invariant's queries: its clauses, then the
 // conjuncts of the facts, each with the state variables it reads.
-std::vector<std::pair<z3::expr, std::set<std::size_t>>> premises_of(const SafetyProblem& p,
-                                                                     const std::vector<z3::expr>& clauses,
-                                                                     const StateReads& reads) {
-  std::vector<std::pair<z3::expr, std::set<std::size_t>>> premises;
+using Premises = std::vector<std::pair<z3::expr, std::set<std::size_t>>>;
+Premises premises_of(const SafetyProblem& p, const std::vector<z3::expr>& clauses, const StateReads& reads) {
+  Premises premises;
   for (const auto& c : clauses) premises.push_back({c, reads.of(c)});
   for (const auto& f : conjuncts_of(p.ts->constraint_formula() && p.assumption)) premises.push_back({f, reads.of(f)});
   return premises;
 }
+
+// Every premise (and `also`, the transition) in cycle 0, unrolled on first
+// use: the cut premises decide nearly every query, and unrolling tens of
+// thousands of clauses for none of them cost a large re-check much of its
+// time.
+class WholePremise {
+ public:
+  WholePremise(z3::context& ctx, const Premises& premises, encoder::Unroller& u,
+               std::optional<z3::expr> also = std::nullopt)
+      : ctx_(ctx), premises_(premises), u_(u), also_(std::move(also)) {}
+  const z3::expr& get() {
+    if (!whole_) {
+      z3::expr_vector all(ctx_);
+      for (const auto& [f, vars] : premises_) all.push_back(f);
+      if (also_) all.push_back(*also_);
+      whole_ = u_.at(z3::mk_and(all), 0);
+    }
+    return *whole_;
+  }
+
+ private:
+  z3::context& ctx_;
+  const Premises& premises_;
+  encoder::Unroller& u_;
+  std::optional<z3::expr> also_;
+  std::optional<z3::expr> whole_;
+};
 
 // The induction step of invariant `clauses` (S and facts and trans implies
 // S'), one chunk of consecutive clauses at a time, each first asked under
@@ -150,17 +176,7 @@ std::optional<std::string> step_by_chunks(const SafetyProblem& p, const std::vec
   std::vector<std::set<std::size_t>> next_reads;
   for (const auto& v : ts.statevars()) next_reads.push_back(reads.of(v.next));
   const auto premises = premises_of(p, clauses, reads);
-  // The whole premise is built only for a chunk its cut does not decide.
-  std::optional<z3::expr> whole_premise;
-  auto whole = [&]() -> const z3::expr& {
-    if (!whole_premise) {
-      z3::expr_vector all(ctx);
-      for (const auto& [f, vars] : premises) all.push_back(f);
-      all.push_back(ts.trans_formula());
-      whole_premise = u.at(z3::mk_and(all), 0);
-    }
-    return *whole_premise;
-  };
+  WholePremise whole(ctx, premises, u, ts.trans_formula());
   auto unsat = [&](const z3::expr& premise, const z3::expr& goal) { return unsat_under(s, premise, goal, limits); };
   std::vector<char> in(ts.statevars().size());
   for (std::size_t first = 0; first < clauses.size(); first += kChunkClauses) {
@@ -180,7 +196,7 @@ std::optional<std::string> step_by_chunks(const SafetyProblem& p, const std::vec
     for (const auto& [f, vars] : premises)
       if (std::all_of(vars.begin(), vars.end(), [&](std::size_t v) { return in[v] != 0; })) local.push_back(f);
     const z3::expr goal = u.at(z3::mk_and(chunk), 1);
-    if (unsat(u.at(z3::mk_and(local), 0), goal) || unsat(whole(), goal)) continue;
+    if (unsat(u.at(z3::mk_and(local), 0), goal) || unsat(whole.get(), goal)) continue;
     return "invariant-step (clauses " + std::to_string(first + 1) + " to " + std::to_string(last) + ")";
   }
   return std::nullopt;
@@ -197,15 +213,7 @@ std::optional<std::string> good_by_conjuncts(const SafetyProblem& p, const std::
   encoder::Unroller u(ts);
   const StateReads reads(ts);
   const auto premises = premises_of(p, clauses, reads);
-  std::optional<z3::expr> whole_premise;
-  auto whole = [&]() -> const z3::expr& {
-    if (!whole_premise) {
-      z3::expr_vector all(ts.ctx());
-      for (const auto& [f, vars] : premises) all.push_back(f);
-      whole_premise = u.at(z3::mk_and(all), 0);
-    }
-    return *whole_premise;
-  };
+  WholePremise whole(ts.ctx(), premises, u);
   const std::vector<z3::expr> goods = conjuncts_of(p.good);
   for (std::size_t i = 0; i < goods.size(); ++i) {
     const std::set<std::size_t> in = reads.of(goods[i]);
@@ -213,7 +221,7 @@ std::optional<std::string> good_by_conjuncts(const SafetyProblem& p, const std::
     for (const auto& [f, vars] : premises)
       if (std::includes(in.begin(), in.end(), vars.begin(), vars.end())) cut.push_back(f);
     const z3::expr goal = u.at(goods[i], 0);
-    if (unsat_under(s, u.at(z3::mk_and(cut), 0), goal, limits) || unsat_under(s, whole(), goal, limits)) continue;
+    if (unsat_under(s, u.at(z3::mk_and(cut), 0), goal, limits) || unsat_under(s, whole.get(), goal, limits)) continue;
     return "step (conjunct " + std::to_string(i + 1) + " of " + std::to_string(goods.size()) + " of the property)";
   }
   return std::nullopt;

@@ -457,6 +457,17 @@ std::vector<z3::expr> mine_candidates(const SafetyProblem& problem, const Mining
   return CandidateMiner(problem, states, options, k).mine();
 }
 
+std::vector<std::vector<z3::expr>> mine_candidates_from(const SafetyProblem& problem, const MiningOptions& options,
+                                                        const std::vector<std::vector<std::size_t>>& subsets,
+                                                        const std::vector<const std::vector<Sample>*>& states) {
+  std::vector<std::vector<z3::expr>> out(subsets.size());
+  const Constants k = constants_of(problem);
+  for (std::size_t i = 0; i < subsets.size(); ++i)
+    if (states[i] && !states[i]->empty())
+      out[i] = CandidateMiner(problem, *states[i], options, k, &subsets[i], true).mine();
+  return out;
+}
+
 std::vector<std::vector<z3::expr>> mine_candidates_within(const SafetyProblem& problem, const MiningOptions& options,
                                                           const std::vector<std::vector<std::size_t>>& subsets) {
   std::vector<std::vector<z3::expr>> out(subsets.size());
@@ -490,21 +501,9 @@ std::vector<std::vector<z3::expr>> mine_candidates_within(const SafetyProblem& p
     return out;
   }
   seen.clear();
-  const Constants k = constants_of(problem);
-  for (std::size_t i = 0; i < subsets.size(); ++i)
-    out[i] = CandidateMiner(problem, states[i], options, k, &subsets[i], true).mine();
-  return out;
-}
-
-std::vector<std::vector<z3::expr>> mine_candidates_from(const SafetyProblem& problem, const MiningOptions& options,
-                                                        const std::vector<std::vector<std::size_t>>& subsets,
-                                                        const std::vector<const std::vector<Sample>*>& states) {
-  std::vector<std::vector<z3::expr>> out(subsets.size());
-  const Constants k = constants_of(problem);
-  for (std::size_t i = 0; i < subsets.size(); ++i)
-    if (states[i] && !states[i]->empty())
-      out[i] = CandidateMiner(problem, *states[i], options, k, &subsets[i], true).mine();
-  return out;
+  std::vector<const std::vector<Sample>*> each;
+  for (const auto& s : states) each.push_back(&s);
+  return mine_candidates_from(problem, options, subsets, each);
 }
 
 std::vector<z3::expr> houdini(const SafetyProblem& problem, std::vector<z3::expr> candidates,

@@ -261,11 +261,6 @@ TEST(Solving, ReadableTermsKeepTheirOrderAndTheUnreadableAreLeftOut) {
   EXPECT_EQ(from_smtlib_readable(ts, {to_smtlib(x >= 0), to_smtlib(flag)}).size(), 2u);
 }
 
-// The miner's clauses over pairs of flags are exactly those that hold in
-// every sampled state: `e` is always `not a` (both clauses over them, the
-// one of two positive literals included: the last word of the samples'
-// bits is not padded with ones), `c` implies `a`, and `a` and `b` (a scan
-// apart) reach every combination, so no clause relates them.
 // Mined from states sampled elsewhere (plc-check's layers): every candidate
 // holds in each given state, and a relation that one of them breaks is not
 // formed, though every other state has it.
@@ -318,6 +313,11 @@ TEST(Mining, FromGivenStatesEachCandidateHoldsInEveryOne) {
   EXPECT_TRUE(formed.count((a || !b).to_string()));
 }
 
+// The miner's clauses over pairs of flags are exactly those that hold in
+// every sampled state: `e` is always `not a` (both clauses over them, the
+// one of two positive literals included: the last word of the samples'
+// bits is not padded with ones), `c` implies `a`, and `a` and `b` (a scan
+// apart) reach every combination, so no clause relates them.
 TEST(Mining, ClausesOverTwoFlagsAreThoseOfEverySample) {
   z3::context ctx;
   encoder::TransitionSystem ts(ctx);

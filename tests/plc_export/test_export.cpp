@@ -43,15 +43,8 @@ plc_check::VarType var_type(const plc::VarType& t) {
   }
 }
 
-// Reads the program back both ways and completes its map against it.
-plc::Program read_back(const model::Matrix& m, const Export& e) {
-  const std::string st = plc::print_program(e.program);
-  plc::Program p = plc::parse_st(st, "generated.st");
-  // Printing what was read gives the same statements: the text is the tree.
-  EXPECT_EQ(plc::print_program(p), plc::print_program(plc::without_positions(e.program)));
-  const plc::Program x = plc::parse_plcopen(plc::write_plcopen(e.program), "generated.xml");
-  EXPECT_EQ(plc::print_program(x), plc::print_program(p));
-  EXPECT_EQ(x.scan_time_ms, std::optional<std::int64_t>(m.cycle_ms));
+// The generated program's interface, as plc-check reads it.
+plc_check::ProgramInterface interface_of(const plc::Program& p) {
   plc_check::ProgramInterface iface;
   iface.file = "generated.st";
   iface.pou = p.pous.front().name;
@@ -61,7 +54,19 @@ plc::Program read_back(const model::Matrix& m, const Export& e) {
                                                           : plc_check::VarKind::Local;
     iface.variables.push_back({v.name, kind, var_type(v.type)});
   }
-  const auto resolved = plc_check::resolve_map(m, iface, &e.map, "generated.map.json");
+  return iface;
+}
+
+// Reads the program back both ways and completes its map against it.
+plc::Program read_back(const model::Matrix& m, const Export& e) {
+  const std::string st = plc::print_program(e.program);
+  plc::Program p = plc::parse_st(st, "generated.st");
+  // Printing what was read gives the same statements: the text is the tree.
+  EXPECT_EQ(plc::print_program(p), plc::print_program(plc::without_positions(e.program)));
+  const plc::Program x = plc::parse_plcopen(plc::write_plcopen(e.program), "generated.xml");
+  EXPECT_EQ(plc::print_program(x), plc::print_program(p));
+  EXPECT_EQ(x.scan_time_ms, std::optional<std::int64_t>(m.cycle_ms));
+  const auto resolved = plc_check::resolve_map(m, interface_of(p), &e.map, "generated.map.json");
   EXPECT_EQ(formats::plc_map_json(resolved.map), formats::plc_map_json(e.map))
       << "the map the generator writes is complete: plc-check finds nothing to add";
   // the map survives its own format
@@ -201,16 +206,7 @@ class FortyRandomPrograms : public ::testing::TestWithParam<int> {};
 void expect_proved_by_correspondence(const model::Matrix& m, const std::string& what) {
   const Export e = export_program(m);
   const plc::Program p = plc::parse_st(plc::print_program(e.program), "generated.st");
-  plc_check::ProgramInterface iface;
-  iface.file = "generated.st";
-  iface.pou = p.pous.front().name;
-  for (const auto& v : p.pous.front().variables)
-    iface.variables.push_back({v.name,
-                               v.section == plc::Section::Input    ? plc_check::VarKind::Input
-                               : v.section == plc::Section::Output ? plc_check::VarKind::Output
-                                                                   : plc_check::VarKind::Local,
-                               var_type(v.type)});
-  const auto map = plc_check::resolve_map(m, iface, &e.map, "generated.map.json");
+  const auto map = plc_check::resolve_map(m, interface_of(p), &e.map, "generated.map.json");
   const auto questions = plc_check::questions(m, map);
   ASSERT_FALSE(questions.empty());
   for (const auto& q : questions) {
@@ -239,16 +235,7 @@ TEST(ExportSt, GroupsDecideAsEachOutputAlone) {
     const model::Matrix m = testsupport::random_matrix(seed, o);
     const Export e = export_program(m);
     const plc::Program p = read_back(m, e);
-    plc_check::ProgramInterface iface;
-    iface.file = "generated.st";
-    iface.pou = p.pous.front().name;
-    for (const auto& v : p.pous.front().variables)
-      iface.variables.push_back({v.name,
-                                 v.section == plc::Section::Input    ? plc_check::VarKind::Input
-                                 : v.section == plc::Section::Output ? plc_check::VarKind::Output
-                                                                     : plc_check::VarKind::Local,
-                                 var_type(v.type)});
-    const auto map = plc_check::resolve_map(m, iface, &e.map, "generated.map.json");
+    const auto map = plc_check::resolve_map(m, interface_of(p), &e.map, "generated.map.json");
     plc_check::CheckOptions alone;
     alone.by_groups = false;
     for (const auto& q : plc_check::questions(m, map)) {
