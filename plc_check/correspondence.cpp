@@ -35,10 +35,16 @@ class Templates {
   Templates(const encoder::TransitionSystem& ts, const std::vector<Sample>& samples, const std::vector<std::size_t>& cone,
             const Supports* supports, const std::vector<std::size_t>* weights = nullptr)
       : ts_(ts), samples_(samples), supports_(supports), weights_(weights) {
-    col_.resize(ts.statevars().size());
-    for (std::size_t i = 0; i < col_.size(); ++i) col_[i] = i;
-    if (weights)
-      for (std::size_t k = 0; k < cone.size(); ++k) col_[cone[k]] = k;
+    // Each variable's values over the samples in one array: every template
+    // below reads a few variables across all the samples.
+    slot_.assign(ts.statevars().size(), SIZE_MAX);
+    columns_.resize(cone.size());
+    for (std::size_t k = 0; k < cone.size(); ++k) {
+      slot_[cone[k]] = k;
+      const std::size_t col = weights ? k : cone[k];
+      columns_[k].reserve(samples.size());
+      for (const auto& sample : samples) columns_[k].push_back(sample[col].i);
+    }
     for (std::size_t i : cone) {
       const auto& v = ts.statevars()[i];
       const bool program = v.name.rfind(kProgramPrefix, 0) == 0;
@@ -60,22 +66,34 @@ class Templates {
     // pass over up to 4,096 sampled states per pair and guard.
     words_ = (samples_.size() + 63) / 64;
     equal_at_.assign(bool_pairs_.size() * words_, 0);
-    for (std::size_t i = 0; i < bool_pairs_.size(); ++i)
+    for (std::size_t i = 0; i < bool_pairs_.size(); ++i) {
+      const std::int64_t* p = column(bool_pairs_[i].first);
+      const std::int64_t* q = column(bool_pairs_[i].second);
       for (std::size_t k = 0; k < samples_.size(); ++k)
-        if (at(samples_[k], bool_pairs_[i].first) == at(samples_[k], bool_pairs_[i].second))
-          equal_at_[i * words_ + k / 64] |= std::uint64_t{1} << (k % 64);
+        if (p[k] == q[k]) equal_at_[i * words_ + k / 64] |= std::uint64_t{1} << (k % 64);
+    }
     guards_.push_back({SIZE_MAX, 1});
     for (std::size_t b : bools_)
       for (int pol = 1; pol >= 0; --pol)
-        if (std::any_of(samples_.begin(), samples_.end(), [&](const Sample& s) { return at(s, b) == pol; }))
+        if (std::find(column(b), column(b) + samples_.size(), pol) != column(b) + samples_.size())
           guards_.push_back({b, pol});
+    for (const auto* side : {&program_ints_, &matrix_ints_})
+      for (std::size_t v : *side) {
+        const std::int64_t* c = column(v);
+        if (std::all_of(c, c + samples_.size(), [&](std::int64_t x) { return x == c[0]; })) global_.push_back(v);
+      }
+    std::sort(global_.begin(), global_.end());
   }
 
   std::vector<z3::expr> make() {
+    std::vector<std::uint32_t> rows;  // the samples where the guard holds
     for (const auto& g : guards_) {
-      linear(g);
-      constants(g);
-      equalities(g);
+      rows.clear();
+      for (std::size_t k = 0; k < samples_.size(); ++k)
+        if (holds(g, k)) rows.push_back(static_cast<std::uint32_t>(k));
+      linear(g, rows);
+      constants(g, rows);
+      equalities(g, rows);
     }
     block_clauses();
     return std::move(out_);
@@ -91,9 +109,9 @@ class Templates {
     if (y != SIZE_MAX && !supports_->related(x, y, true)) return false;
     return g.var == SIZE_MAX || supports_->may_guard(g.var, x, y);
   }
-  std::int64_t at(const Sample& s, std::size_t v) const { return s[col_[v]].i; }
+  const std::int64_t* column(std::size_t v) const { return columns_[slot_[v]].data(); }
   bool program(std::size_t v) const { return ts_.statevars()[v].name.rfind(kProgramPrefix, 0) == 0; }
-  bool holds(const Guard& g, const Sample& s) const { return g.var == SIZE_MAX || at(s, g.var) == g.pol; }
+  bool holds(const Guard& g, std::size_t k) const { return g.var == SIZE_MAX || column(g.var)[k] == g.pol; }
   z3::expr var(std::size_t v) const { return ts_.statevars()[v].var; }
   z3::expr num(std::int64_t c) const { return ts_.ctx().int_val(c); }
   void add(const Guard& g, const z3::expr& e) {
@@ -103,28 +121,32 @@ class Templates {
 
   // x = a * y + b, x the program's, y the matrix's: a timer's elapsed time
   // and the matrix's delay counter (a = the scan time), a count and a count.
-  void linear(const Guard& g) {
+  // The line through the first sample and the first whose y differs from
+  // it, if it passes through every sample under the guard.
+  void linear(const Guard& g, const std::vector<std::uint32_t>& rows) {
+    if (rows.empty()) return;
     for (const auto& [x, y] : int_pairs_) {
       if (g.var != SIZE_MAX && unguarded_.count({x, y})) continue;  // holds without the guard
       if (!worth(g, x, y)) continue;
-      const Sample* first = nullptr;
+      const std::int64_t* X = column(x);
+      const std::int64_t* Y = column(y);
+      const std::uint32_t first = rows.front();
       std::optional<std::int64_t> a, b;
       bool fits = true;
-      for (const auto& s : samples_) {
-        if (!holds(g, s)) continue;
-        if (!first) {
-          first = &s;
-        } else if (!a && at(s, y) != at(*first, y)) {
-          const std::int64_t dx = at(s, x) - at(*first, x), dy = at(s, y) - at(*first, y);
+      for (std::uint32_t k : rows)
+        if (Y[k] != Y[first]) {
+          const std::int64_t dx = X[k] - X[first], dy = Y[k] - Y[first];
           if (dx == 0 || dx % dy != 0) fits = false;
-          a = dx / (dy == 0 ? 1 : dy);
-          b = at(*first, x) - *a * at(*first, y);
+          a = dx / dy;
+          b = X[first] - *a * Y[first];
+          break;
         }
-        if (!fits) break;
-      }
       if (!fits || !a) continue;
-      for (const auto& s : samples_)
-        if (holds(g, s) && at(s, x) != *a * at(s, y) + *b) fits = false;
+      for (std::uint32_t k : rows)
+        if (X[k] != *a * Y[k] + *b) {
+          fits = false;
+          break;
+        }
       if (!fits) continue;
       add(g, var(x) == num(*a) * var(y) + num(*b));
       if (g.var == SIZE_MAX) unguarded_.insert({x, y});
@@ -140,17 +162,13 @@ class Templates {
   // many flags agree by chance, and each such candidate costs Houdini (on a
   // generated 4 x 4 program's widest output, 3,400 candidates and 7 s
   // against 700 and 2.6 s).
-  void equalities(const Guard& g) {
+  void equalities(const Guard& g, const std::vector<std::uint32_t>& rows) {
     std::size_t n = 0, total = 0;
-    for (std::size_t k = 0; k < samples_.size(); ++k) {
-      const std::size_t w = weights_ ? (*weights_)[k] : 1;
-      total += w;
-      if (holds(g, samples_[k])) n += w;
-    }
+    for (std::size_t k = 0; k < samples_.size(); ++k) total += weights_ ? (*weights_)[k] : 1;
+    for (std::uint32_t k : rows) n += weights_ ? (*weights_)[k] : 1;
     if (4 * n < total) return;
     std::vector<std::uint64_t> where(words_, 0);
-    for (std::size_t k = 0; k < samples_.size(); ++k)
-      if (holds(g, samples_[k])) where[k / 64] |= std::uint64_t{1} << (k % 64);
+    for (std::uint32_t k : rows) where[k / 64] |= std::uint64_t{1} << (k % 64);
     for (std::size_t i = 0; i < bool_pairs_.size(); ++i) {
       const std::size_t p = bool_pairs_[i].first, q = bool_pairs_[i].second;
       if (p == g.var || q == g.var || !worth(g, p, q)) continue;
@@ -171,20 +189,14 @@ class Templates {
 
   // v = c wherever the guard holds (and not everywhere: the checker's
   // miner states those).
-  void constants(const Guard& g) {
-    if (g.var == SIZE_MAX) return;
+  void constants(const Guard& g, const std::vector<std::uint32_t>& rows) {
+    if (g.var == SIZE_MAX || rows.empty()) return;
     for (const auto* side : {&program_ints_, &matrix_ints_})
       for (std::size_t v : *side) {
-        if (!worth(g, v, SIZE_MAX)) continue;
-        std::optional<std::int64_t> c;
-        bool constant = true, global = true;
-        for (const auto& s : samples_) {
-          if (at(s, v) != at(samples_.front(), v)) global = false;
-          if (!holds(g, s)) continue;
-          if (c && *c != at(s, v)) constant = false;
-          c = at(s, v);
-        }
-        if (constant && c && !global) add(g, var(v) == num(*c));
+        if (!worth(g, v, SIZE_MAX) || std::binary_search(global_.begin(), global_.end(), v)) continue;
+        const std::int64_t* c = column(v);
+        if (std::all_of(rows.begin(), rows.end(), [&](std::uint32_t k) { return c[k] == c[rows.front()]; }))
+          add(g, var(v) == num(c[rows.front()]));
       }
   }
 
@@ -207,9 +219,10 @@ class Templates {
             for (int pols = 0; pols < 8; ++pols) {
               const std::size_t v[3] = {flags[i], flags[j], flags[l]};
               const int pol[3] = {pols & 1, (pols >> 1) & 1, (pols >> 2) & 1};
-              const bool always = std::all_of(samples_.begin(), samples_.end(), [&](const Sample& s) {
-                return at(s, v[0]) == pol[0] || at(s, v[1]) == pol[1] || at(s, v[2]) == pol[2];
-              });
+              const std::int64_t* c[3] = {column(v[0]), column(v[1]), column(v[2])};
+              bool always = true;
+              for (std::size_t k = 0; k < samples_.size() && always; ++k)
+                always = c[0][k] == pol[0] || c[1][k] == pol[1] || c[2][k] == pol[2];
               if (!always) continue;
               z3::expr_vector lits(ts_.ctx());
               for (int t = 0; t < 3; ++t) lits.push_back(pol[t] ? var(v[t]) : !var(v[t]));
@@ -222,7 +235,9 @@ class Templates {
   const std::vector<Sample>& samples_;
   const Supports* supports_;
   const std::vector<std::size_t>* weights_;
-  std::vector<std::size_t> col_;  // a state variable's place in a sample
+  std::vector<std::size_t> slot_;                   // by state variable: its column (SIZE_MAX: not in the cone)
+  std::vector<std::vector<std::int64_t>> columns_;  // by cone variable: its value in each sample
+  std::vector<std::size_t> global_;                 // the integers of one value in every sample, ascending
   std::vector<std::size_t> program_ints_, matrix_ints_, bools_;
   std::vector<std::pair<std::size_t, std::size_t>> int_pairs_;   // (program's, matrix's), worth a relation
   std::vector<std::pair<std::size_t, std::size_t>> bool_pairs_;  // (program's, matrix's), worth a relation
