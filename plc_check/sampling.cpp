@@ -151,6 +151,19 @@ std::vector<std::vector<encoder::Evaluator::Value>> distinct(std::vector<std::ve
 
 using State = std::vector<encoder::Evaluator::Value>;
 
+std::uint64_t mix(std::uint64_t x) {
+  x += 0x9e3779b97f4a7c15ULL;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+
+// One variable's share of a cone's hash: a cone's is the sum of its
+// variables', kept up to date as they change.
+std::uint64_t share_of(std::size_t v, const encoder::Evaluator::Value& x) {
+  return mix(mix(mix(v) + static_cast<std::uint64_t>(x.i)) + std::bit_cast<std::uint32_t>(x.f));
+}
+
 std::uint64_t hash_of(const State& s) {
   std::uint64_t h = 0x9e3779b97f4a7c15ULL;
   for (const auto& v : s) {
@@ -181,6 +194,7 @@ class Keeper {
     index_.resize(cones_.size());
     last_index_.assign(cones_.size(), kNotKept);
     changed_.assign(cones_.size(), 1);
+    hash_.assign(cones_.size(), 0);
   }
 
   void add(const State& s) {
@@ -202,10 +216,19 @@ class Keeper {
     // A cone none of whose variables changed since the last state kept here
     // has the same values as then: the same entry, found without a hash (a
     // scan of a trip changes a few cones of hundreds).
-    if (!last_.empty())
+    if (last_.empty()) {
+      for (std::size_t c = 0; c < cones_.size(); ++c)
+        for (std::size_t v : cones_[c].vars) hash_[c] += share_of(v, s[v]);
+    } else {
       for (std::size_t v = 0; v < s.size() && v < cones_of_.size(); ++v)
-        if (s[v].i != last_[v].i || std::bit_cast<std::uint32_t>(s[v].f) != std::bit_cast<std::uint32_t>(last_[v].f))
-          for (std::size_t c : cones_of_[v]) changed_[c] = 1;
+        if (s[v].i != last_[v].i || std::bit_cast<std::uint32_t>(s[v].f) != std::bit_cast<std::uint32_t>(last_[v].f)) {
+          const std::uint64_t change = share_of(v, s[v]) - share_of(v, last_[v]);
+          for (std::size_t c : cones_of_[v]) {
+            changed_[c] = 1;
+            hash_[c] += change;
+          }
+        }
+    }
     last_ = s;
     State projected;
     for (std::size_t c = 0; c < cones_.size(); ++c) {
@@ -216,11 +239,9 @@ class Keeper {
       }
       changed_[c] = 0;
       last_index_[c] = kNotKept;
-      projected.clear();
-      for (std::size_t v : cs.vars) projected.push_back(s[v]);
       // By a 64-bit hash of the cone's values, not the values: a collision
       // only leaves a state out of the filter (more candidates for Houdini).
-      const std::uint64_t key = hash_of(projected);
+      const std::uint64_t key = hash_[c];
       if (const auto it = index_[c].find(key); it != index_[c].end()) {
         ++cs.weights[it->second];
         last_index_[c] = it->second;
@@ -229,6 +250,8 @@ class Keeper {
       if (cs.states.size() >= max_) continue;
       last_index_[c] = cs.states.size();
       index_[c].emplace(key, cs.states.size());
+      projected.clear();
+      for (std::size_t v : cs.vars) projected.push_back(s[v]);
       cs.states.push_back(projected);
       cs.weights.push_back(1);
     }
@@ -251,6 +274,7 @@ class Keeper {
   State last_;                                      // the last state past `seen_`
   std::vector<std::size_t> last_index_;             // by cone: its entry for `last_`, or kNotKept
   std::vector<char> changed_;                       // by cone: a variable changed since `last_`
+  std::vector<std::uint64_t> hash_;                 // by cone: the hash of its values in `last_`
   State initial_;
   std::vector<char> unchanged_;
 };
