@@ -10,6 +10,7 @@
 #include "checker/engines/invariants.hpp"
 #include "encoder/unroller.hpp"
 #include "plc_check/cones.hpp"
+#include "plc_check/premise.hpp"
 
 namespace cemv::plc_check {
 
@@ -125,7 +126,11 @@ std::vector<z3::expr> product_houdini_by_layers(const checker::SafetyProblem& p,
   // Every fact in cycle 0 (the constraints and the assumption, then what the
   // layers keep), with the state variables it reads.
   std::vector<std::pair<z3::expr, std::vector<std::size_t>>> facts;
-  for (const auto& f : conjuncts_of(ts.constraint_formula() && p.assumption)) facts.push_back({u.at(f, 0), reads.of(f)});
+  std::vector<FactShape> shapes;
+  for (const auto& f : conjuncts_of(ts.constraint_formula() && p.assumption)) {
+    facts.push_back({u.at(f, 0), reads.of(f)});
+    shapes.push_back(shape_of(facts.back().first));
+  }
   std::vector<char> in(ts.statevars().size(), 0);
   for (std::size_t i = 0; i < candidates.size(); ++i) {
     std::vector<Candidate> cands;
@@ -156,10 +161,12 @@ std::vector<z3::expr> product_houdini_by_layers(const checker::SafetyProblem& p,
       s.add(u.at(z3::mk_and(init), 0));
       drop_until_unsat(s, cands, limits, meter);
     }
+    std::vector<std::size_t> premise;
+    for (std::size_t f = 0; f < facts.size(); ++f)
+      if (std::all_of(facts[f].second.begin(), facts[f].second.end(), [&](std::size_t v) { return in[v] != 0; }))
+        premise.push_back(f);
     z3::expr_vector assumed(ctx);
-    for (const auto& f : facts)
-      if (std::all_of(f.second.begin(), f.second.end(), [&](std::size_t v) { return in[v] != 0; }))
-        assumed.push_back(f.first);
+    for (std::size_t f : without_repeats(shapes, premise)) assumed.push_back(facts[f].first);
     z3::solver s = consecution_solver(ctx);
     s.add(u.at(z3::mk_and(trans), 0));
     s.add(assumed);
@@ -173,6 +180,7 @@ std::vector<z3::expr> product_houdini_by_layers(const checker::SafetyProblem& p,
     for (const auto& c : cands) {
       kept.push_back(c.term);
       facts.push_back({u.at(c.term, 0), reads.of(c.term)});
+      shapes.push_back(shape_of(facts.back().first));
     }
   }
   return kept;

@@ -27,7 +27,8 @@ std::vector<z3::expr> product_houdini(const checker::SafetyProblem& p, std::vect
 // candidates checked on the transitions of the state variables they read,
 // assuming the facts (constraints, assumption, what earlier layers kept:
 // invariants of the product) over those and what their next-state functions
-// read; a candidate an earlier layer kept or dropped is not asked again.
+// read, less the clauses those facts' equalities repeat (premise.hpp); a
+// candidate an earlier layer kept or dropped is not asked again.
 // Each kept set is inductive given the earlier ones, so their union is
 // inductive on the product; each solver call is the size of one layer and
 // its frontier. Returns the union, in the layers' order.
