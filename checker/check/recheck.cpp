@@ -227,6 +227,18 @@ std::optional<std::string> good_by_conjuncts(const SafetyProblem& p, const std::
   return std::nullopt;
 }
 
+// Every variable a Boolean or an integer (a product of plc_check's, reduced:
+// analog values as ordered integers): the chunks' queries are linear integer
+// arithmetic, which Z3's QF_LIA solver answers in about three quarters of
+// its default solver's time (the generated 32 x 32 program's chunked
+// induction step, 4.3 s against 3.2 s).
+bool linear_integer(const encoder::TransitionSystem& ts) {
+  auto simple = [](const auto& vars) {
+    return std::all_of(vars.begin(), vars.end(), [](const auto& v) { return v.var.is_bool() || v.var.is_int(); });
+  };
+  return simple(ts.statevars()) && simple(ts.inputvars());
+}
+
 }  // namespace
 
 void recheck_proof(const SafetyProblem& problem, const ProverResult& result, const Limits* limits) {
@@ -250,8 +262,9 @@ void recheck_proof(const SafetyProblem& problem, const ProverResult& result, con
       chunked ? conjuncts_of(invariant_term(*problem.ts, result.invariant)) : std::vector<z3::expr>{};
   for (const auto& o : obs) {
     if (chunked && (o.name == "invariant-step" || (o.name == "step" && result.k == 0))) {
-      const auto failed = o.name == "step" ? good_by_conjuncts(problem, clauses, s, limits)
-                                           : step_by_chunks(problem, clauses, s, limits);
+      z3::solver chunks = linear_integer(*problem.ts) ? z3::solver(problem.ts->ctx(), "QF_LIA") : s;
+      const auto failed = o.name == "step" ? good_by_conjuncts(problem, clauses, chunks, limits)
+                                           : step_by_chunks(problem, clauses, chunks, limits);
       if (failed)
         throw InternalError(result.method_text() + " proof (k=" + std::to_string(result.k) + ") fails its re-check: " +
                             *failed + " is not unsat\ninvariant:\n" + result.invariant.text());
