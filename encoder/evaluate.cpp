@@ -32,7 +32,17 @@ Evaluator::Evaluator(const Encoding& enc) : enc_(enc) {
   slots_.resize(program_.size());
   for (std::size_t i = 0; i < program_.size(); ++i)
     if (program_[i].op == kConst) slots_[i] = program_[i].constant;
+  flatten();
   reset();
+}
+
+void Evaluator::flatten() {
+  for (std::size_t i = 0; i < program_.size(); ++i) {
+    const Instr& ins = program_[i];
+    if (ins.op == kVar || ins.op == kConst) continue;
+    ops_.push_back(Op{ins.op, static_cast<int>(i), static_cast<int>(op_args_.size()), static_cast<int>(ins.args.size())});
+    op_args_.insert(op_args_.end(), ins.args.begin(), ins.args.end());
+  }
 }
 
 int Evaluator::compile(const z3::expr& e) {
@@ -83,23 +93,19 @@ void Evaluator::reset() {
 
 void Evaluator::run() {
   Value* s = slots_.data();
-  for (std::size_t i = 0; i < program_.size(); ++i) {
-    const Instr& ins = program_[i];
-    Value& r = s[i];
-    const auto& a = ins.args;
-    switch (ins.op) {
-      case kVar:
-      case kConst:
-        break;
+  for (const Op& o : ops_) {
+    Value& r = s[o.slot];
+    const int* a = op_args_.data() + o.first;
+    switch (o.op) {
       case Z3_OP_AND: {
         std::int64_t v = 1;
-        for (int x : a) v &= s[x].i;
+        for (int j = 0; j < o.count; ++j) v &= s[a[j]].i;
         r.i = v;
         break;
       }
       case Z3_OP_OR: {
         std::int64_t v = 0;
-        for (int x : a) v |= s[x].i;
+        for (int j = 0; j < o.count; ++j) v |= s[a[j]].i;
         r.i = v;
         break;
       }
@@ -117,13 +123,13 @@ void Evaluator::run() {
       }
       case Z3_OP_ADD: {
         std::int64_t v = 0;
-        for (int x : a) v += s[x].i;
+        for (int j = 0; j < o.count; ++j) v += s[a[j]].i;
         r.i = v;
         break;
       }
       case Z3_OP_SUB: {
         std::int64_t v = s[a[0]].i;
-        for (std::size_t j = 1; j < a.size(); ++j) v -= s[a[j]].i;
+        for (int j = 1; j < o.count; ++j) v -= s[a[j]].i;
         r.i = v;
         break;
       }

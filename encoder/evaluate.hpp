@@ -52,9 +52,20 @@ class Evaluator {
   };
   int compile(const z3::expr& e);
   void run();
+  // The operations of program_ (not its variables and constants) in one
+  // array, their arguments in another: what run() walks every cycle.
+  struct Op {
+    int op = 0;
+    int slot = 0;
+    int first = 0;  // into op_args_
+    int count = 0;
+  };
+  void flatten();
 
   const Encoding& enc_;
   std::vector<Instr> program_;
+  std::vector<Op> ops_;
+  std::vector<int> op_args_;
   std::vector<Value> slots_;
   std::vector<int> state_slot_, input_slot_, next_slot_, init_slot_, term_slot_;
   std::vector<int> observable_slot_;
