@@ -151,6 +151,7 @@ std::vector<std::vector<encoder::Evaluator::Value>> distinct(std::vector<std::ve
 
 using State = std::vector<encoder::Evaluator::Value>;
 
+// SplitMix64's finaliser.
 std::uint64_t mix(std::uint64_t x) {
   x += 0x9e3779b97f4a7c15ULL;
   x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
@@ -166,14 +167,9 @@ std::uint64_t share_of(std::size_t v, const encoder::Evaluator::Value& x) {
 
 std::uint64_t hash_of(const State& s) {
   std::uint64_t h = 0x9e3779b97f4a7c15ULL;
-  for (const auto& v : s) {
-    for (std::uint64_t x : {static_cast<std::uint64_t>(v.i), std::uint64_t{std::bit_cast<std::uint32_t>(v.f)}}) {
-      x += h + 0x9e3779b97f4a7c15ULL;
-      x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-      x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-      h = x ^ (x >> 31);
-    }
-  }
+  for (const auto& v : s)
+    for (std::uint64_t x : {static_cast<std::uint64_t>(v.i), std::uint64_t{std::bit_cast<std::uint32_t>(v.f)}})
+      h = mix(x + h);
   return h;
 }
 
