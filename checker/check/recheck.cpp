@@ -159,64 +159,6 @@ class WholePremise {
   std::optional<z3::expr> whole_;
 };
 
-// The cut premises of a large invariant's parts, asked of one solver: each
-// fact and each transition asserted once, in cycle 0, behind a literal of
-// its own, and each query assuming the literals of its cut and of its goal.
-// A fresh scope per part read its thousands of facts again and forgot what
-// the solver had learnt from them; a fact not assumed constrains nothing.
-class CutQueries {
- public:
-  CutQueries(z3::solver& s, const encoder::TransitionSystem& ts, const Premises& premises, encoder::Unroller& u,
-             const Limits* limits)
-      : s_(s), ts_(ts), premises_(premises), u_(u), limits_(limits) {}
-
-  // Whether the facts `facts` (indices into the premises), the transitions
-  // of the state variables `stepped` and not `goal` are unsat.
-  bool unsat(const std::vector<std::size_t>& facts, const std::vector<std::size_t>& stepped, const z3::expr& goal) {
-    z3::context& ctx = ts_.ctx();
-    z3::expr_vector assumed(ctx);
-    for (std::size_t f : facts) assumed.push_back(literal(fact_literals_, f, "recheck.fact.", [&] {
-      return u_.at(premises_[f].first, 0);
-    }));
-    for (std::size_t v : stepped) assumed.push_back(literal(next_literals_, v, "recheck.next.", [&] {
-      return u_.at(ts_.statevars()[v].next_var == ts_.statevars()[v].next, 0);
-    }));
-    const z3::expr this_goal = ctx.bool_const(("recheck.goal." + std::to_string(goals_++)).c_str());
-    assumed.push_back(this_goal);
-    z3::check_result cr = z3::unknown;
-    try {
-      s_.add(z3::implies(this_goal, !goal));
-      cr = s_.check(assumed);
-      s_.add(!this_goal);
-    } catch (const z3::exception&) {
-      if (limits_) stop_if_interrupted(*limits_);
-      throw;
-    }
-    if (cr == z3::unknown && limits_) stop_if_interrupted(*limits_);
-    return cr == z3::unsat;
-  }
-
- private:
-  // The literal of item i, its formula asserted behind it the first time.
-  template <class Formula>
-  z3::expr literal(std::unordered_map<std::size_t, z3::expr>& literals, std::size_t i, const char* prefix,
-                   const Formula& formula) {
-    if (const auto it = literals.find(i); it != literals.end()) return it->second;
-    const z3::expr l = ts_.ctx().bool_const((prefix + std::to_string(i)).c_str());
-    s_.add(z3::implies(l, formula()));
-    literals.emplace(i, l);
-    return l;
-  }
-
-  z3::solver& s_;
-  const encoder::TransitionSystem& ts_;
-  const Premises& premises_;
-  encoder::Unroller& u_;
-  const Limits* limits_;
-  std::unordered_map<std::size_t, z3::expr> fact_literals_, next_literals_;
-  std::size_t goals_ = 0;
-};
-
 // The induction step of invariant `clauses` (S and facts and trans implies
 // S'), one chunk of consecutive clauses at a time, each first asked under
 // a premise cut to what can decide it: the transitions of the variables the
@@ -235,28 +177,26 @@ std::optional<std::string> step_by_chunks(const SafetyProblem& p, const std::vec
   for (const auto& v : ts.statevars()) next_reads.push_back(reads.of(v.next));
   const auto premises = premises_of(p, clauses, reads);
   WholePremise whole(ctx, premises, u, ts.trans_formula());
-  CutQueries cuts(s, ts, premises, u, limits);
+  auto unsat = [&](const z3::expr& premise, const z3::expr& goal) { return unsat_under(s, premise, goal, limits); };
   std::vector<char> in(ts.statevars().size());
   for (std::size_t first = 0; first < clauses.size(); first += kChunkClauses) {
     const std::size_t last = std::min(clauses.size(), first + kChunkClauses);
-    z3::expr_vector chunk(ctx);
-    std::vector<std::size_t> stepped, facts;
+    z3::expr_vector chunk(ctx), local(ctx);
     std::fill(in.begin(), in.end(), 0);
     for (std::size_t i = first; i < last; ++i) {
       chunk.push_back(clauses[i]);
       for (std::size_t v : premises[i].second) {
-        if (!in[v]) stepped.push_back(v);
+        if (!in[v]) local.push_back(ts.statevars()[v].next_var == ts.statevars()[v].next);
         in[v] = 2;
       }
     }
     for (std::size_t v = 0; v < in.size(); ++v)
       if (in[v] == 2)
         for (std::size_t w : next_reads[v]) in[w] = in[w] ? in[w] : 1;
-    for (std::size_t f = 0; f < premises.size(); ++f)
-      if (std::all_of(premises[f].second.begin(), premises[f].second.end(), [&](std::size_t v) { return in[v] != 0; }))
-        facts.push_back(f);
+    for (const auto& [f, vars] : premises)
+      if (std::all_of(vars.begin(), vars.end(), [&](std::size_t v) { return in[v] != 0; })) local.push_back(f);
     const z3::expr goal = u.at(z3::mk_and(chunk), 1);
-    if (cuts.unsat(facts, stepped, goal) || unsat_under(s, whole.get(), goal, limits)) continue;
+    if (unsat(u.at(z3::mk_and(local), 0), goal) || unsat(whole.get(), goal)) continue;
     return "invariant-step (clauses " + std::to_string(first + 1) + " to " + std::to_string(last) + ")";
   }
   return std::nullopt;
@@ -274,15 +214,14 @@ std::optional<std::string> good_by_conjuncts(const SafetyProblem& p, const std::
   const StateReads reads(ts);
   const auto premises = premises_of(p, clauses, reads);
   WholePremise whole(ts.ctx(), premises, u);
-  CutQueries cuts(s, ts, premises, u, limits);
   const std::vector<z3::expr> goods = conjuncts_of(p.good);
   for (std::size_t i = 0; i < goods.size(); ++i) {
     const std::set<std::size_t> in = reads.of(goods[i]);
-    std::vector<std::size_t> cut;
-    for (std::size_t f = 0; f < premises.size(); ++f)
-      if (std::includes(in.begin(), in.end(), premises[f].second.begin(), premises[f].second.end())) cut.push_back(f);
+    z3::expr_vector cut(ts.ctx());
+    for (const auto& [f, vars] : premises)
+      if (std::includes(in.begin(), in.end(), vars.begin(), vars.end())) cut.push_back(f);
     const z3::expr goal = u.at(goods[i], 0);
-    if (cuts.unsat(cut, {}, goal) || unsat_under(s, whole.get(), goal, limits)) continue;
+    if (unsat_under(s, u.at(z3::mk_and(cut), 0), goal, limits) || unsat_under(s, whole.get(), goal, limits)) continue;
     return "step (conjunct " + std::to_string(i + 1) + " of " + std::to_string(goods.size()) + " of the property)";
   }
   return std::nullopt;
