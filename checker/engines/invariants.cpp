@@ -217,18 +217,6 @@ class CandidateMiner {
   }
 
   void guarded() {
-    // What holds on every sample, found once, not once per guard: a guard
-    // adds nothing to it.
-    auto everywhere = [](const Sample&) { return true; };
-    std::vector<char> global(ints_.size());
-    std::vector<std::vector<char>> global_pair(ints_.size());
-    for (std::size_t a = 0; a < ints_.size(); ++a) {
-      global[a] = constant_difference(ints_[a], SIZE_MAX, everywhere).has_value();
-      global_pair[a].assign(ints_.size(), 0);
-      for (std::size_t b = a + 1; b < ints_.size(); ++b)
-        if (related(ints_[a], ints_[b]))
-          global_pair[a][b] = constant_difference(ints_[a], ints_[b], everywhere).has_value();
-    }
     for (std::size_t g : bools_)
       for (int pol = 1; pol >= 0 && !stop(); --pol) {
         auto keep = [&](const Sample& s) { return iv(s, g) == pol; };
@@ -236,12 +224,13 @@ class CandidateMiner {
         z3::expr guard = pol ? var(g) : !var(g);
         for (std::size_t a = 0; a < ints_.size(); ++a) {
           std::size_t x = ints_[a];
-          if (!global[a] && may_guard(g, x, SIZE_MAX))
+          bool global = constant_difference(x, SIZE_MAX, [](const Sample&) { return true; }).has_value();
+          if (!global && may_guard(g, x, SIZE_MAX))
             if (auto c = constant_difference(x, SIZE_MAX, keep)) add(z3::implies(guard, var(x) == num(*c)));
           for (std::size_t b = a + 1; b < ints_.size(); ++b) {
             std::size_t y = ints_[b];
             if (!related(x, y) || !may_guard(g, x, y)) continue;
-            if (global_pair[a][b]) continue;
+            if (constant_difference(x, y, [](const Sample&) { return true; })) continue;
             if (auto d = constant_difference(x, y, keep)) add(z3::implies(guard, var(x) == var(y) + num(*d)));
           }
         }
