@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <map>
+#include <numeric>
 #include <optional>
 #include <set>
 #include <unordered_set>
@@ -34,7 +35,7 @@ class Templates {
   // standing for as many distinct states of the product as its weight.
   Templates(const encoder::TransitionSystem& ts, const std::vector<Sample>& samples, const std::vector<std::size_t>& cone,
             const Supports* supports, const std::vector<std::size_t>* weights = nullptr)
-      : ts_(ts), samples_(samples), supports_(supports), weights_(weights) {
+      : ts_(ts), count_(samples.size()), supports_(supports), weights_(weights) {
     // Each variable's values over the samples in one array: every template
     // below reads a few variables across all the samples.
     slot_.assign(ts.statevars().size(), SIZE_MAX);
@@ -64,32 +65,33 @@ class Templates {
     // Where each pair is equal, and later each guard holds, as bits over the
     // samples: an equality under a guard is then a few words compared, not a
     // pass over up to 4,096 sampled states per pair and guard.
-    words_ = (samples_.size() + 63) / 64;
+    words_ = (count_ + 63) / 64;
     equal_at_.assign(bool_pairs_.size() * words_, 0);
     for (std::size_t i = 0; i < bool_pairs_.size(); ++i) {
       const std::int64_t* p = column(bool_pairs_[i].first);
       const std::int64_t* q = column(bool_pairs_[i].second);
-      for (std::size_t k = 0; k < samples_.size(); ++k)
+      for (std::size_t k = 0; k < count_; ++k)
         if (p[k] == q[k]) equal_at_[i * words_ + k / 64] |= std::uint64_t{1} << (k % 64);
     }
     guards_.push_back({SIZE_MAX, 1});
     for (std::size_t b : bools_)
       for (int pol = 1; pol >= 0; --pol)
-        if (std::find(column(b), column(b) + samples_.size(), pol) != column(b) + samples_.size())
+        if (std::find(column(b), column(b) + count_, pol) != column(b) + count_)
           guards_.push_back({b, pol});
     for (const auto* side : {&program_ints_, &matrix_ints_})
       for (std::size_t v : *side) {
         const std::int64_t* c = column(v);
-        if (std::all_of(c, c + samples_.size(), [&](std::int64_t x) { return x == c[0]; })) global_.push_back(v);
+        if (std::all_of(c, c + count_, [&](std::int64_t x) { return x == c[0]; })) global_.push_back(v);
       }
     std::sort(global_.begin(), global_.end());
+    total_weight_ = weights ? std::accumulate(weights->begin(), weights->end(), std::size_t{0}) : count_;
   }
 
   std::vector<z3::expr> make() {
     std::vector<std::uint32_t> rows;  // the samples where the guard holds
     for (const auto& g : guards_) {
       rows.clear();
-      for (std::size_t k = 0; k < samples_.size(); ++k)
+      for (std::size_t k = 0; k < count_; ++k)
         if (holds(g, k)) rows.push_back(static_cast<std::uint32_t>(k));
       linear(g, rows);
       constants(g, rows);
@@ -163,10 +165,9 @@ class Templates {
   // generated 4 x 4 program's widest output, 3,400 candidates and 7 s
   // against 700 and 2.6 s).
   void equalities(const Guard& g, const std::vector<std::uint32_t>& rows) {
-    std::size_t n = 0, total = 0;
-    for (std::size_t k = 0; k < samples_.size(); ++k) total += weights_ ? (*weights_)[k] : 1;
+    std::size_t n = 0;
     for (std::uint32_t k : rows) n += weights_ ? (*weights_)[k] : 1;
-    if (4 * n < total) return;
+    if (4 * n < total_weight_) return;
     std::vector<std::uint64_t> where(words_, 0);
     for (std::uint32_t k : rows) where[k / 64] |= std::uint64_t{1} << (k % 64);
     for (std::size_t i = 0; i < bool_pairs_.size(); ++i) {
@@ -221,7 +222,7 @@ class Templates {
               const int pol[3] = {pols & 1, (pols >> 1) & 1, (pols >> 2) & 1};
               const std::int64_t* c[3] = {column(v[0]), column(v[1]), column(v[2])};
               bool always = true;
-              for (std::size_t k = 0; k < samples_.size() && always; ++k)
+              for (std::size_t k = 0; k < count_ && always; ++k)
                 always = c[0][k] == pol[0] || c[1][k] == pol[1] || c[2][k] == pol[2];
               if (!always) continue;
               z3::expr_vector lits(ts_.ctx());
@@ -232,7 +233,8 @@ class Templates {
   }
 
   const encoder::TransitionSystem& ts_;
-  const std::vector<Sample>& samples_;
+  std::size_t count_;         // of the samples
+  std::size_t total_weight_;  // the distinct states of the product they stand for
   const Supports* supports_;
   const std::vector<std::size_t>* weights_;
   std::vector<std::size_t> slot_;                   // by state variable: its column (SIZE_MAX: not in the cone)
