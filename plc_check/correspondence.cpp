@@ -289,7 +289,7 @@ bool each_follows(const checker::SafetyProblem& p, const std::vector<z3::expr>& 
   for (const auto& f : conjuncts_of(ts.constraint_formula() && p.assumption)) premises.push_back({f, reads.of(f)});
   const std::vector<z3::expr> goods = conjuncts_of(p.good);
   std::vector<char> in(ts.statevars().size());
-  z3::solver s(ts.ctx(), "QF_LIA");
+  z3::solver s = linear_integer_solver(ts.ctx());
   for (const auto& g : goods) {
     std::fill(in.begin(), in.end(), 0);
     for (std::size_t v : reads.of(g)) in[v] = 1;
