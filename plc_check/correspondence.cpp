@@ -34,8 +34,8 @@ class Templates {
   // of the product, or (with `weights`) of the cone's variables alone, each
   // standing for as many distinct states of the product as its weight.
   Templates(const encoder::TransitionSystem& ts, const std::vector<Sample>& samples, const std::vector<std::size_t>& cone,
-            const Supports* supports, const std::vector<std::size_t>* weights = nullptr)
-      : ts_(ts), count_(samples.size()), supports_(supports), weights_(weights) {
+            const Supports* supports, bool with_clauses, const std::vector<std::size_t>* weights = nullptr)
+      : ts_(ts), count_(samples.size()), supports_(supports), with_clauses_(with_clauses), weights_(weights) {
     // Each variable's values over the samples in one array: every template
     // below reads a few variables across all the samples.
     slot_.assign(ts.statevars().size(), SIZE_MAX);
@@ -168,13 +168,16 @@ class Templates {
   // many flags agree by chance, and each such candidate costs Houdini (on a
   // generated 4 x 4 program's widest output, 3,400 candidates and 7 s
   // against 700 and 2.6 s). Nor where both flags are constant under the
-  // guard: the samples show two constants there, not two flags that move
-  // together. An override's flags of the causes active at its start are
-  // all FALSE while it has not started, so every program flag would be
-  // "equal" to every matrix flag under every other flag: n^3 candidates
-  // per effect, nearly all dropped (the generated 128 x 128 x 1024 program:
-  // 103,710 candidates asked instead of 121,989, the same proof in 9% less
-  // time).
+  // guard when the checker's clauses over pairs of Booleans come with the
+  // templates: the samples show two constants there, which those clauses
+  // state, not two flags that move together. An override's flags of the
+  // causes active at its start are all FALSE while it has not started, so
+  // every program flag would be "equal" to every matrix flag under every
+  // other flag: n^3 candidates per effect, nearly all dropped (the
+  // generated 128 x 128 x 1024 program: 103,710 candidates asked instead of
+  // 121,989, the same proof in 9% less time). Without those clauses (an
+  // output's first, cheaper round) the equality is all that says it: the
+  // tank example's hand-written program needs it there.
   void equalities(const Guard& g, const std::vector<std::uint32_t>& rows) {
     std::size_t n = 0;
     for (std::uint32_t k : rows) n += weights_ ? (*weights_)[k] : 1;
@@ -193,7 +196,7 @@ class Templates {
         bool equal = true;
         for (std::size_t w = 0; w < words_ && equal; ++w) equal = (where[w] & (same ? ~eq[w] : eq[w])) == 0;
         if (!equal) continue;
-        if (g.var != SIZE_MAX && constant_on(p, rows) && constant_on(q, rows)) continue;
+        if (with_clauses_ && g.var != SIZE_MAX && constant_on(p, rows) && constant_on(q, rows)) continue;
         if (g.var == SIZE_MAX) everywhere = 1;
         add(g, same ? var(p) == var(q) : var(p) == !var(q));
       }
@@ -248,6 +251,7 @@ class Templates {
   std::size_t count_;         // of the samples
   std::size_t total_weight_;  // the distinct states of the product they stand for
   const Supports* supports_;
+  bool with_clauses_;  // the checker's clauses over pairs of Booleans are asked beside these
   const std::vector<std::size_t>* weights_;
   std::vector<std::size_t> slot_;                   // by state variable: its column (SIZE_MAX: not in the cone)
   std::vector<std::vector<std::int64_t>> columns_;  // by cone variable: its value in each sample
@@ -340,11 +344,12 @@ const ConeStates* states_of(const Samples& s, const std::vector<std::size_t>& va
 }  // namespace
 
 std::vector<z3::expr> correspondence_candidates(const checker::SafetyProblem& p, const Samples& samples,
-                                                const std::vector<std::size_t>& cone, const Supports* supports) {
+                                                const std::vector<std::size_t>& cone, const Supports* supports,
+                                                bool with_clauses) {
   if (const ConeStates* c = states_of(samples, cone))
-    return Templates(*p.ts, c->states, cone, supports, &c->weights).make();
+    return Templates(*p.ts, c->states, cone, supports, with_clauses, &c->weights).make();
   if (samples.states.empty()) return {};
-  return Templates(*p.ts, samples.states, cone, supports).make();
+  return Templates(*p.ts, samples.states, cone, supports, with_clauses).make();
 }
 
 std::vector<std::size_t> every_state_variable(const checker::SafetyProblem& p) {
@@ -434,7 +439,7 @@ std::optional<std::vector<std::vector<z3::expr>>> layered_candidates(const check
     };
     for (const auto& c : mined[i])
       if (own(c)) out[i].push_back(c);
-    for (const auto& c : correspondence_candidates(p, states, layers[i].vars, &supports))
+    for (const auto& c : correspondence_candidates(p, states, layers[i].vars, &supports, true))
       if (own(c)) out[i].push_back(c);
   }
   return out;
@@ -485,7 +490,7 @@ Correspondence prove_by_correspondence(const checker::SafetyProblem& p, const Sa
       for (const auto& l : p.ts->lemmas()) add(l.term);
       const auto mined = checker::mine_candidates_within(p, mining_options(o, limits, round == 1), cones);
       for (const auto& c : mined.front()) add(c);
-      for (const auto& c : correspondence_candidates(p, samples, cones.front())) add(c);
+      for (const auto& c : correspondence_candidates(p, samples, cones.front(), nullptr, round == 1)) add(c);
       std::vector<z3::expr> kept = product_houdini(p, std::move(cands), limits, meter);
       checker::Watchdog watchdog(ctx, limits);
       k = good_from(p, kept, limits, meter);

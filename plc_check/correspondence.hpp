@@ -26,11 +26,14 @@ namespace cemv::plc_check {
 
 // Candidates over the state variables of `cone` (ascending indices into the
 // state variables of `p`, a product of plc_check's, best reduced:
-// checker/reduce.hpp), each true in every sampled state.
+// checker/reduce.hpp), each true in every sampled state. `with_clauses`:
+// the checker's clauses over pairs of Booleans are asked beside them (they
+// state a flag's constant under a guard, which the templates then leave
+// out of their equalities).
 class Supports;
 std::vector<z3::expr> correspondence_candidates(const checker::SafetyProblem& p, const Samples& samples,
                                                 const std::vector<std::size_t>& cone,
-                                                const Supports* supports = nullptr);
+                                                const Supports* supports = nullptr, bool with_clauses = false);
 std::vector<std::size_t> every_state_variable(const checker::SafetyProblem& p);
 
 struct Correspondence {

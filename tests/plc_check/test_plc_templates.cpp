@@ -1,8 +1,10 @@
-// The correspondence templates (plc_check/correspondence.hpp): an equality of
-// a program flag and a matrix flag under a guard is a candidate where the two
-// move together under the guard in the samples, not where both are constant
-// there (an override's flags of the causes active at its start are all FALSE
-// until it starts: every pair would be "equal" under every other flag).
+// The correspondence templates (plc_check/correspondence.hpp): beside the
+// checker's clauses over pairs of Booleans, an equality of a program flag and
+// a matrix flag under a guard is a candidate where the two move together
+// under the guard in the samples, not where both are constant there (an
+// override's flags of the causes active at its start are all FALSE until it
+// starts: every pair would be "equal" under every other flag; the clauses
+// state the constants). Without those clauses it is a candidate in both.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -58,10 +60,14 @@ TEST(PlcTemplates, AGuardedEqualityNeedsTheFlagsToMoveUnderTheGuard) {
   // Under not h (rows 1, 3, 4) they move together: 0, 1, 0. Under not g
   // (rows 1 and 2) both are FALSE: two constants, not a correspondence.
   const auto samples = samples_of({{0, 0, 0, 0}, {0, 1, 0, 0}, {1, 0, 1, 1}, {1, 0, 0, 0}, {1, 1, 1, 0}});
-  const auto cs = cemv::plc_check::correspondence_candidates(prob, samples, {0, 1, 2, 3});
+  const auto cs = cemv::plc_check::correspondence_candidates(prob, samples, {0, 1, 2, 3}, nullptr, true);
   EXPECT_FALSE(has(cs, s.p == s.q));
   EXPECT_TRUE(has(cs, z3::implies(!s.h, s.p == s.q)));
   EXPECT_FALSE(has(cs, z3::implies(!s.g, s.p == s.q)));
+  // Without the checker's clauses, nothing else states the two constants.
+  const auto alone = cemv::plc_check::correspondence_candidates(prob, samples, {0, 1, 2, 3}, nullptr, false);
+  EXPECT_TRUE(has(alone, z3::implies(!s.h, s.p == s.q)));
+  EXPECT_TRUE(has(alone, z3::implies(!s.g, s.p == s.q)));
 }
 
 TEST(PlcTemplates, FlagsThatMoveUnderTheGuardKeepTheirGuardedEquality) {
@@ -70,7 +76,7 @@ TEST(PlcTemplates, FlagsThatMoveUnderTheGuardKeepTheirGuardedEquality) {
   // The same, with plc.p and q both TRUE in a third sample under not g.
   const auto samples =
       samples_of({{0, 0, 0, 0}, {0, 1, 0, 0}, {1, 0, 1, 1}, {1, 0, 0, 0}, {1, 1, 1, 0}, {0, 1, 1, 1}});
-  const auto cs = cemv::plc_check::correspondence_candidates(prob, samples, {0, 1, 2, 3});
+  const auto cs = cemv::plc_check::correspondence_candidates(prob, samples, {0, 1, 2, 3}, nullptr, true);
   EXPECT_FALSE(has(cs, s.p == s.q));
   EXPECT_TRUE(has(cs, z3::implies(!s.g, s.p == s.q)));
 }
