@@ -1,6 +1,7 @@
 // Seeded runs of a product (sampling.hpp).
 #include "plc_check/sampling.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <map>
 #include <random>
@@ -65,18 +66,32 @@ class Runner {
  public:
   explicit Runner(const checker::SafetyProblem& p) : p_(p), enc_(p.ts->ctx()), ev_(init(p)) {}
 
-  encoder::Evaluator& ev() { return ev_; }
-  // One scan: false when it breaks the constraints or the assumption.
+  const std::vector<encoder::Evaluator::Value>& state() const { return ev_.state(); }
+  // Back to the initial state.
+  void reset() {
+    ev_.reset();
+    repeats_ = false;
+  }
+  // One scan: false when it breaks the constraints or the assumption. A scan
+  // is a function of the state and the inputs: after one that left the state
+  // as it was, the same inputs give the same scan again, and it is not
+  // evaluated (a run holds its inputs for up to hundreds of scans, most of
+  // them with nothing running).
   bool step(const Inputs& in) {
+    if (repeats_ && same(in, last_inputs_)) return allowed_;
+    before_ = ev_.state();
     ev_.step_raw(in);
-    return ev_.value(kAllowed) != 0;
+    allowed_ = ev_.value(kAllowed) != 0;
+    repeats_ = same(ev_.state(), before_);
+    last_inputs_ = in;
+    return allowed_;
   }
   bool good() const { return ev_.value(kGood) != 0; }
 
   // The scan (0-based) in which `run` first breaks `good`; nullopt when it
   // does not, or breaks the assumption before.
   std::optional<std::size_t> first_violation(const std::vector<Inputs>& run) {
-    ev_.reset();
+    reset();
     for (std::size_t c = 0; c < run.size(); ++c) {
       if (!step(run[c])) return std::nullopt;
       if (!good()) return c;
@@ -114,7 +129,7 @@ class Runner {
       v.f = x.f;
       return v;
     };
-    ev_.reset();
+    reset();
     for (const auto& in : run) {
       checker::Trace::Cycle c;
       for (std::size_t i = 0; i < in.size(); ++i) c.inputs.push_back(value(ts.inputvars()[i].var, in[i]));
@@ -133,9 +148,20 @@ class Runner {
     return enc_;
   }
 
+  // Equal values: integers, and floats bit for bit.
+  static bool same(const std::vector<encoder::Evaluator::Value>& a, const std::vector<encoder::Evaluator::Value>& b) {
+    return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const auto& x, const auto& y) {
+      return x.i == y.i && std::bit_cast<std::uint32_t>(x.f) == std::bit_cast<std::uint32_t>(y.f);
+    });
+  }
+
   const checker::SafetyProblem& p_;
   encoder::Encoding enc_;
   encoder::Evaluator ev_;
+  bool repeats_ = false;  // the last scan left the state as it was
+  bool allowed_ = false;  // the last scan's constraints and assumption
+  Inputs last_inputs_;
+  std::vector<encoder::Evaluator::Value> before_;
 };
 
 std::vector<std::vector<encoder::Evaluator::Value>> distinct(std::vector<std::vector<encoder::Evaluator::Value>> all) {
@@ -312,7 +338,7 @@ Samples sample(const checker::SafetyProblem& p, const SamplingOptions& o) {
     auto pick_near = [&](std::size_t n) { return std::uniform_int_distribution<std::size_t>(0, n - 1)(near_rng); };
     const auto& ins = ts.inputvars();
     Keeper states(o);
-    states.add(runner.ev().state());
+    states.add(runner.state());
     Inputs rest(ins.size());
     for (std::size_t i = 0; i < ins.size() && o.rest; ++i)
       if (const auto v = o.rest(ins[i].name)) rest[i] = input_value(ins[i].var, *v);
@@ -335,7 +361,7 @@ Samples sample(const checker::SafetyProblem& p, const SamplingOptions& o) {
         if (!runner.step(in)) {
           // Back to the state before this scan, and another draw.
           ++refused;
-          runner.ev().reset();
+          runner.reset();
           for (const auto& earlier : run) runner.step(earlier);
           return true;
         }
@@ -344,12 +370,12 @@ Samples sample(const checker::SafetyProblem& p, const SamplingOptions& o) {
           out.violation = runner.trace(runner.shorten(std::move(run)));
           return false;
         }
-        states.add(runner.ev().state());
+        states.add(runner.state());
       }
       return true;
     };
     auto start_run = [&] {
-      runner.ev().reset();
+      runner.reset();
       run.clear();
       refused = 0;
     };
