@@ -71,6 +71,7 @@ class Runner {
   void reset() {
     ev_.reset();
     repeats_ = false;
+    repeated_ = false;
   }
   // One scan: false when it breaks the constraints or the assumption. A scan
   // is a function of the state and the inputs: after one that left the state
@@ -78,7 +79,8 @@ class Runner {
   // evaluated (a run holds its inputs for up to hundreds of scans, most of
   // them with nothing running).
   bool step(const Inputs& in) {
-    if (repeats_ && same(in, last_inputs_)) return allowed_;
+    repeated_ = repeats_ && same(in, last_inputs_);
+    if (repeated_) return allowed_;
     before_ = ev_.state();
     ev_.step_raw(in);
     allowed_ = ev_.value(kAllowed) != 0;
@@ -87,6 +89,8 @@ class Runner {
     return allowed_;
   }
   bool good() const { return ev_.value(kGood) != 0; }
+  // The last scan was the one before again: the same state, already seen.
+  bool repeated() const { return repeated_; }
 
   // The scan (0-based) in which `run` first breaks `good`; nullopt when it
   // does not, or breaks the assumption before.
@@ -158,7 +162,8 @@ class Runner {
   const checker::SafetyProblem& p_;
   encoder::Encoding enc_;
   encoder::Evaluator ev_;
-  bool repeats_ = false;  // the last scan left the state as it was
+  bool repeats_ = false;   // the last scan left the state as it was
+  bool repeated_ = false;  // the last scan was not evaluated: it repeats the one before
   bool allowed_ = false;  // the last scan's constraints and assumption
   Inputs last_inputs_;
   std::vector<encoder::Evaluator::Value> before_;
@@ -370,7 +375,8 @@ Samples sample(const checker::SafetyProblem& p, const SamplingOptions& o) {
           out.violation = runner.trace(runner.shorten(std::move(run)));
           return false;
         }
-        states.add(runner.state());
+        // A repeated scan's state is the one just kept: nothing to add.
+        if (!runner.repeated()) states.add(runner.state());
       }
       return true;
     };
