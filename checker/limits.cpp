@@ -22,6 +22,14 @@ z3::solver make_solver(z3::context& ctx, SolverSetup setup) {
   return z3::solver(ctx);
 }
 
+z3::solver linear_integer_solver(z3::context& ctx) {
+  z3::solver s(ctx, "QF_LIA");
+  z3::params params(ctx);
+  params.set("arith.solver", 2u);
+  s.set(params);
+  return s;
+}
+
 WorkMeter::WorkMeter(z3::context& ctx, Work budget, SolverSetup setup) : ctx_(ctx), budget_(budget) {
   if (setup == SolverSetup::SmtKernel) probe_.emplace(z3::tactic(ctx, "skip").mk_solver());
   start_ = read();

@@ -151,5 +151,13 @@ Work resource_count(z3::solver& probe);
 // A solver for incremental checks (under assumptions, or after a push) in
 // `setup`: the default solver, or Z3's SMT kernel alone.
 z3::solver make_solver(z3::context& ctx, SolverSetup setup);
+// Z3's solver for QF_LIA with its simplex-based arithmetic (smt.arith.solver
+// 2) instead of its default one: on the queries of a problem of Booleans and
+// integers (a plc-check product reduced: analog values and counters as
+// integers, mostly bounds and equalities) it gives the same answers in a
+// fraction of the time (the generated 128 x 128 x 1024 program's Houdini by
+// layers, 33.8 s against 119.6 s of CPU, the same 39,443 clauses kept; its
+// re-check's chunks, 24.5 s against 35.9 s).
+z3::solver linear_integer_solver(z3::context& ctx);
 
 }  // namespace cemv::checker

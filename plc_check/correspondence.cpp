@@ -12,6 +12,7 @@
 
 #include "checker/engines/invariants.hpp"
 #include "checker/engines/solving.hpp"
+#include "checker/limits.hpp"
 #include "encoder/unroller.hpp"
 #include "plc_check/cones.hpp"
 #include "plc_check/houdini.hpp"
@@ -210,9 +211,7 @@ class Templates {
     for (const auto* side : {&program_ints_, &matrix_ints_})
       for (std::size_t v : *side) {
         if (!worth(g, v, SIZE_MAX) || std::binary_search(global_.begin(), global_.end(), v)) continue;
-        const std::int64_t* c = column(v);
-        if (std::all_of(rows.begin(), rows.end(), [&](std::uint32_t k) { return c[k] == c[rows.front()]; }))
-          add(g, var(v) == num(c[rows.front()]));
+        if (constant_on(v, rows)) add(g, var(v) == num(column(v)[rows.front()]));
       }
   }
 
@@ -293,7 +292,7 @@ bool each_follows(const checker::SafetyProblem& p, const std::vector<z3::expr>& 
   for (const auto& f : conjuncts_of(ts.constraint_formula() && p.assumption)) premises.push_back({f, reads.of(f)});
   const std::vector<z3::expr> goods = conjuncts_of(p.good);
   std::vector<char> in(ts.statevars().size());
-  z3::solver s = linear_integer_solver(ts.ctx());
+  z3::solver s = checker::linear_integer_solver(ts.ctx());
   for (const auto& g : goods) {
     std::fill(in.begin(), in.end(), 0);
     for (std::size_t v : reads.of(g)) in[v] = 1;

@@ -8,6 +8,7 @@
 #include <unordered_set>
 
 #include "checker/engines/invariants.hpp"
+#include "checker/limits.hpp"
 #include "encoder/unroller.hpp"
 #include "plc_check/cones.hpp"
 #include "plc_check/premise.hpp"
@@ -66,7 +67,7 @@ void drop_until_unsat(z3::solver& s, std::vector<Candidate>& cands, const checke
 // layers: 2,492 rounds against 4,183, about 28% less time; what is kept does
 // not depend on the order of the drops).
 z3::solver consecution_solver(z3::context& ctx) {
-  z3::solver s = linear_integer_solver(ctx);
+  z3::solver s = checker::linear_integer_solver(ctx);
   z3::params params(ctx);
   params.set("phase_selection", 6u);
   s.set(params);
@@ -74,14 +75,6 @@ z3::solver consecution_solver(z3::context& ctx) {
 }
 
 }  // namespace
-
-z3::solver linear_integer_solver(z3::context& ctx) {
-  z3::solver s(ctx, "QF_LIA");
-  z3::params params(ctx);
-  params.set("arith.solver", 2u);
-  s.set(params);
-  return s;
-}
 
 std::vector<z3::expr> product_houdini(const checker::SafetyProblem& p, std::vector<z3::expr> candidates,
                                       const checker::Limits& limits, checker::WorkMeter& meter) {
@@ -93,7 +86,7 @@ std::vector<z3::expr> product_houdini(const checker::SafetyProblem& p, std::vect
   std::vector<Candidate> cands;
   for (const auto& c : candidates) cands.push_back(Candidate{c, u.at(c, 0), std::nullopt});
   {
-    z3::solver s = linear_integer_solver(ctx);
+    z3::solver s = checker::linear_integer_solver(ctx);
     s.add(u.at(ts.init_formula(), 0));
     drop_until_unsat(s, cands, limits, meter);
   }
@@ -165,7 +158,7 @@ std::vector<z3::expr> product_houdini_by_layers(const checker::SafetyProblem& p,
       for (std::size_t w : next_reads[v]) in[w] = 1;
     }
     {
-      z3::solver s = linear_integer_solver(ctx);
+      z3::solver s = checker::linear_integer_solver(ctx);
       s.add(u.at(z3::mk_and(init), 0));
       drop_until_unsat(s, cands, limits, meter);
     }

@@ -17,14 +17,6 @@
 
 namespace cemv::plc_check {
 
-// Z3's solver for QF_LIA with its simplex-based arithmetic (smt.arith.solver
-// 2) instead of its default one: on a reduced product's queries (Booleans,
-// and analog values and counters as integers, mostly bounds and equalities)
-// it gives the same answers in a fraction of the time (the generated
-// 128 x 128 x 1024 program's Houdini by layers, 33.8 s against 119.6 s of
-// CPU, the same 39,443 clauses kept).
-z3::solver linear_integer_solver(z3::context& ctx);
-
 // Deterministic (candidates dropped in order, from a model of a fixed
 // query); its checks are charged to `meter`; throws checker::Stopped when the
 // meter or the limits end it.

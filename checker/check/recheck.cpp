@@ -10,6 +10,7 @@
 
 #include "checker/context_pool.hpp"
 #include "checker/engines/solving.hpp"
+#include "checker/limits.hpp"
 #include "checker/reduce_terms.hpp"
 #include "encoder/encode.hpp"
 #include "encoder/evaluate.hpp"
@@ -232,21 +233,12 @@ std::optional<std::string> good_by_conjuncts(const SafetyProblem& p, const std::
 // arithmetic, which Z3's QF_LIA solver answers in about three quarters of
 // its default solver's time (the generated 32 x 32 program's chunked
 // induction step, 4.3 s against 3.2 s), and in less again with its
-// simplex-based arithmetic (smt.arith.solver 2: the generated 128 x 128 x
-// 1024 program's chunks, 24.5 s against 35.9 s).
+// simplex-based arithmetic (linear_integer_solver).
 bool linear_integer(const encoder::TransitionSystem& ts) {
   auto simple = [](const auto& vars) {
     return std::all_of(vars.begin(), vars.end(), [](const auto& v) { return v.var.is_bool() || v.var.is_int(); });
   };
   return simple(ts.statevars()) && simple(ts.inputvars());
-}
-
-z3::solver linear_integer_solver(z3::context& ctx) {
-  z3::solver s(ctx, "QF_LIA");
-  z3::params params(ctx);
-  params.set("arith.solver", 2u);
-  s.set(params);
-  return s;
 }
 
 }  // namespace
